@@ -1,0 +1,41 @@
+/* vec3.h - small 3-vector maths in double precision.
+ * Positions are in metres in world space (right-handed, z up) unless a
+ * function says otherwise; directions are unit vectors where documented. */
+#ifndef CANDELA_RADIOMETRY_VEC3_H
+#define CANDELA_RADIOMETRY_VEC3_H
+
+#include <math.h>
+
+typedef struct cdl_vec3 { double x, y, z; } cdl_vec3;
+
+static inline cdl_vec3 cdl_vec3_make(double x, double y, double z) { cdl_vec3 v = {x, y, z}; return v; }
+static inline cdl_vec3 cdl_vec3_add(cdl_vec3 a, cdl_vec3 b) { return cdl_vec3_make(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline cdl_vec3 cdl_vec3_sub(cdl_vec3 a, cdl_vec3 b) { return cdl_vec3_make(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline cdl_vec3 cdl_vec3_scale(cdl_vec3 a, double k) { return cdl_vec3_make(a.x * k, a.y * k, a.z * k); }
+static inline cdl_vec3 cdl_vec3_neg(cdl_vec3 a) { return cdl_vec3_make(-a.x, -a.y, -a.z); }
+/* a + k b */
+static inline cdl_vec3 cdl_vec3_madd(cdl_vec3 a, double k, cdl_vec3 b) { return cdl_vec3_make(a.x + k * b.x, a.y + k * b.y, a.z + k * b.z); }
+static inline double cdl_vec3_dot(cdl_vec3 a, cdl_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline cdl_vec3 cdl_vec3_cross(cdl_vec3 a, cdl_vec3 b)
+{
+    return cdl_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline double cdl_vec3_length_squared(cdl_vec3 a) { return cdl_vec3_dot(a, a); }
+/* hypot-style length: no overflow or underflow for components near the double limits. */
+static inline double cdl_vec3_length(cdl_vec3 a)
+{
+    double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    if (m == 0.0 || !isfinite(m)) return m;
+    double x = a.x / m, y = a.y / m, z = a.z / m;
+    return m * sqrt(x * x + y * y + z * z);
+}
+/* Unit vector along a; the zero vector stays zero. */
+static inline cdl_vec3 cdl_vec3_normalize(cdl_vec3 a)
+{
+    double len = cdl_vec3_length(a);
+    return len > 0.0 ? cdl_vec3_scale(a, 1.0 / len) : a;
+}
+static inline double cdl_vec3_distance(cdl_vec3 a, cdl_vec3 b) { return cdl_vec3_length(cdl_vec3_sub(a, b)); }
+static inline int cdl_vec3_is_finite(cdl_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+
+#endif

@@ -1,0 +1,56 @@
+/* ray_scene.h - ray queries against the scene's geometry (Embree behind a C API).
+ *
+ * Nothing outside solver/ knows Embree exists. A cdl_ray_scene holds triangle
+ * meshes and exact spheres in one Embree scene built in robust mode (no rays
+ * slip through shared edges, see ../shared/DEPENDENCIES.md section 4).
+ *
+ * Lifecycle: create, add geometry, commit, query (thread-safe), release.
+ */
+#ifndef CANDELA_SOLVER_RAY_SCENE_H
+#define CANDELA_SOLVER_RAY_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "radiometry/error.h"
+#include "radiometry/vec3.h"
+
+typedef struct cdl_ray_scene cdl_ray_scene;
+
+typedef struct cdl_ray_hit {
+    double t;          /* distance along the (unit) direction */
+    uint32_t geom_id;  /* id returned when the geometry was added */
+    uint32_t prim_id;  /* triangle index within it (0 for a sphere) */
+    double u, v;       /* barycentrics of the hit on the triangle */
+    cdl_vec3 normal;   /* geometric normal, unit length, as stored (not flipped) */
+} cdl_ray_hit;
+
+cdl_status cdl_ray_scene_create(cdl_ray_scene **out, cdl_error *err);
+
+/* Add a triangle mesh; vertices xyz in metres, triangles as index triples.
+ * Copies the data. *geom_id receives the id reported in hits. */
+cdl_status cdl_ray_scene_add_triangles(cdl_ray_scene *scene, const double *xyz, size_t vertex_count,
+                                       const uint32_t *triangles, size_t triangle_count, uint32_t *geom_id,
+                                       cdl_error *err);
+
+/* Add an exact sphere. */
+cdl_status cdl_ray_scene_add_sphere(cdl_ray_scene *scene, cdl_vec3 center, double radius, uint32_t *geom_id,
+                                    cdl_error *err);
+
+cdl_status cdl_ray_scene_commit(cdl_ray_scene *scene, cdl_error *err);
+
+/* Is anything hit on the open segment origin + t dir, t in (t_near, t_far)?
+ * dir need not be unit length; t is in units of |dir|. */
+int cdl_ray_scene_occluded(const cdl_ray_scene *scene, cdl_vec3 origin, cdl_vec3 dir, double t_near, double t_far);
+
+/* Closest hit with t in (t_near, t_far); returns 1 and fills *hit, else 0.
+ * dir must be unit length. */
+int cdl_ray_scene_intersect(const cdl_ray_scene *scene, cdl_vec3 origin, cdl_vec3 dir, double t_near, double t_far,
+                            cdl_ray_hit *hit);
+
+/* Number of triangles added (spheres count as none). */
+size_t cdl_ray_scene_triangle_count(const cdl_ray_scene *scene);
+
+void cdl_ray_scene_release(cdl_ray_scene *scene);
+
+#endif

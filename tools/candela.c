@@ -1,0 +1,53 @@
+/* candela.c - the `candela` command: dispatch to subcommands. */
+#include <stdio.h>
+#include <string.h>
+
+#include "command.h"
+
+static const cdl_command *const commands[] = {
+    &cdl_command_info, &cdl_command_convert, &cdl_command_solve, &cdl_command_report, &cdl_command_bench,
+};
+#define COMMAND_COUNT (sizeof commands / sizeof commands[0])
+
+static void print_usage(FILE *out)
+{
+    fprintf(out,
+            "candela %s - radiometry, luminaires and illuminance for lighting design\n\n"
+            "usage: candela <command> [options]\n\n"
+            "commands:\n",
+            CANDELA_VERSION);
+    for (size_t i = 0; i < COMMAND_COUNT; ++i)
+        fprintf(out, "  %-9s %s\n", commands[i]->name, commands[i]->summary);
+    fprintf(out,
+            "\n'candela <command> --help' describes a command.\n"
+            "Exit status: 0 success, 1 bad input, 2 usage error, 3 internal or resource failure.\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        print_usage(stderr);
+        return CDL_EXIT_USAGE;
+    }
+    const char *name = argv[1];
+    if (strcmp(name, "--version") == 0 || strcmp(name, "version") == 0) {
+        printf("candela %s\n", CANDELA_VERSION);
+        return CDL_EXIT_OK;
+    }
+    if (strcmp(name, "--help") == 0 || strcmp(name, "-h") == 0 || strcmp(name, "help") == 0) {
+        if (argc >= 3 && strcmp(name, "help") == 0) {
+            for (size_t i = 0; i < COMMAND_COUNT; ++i)
+                if (strcmp(argv[2], commands[i]->name) == 0) {
+                    commands[i]->print_help(stdout);
+                    return CDL_EXIT_OK;
+                }
+        }
+        print_usage(stdout);
+        return CDL_EXIT_OK;
+    }
+    for (size_t i = 0; i < COMMAND_COUNT; ++i)
+        if (strcmp(name, commands[i]->name) == 0) return commands[i]->run(argc - 1, argv + 1);
+    fprintf(stderr, "candela: unknown command '%s'\n\n", name);
+    print_usage(stderr);
+    return CDL_EXIT_USAGE;
+}
