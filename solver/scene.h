@@ -1,0 +1,181 @@
+/* scene.h - the scene file of DESIGN.md as C data, and its loader.
+ *
+ * cdl_scene_load reads the JSON scene ("version": 1), checks every key and
+ * value, resolves relative paths against the scene file's folder, and
+ * returns plain data. It reads external files whose content is part of the
+ * scene description (OBJ/OFF/PLY meshes, so their errors carry the JSON
+ * path); it does not read photometric files or environment images (the
+ * solver opens those and prefixes the JSON path to their errors).
+ *
+ * Errors: CDL_ERR_INPUT, message "SCENE.json: luminaires[2].position:
+ * expected ..., found ..." (JSON syntax errors give line and column).
+ * Unknown keys are errors: a typo must not silently change a result.
+ */
+#ifndef CANDELA_SOLVER_SCENE_H
+#define CANDELA_SOLVER_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "radiometry/error.h"
+#include "radiometry/vec3.h"
+
+#define CDL_JSON_PATH_SIZE 96
+
+/* ---- surfaces ----------------------------------------------------------- */
+
+typedef enum cdl_surface_kind {
+    CDL_SURFACE_RECT,
+    CDL_SURFACE_POLYGON,
+    CDL_SURFACE_BOX,
+    CDL_SURFACE_DISK,
+    CDL_SURFACE_SPHERE,
+    CDL_SURFACE_MESH
+} cdl_surface_kind;
+
+/* Box faces, in the order of the names -x, +x, -y, +y, -z, +z. With the
+ * floor/walls/ceiling naming, floor = -z, ceiling = +z, walls = the other four. */
+enum { CDL_BOX_NEG_X, CDL_BOX_POS_X, CDL_BOX_NEG_Y, CDL_BOX_POS_Y, CDL_BOX_NEG_Z, CDL_BOX_POS_Z, CDL_BOX_FACES };
+
+typedef struct cdl_ring3 {
+    cdl_vec3 *points;
+    size_t count;
+} cdl_ring3;
+
+typedef struct cdl_surface_spec {
+    char json_path[CDL_JSON_PATH_SIZE]; /* "surfaces[3]" */
+    char *name;                         /* NULL when not given */
+    cdl_surface_kind kind;
+    /* rect: origin + s u + t v, normal u x v */
+    cdl_vec3 origin, u, v;
+    /* polygon: outer ring and holes, coplanar; normal from the outer ring's
+     * orientation (counter-clockwise seen from the front) */
+    cdl_ring3 outer;
+    cdl_ring3 *holes;
+    size_t hole_count;
+    /* box */
+    cdl_vec3 box_min, box_max;
+    int inward;                          /* box, sphere: front side faces inside */
+    double face_reflectance[CDL_BOX_FACES];
+    int face_open[CDL_BOX_FACES];        /* 1: face left out */
+    /* disk (center, normal, radius) and sphere (center, radius) */
+    cdl_vec3 center, normal;
+    double radius;
+    /* mesh: from `file` (resolved path kept for messages) or inline */
+    char *file;
+    double *mesh_vertices;               /* xyz */
+    size_t mesh_vertex_count;
+    uint32_t *mesh_triangles;            /* counter-clockwise from the front */
+    size_t mesh_triangle_count;
+    /* material */
+    double reflectance;                  /* diffuse, [0, 1]; box: see face_reflectance */
+    int two_sided;                       /* default 1 */
+    double luminance_cd_m2;              /* > 0: the front side emits (Lambertian) */
+} cdl_surface_spec;
+
+/* ---- luminaires --------------------------------------------------------- */
+
+typedef enum cdl_luminaire_kind {
+    CDL_LUMINAIRE_POINT,
+    CDL_LUMINAIRE_SPOT,
+    CDL_LUMINAIRE_GONIOMETRIC,
+    CDL_LUMINAIRE_AREA,
+    CDL_LUMINAIRE_DIRECTIONAL,
+    CDL_LUMINAIRE_ENVIRONMENT
+} cdl_luminaire_kind;
+
+typedef struct cdl_luminaire_spec {
+    char json_path[CDL_JSON_PATH_SIZE];  /* "luminaires[2]" */
+    cdl_luminaire_kind kind;
+    cdl_vec3 position;                   /* point, spot, goniometric */
+    cdl_vec3 direction;                  /* spot axis; directional: direction of travel */
+    /* exactly one of intensity_cd / flux_lm for point and spot; for
+     * goniometric, flux_lm optionally rescales the file */
+    int has_intensity, has_flux;
+    double intensity_cd, flux_lm;
+    /* spot */
+    int has_exponent;                    /* cos^n profile instead of smoothstep */
+    double exponent, half_angle_deg, falloff_start_deg; /* falloff_start defaults to half_angle */
+    /* goniometric */
+    char *file;                          /* resolved path (also environment image) */
+    double rotation_deg[3];
+    double multiplier;                   /* default 1 */
+    /* all: default 1 */
+    double maintenance_factor;
+    /* area: a surface-like shape (rect, disk, polygon or mesh, same keys as
+     * surfaces; its json_path is "luminaires[k].shape") and luminance or flux */
+    cdl_surface_spec shape;
+    int has_luminance;
+    double luminance_cd_m2;
+    double reflectance;                  /* area: default 0 */
+    /* directional */
+    double illuminance_lx;
+    /* environment: uniform luminance_cd_m2 (has_luminance) or image file */
+    double scale;                        /* default 1 */
+    cdl_vec3 up;                         /* default (0, 0, 1) */
+    int upper_hemisphere_only;           /* "hemisphere": "upper" */
+} cdl_luminaire_spec;
+
+/* ---- grids -------------------------------------------------------------- */
+
+typedef enum cdl_grid_kind { CDL_GRID_RECT, CDL_GRID_POLYGON, CDL_GRID_POINTS } cdl_grid_kind;
+
+typedef struct cdl_grid_spec {
+    char json_path[CDL_JSON_PATH_SIZE];  /* "grids[0]" */
+    char *name;                          /* required, unique, safe as a file name */
+    cdl_grid_kind kind;
+    /* rect */
+    cdl_vec3 origin, u, v;
+    int nu, nv;
+    int has_normal;
+    cdl_vec3 normal;                     /* rect/polygon: default u x v / from the ring */
+    /* polygon (holes allowed, as for surfaces) */
+    cdl_ring3 outer;
+    cdl_ring3 *holes;
+    size_t hole_count;
+    double spacing;                      /* metres; <= 0 means "auto" (EN 12464-1) */
+    /* points */
+    cdl_vec3 *points, *normals;
+    size_t point_count;
+    /* outputs */
+    int want_ao;
+} cdl_grid_spec;
+
+/* ---- solver settings ---------------------------------------------------- */
+
+typedef enum cdl_method { CDL_METHOD_AUTO, CDL_METHOD_DIRECT, CDL_METHOD_ICACHE, CDL_METHOD_PATHTRACE } cdl_method;
+typedef enum cdl_quality { CDL_QUALITY_DRAFT, CDL_QUALITY_NORMAL, CDL_QUALITY_HIGH, CDL_QUALITY_REFERENCE } cdl_quality;
+
+typedef struct cdl_solver_settings {
+    cdl_method method;                   /* default auto */
+    cdl_quality quality;                 /* default normal */
+    int bounces;                         /* default 5 */
+    uint64_t seed;                       /* default 1 */
+    int threads;                         /* 0 = all cores (default) */
+    int direct_samples;                  /* 0 = from quality: samples per partly hidden emitter */
+    int ao_samples;                      /* 0 = from quality */
+} cdl_solver_settings;
+
+const char *cdl_method_name(cdl_method method);
+const char *cdl_quality_name(cdl_quality quality);
+
+/* ---- the scene ------------------------------------------------------------ */
+
+typedef struct cdl_scene {
+    char *path;                          /* the scene file as given */
+    char *base_dir;                      /* folder relative paths resolve against */
+    cdl_surface_spec *surfaces;
+    size_t surface_count;
+    cdl_luminaire_spec *luminaires;
+    size_t luminaire_count;
+    cdl_grid_spec *grids;
+    size_t grid_count;
+    cdl_solver_settings settings;
+} cdl_scene;
+
+cdl_status cdl_scene_load(const char *path, cdl_scene **out, cdl_error *err);
+/* Parse from a string (path used for messages and relative paths). */
+cdl_status cdl_scene_load_string(const char *json, const char *path, cdl_scene **out, cdl_error *err);
+void cdl_scene_release(cdl_scene *scene);
+
+#endif

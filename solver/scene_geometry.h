@@ -1,0 +1,55 @@
+/* scene_geometry.h - a loaded scene turned into triangles, spheres and rays.
+ *
+ * Every surface (and every area luminaire's shape, which also blocks light)
+ * becomes triangles (polygons with holes by CGAL's constrained Delaunay
+ * triangulation; boxes as up to six rects; disks as fans fine enough for
+ * ray casting) or an exact sphere, all in one Embree scene built in robust
+ * mode. Each piece keeps a link to the surface or luminaire it came from,
+ * its material and, for emitting surfaces, an emitter shape the lights
+ * layer can use for exact formulas (rects and disks stay analytic).
+ */
+#ifndef CANDELA_SOLVER_SCENE_GEOMETRY_H
+#define CANDELA_SOLVER_SCENE_GEOMETRY_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "lights/emitter.h"
+#include "radiometry/error.h"
+#include "solver/ray_scene.h"
+#include "solver/scene.h"
+
+typedef struct cdl_scene_geometry cdl_scene_geometry;
+
+/* One piece of geometry as placed in the ray scene (one per ray-scene geom id). */
+typedef struct cdl_geometry_piece {
+    int is_luminaire;                    /* 0: from surfaces[], 1: from luminaires[] (area) */
+    size_t source_index;                 /* index into scene->surfaces or scene->luminaires */
+    int box_face;                        /* CDL_BOX_* for boxes, -1 otherwise */
+    double reflectance;
+    int two_sided;
+    double luminance_cd_m2;              /* > 0: the front emits */
+    cdl_shape shape;                     /* world-space shape; TRIANGLES arrays owned by the geometry */
+    size_t triangle_count;               /* 0 for spheres */
+    double area;                         /* m^2 */
+} cdl_geometry_piece;
+
+cdl_status cdl_scene_geometry_build(const cdl_scene *scene, cdl_scene_geometry **out, cdl_error *err);
+void cdl_scene_geometry_release(cdl_scene_geometry *geometry);
+
+const cdl_ray_scene *cdl_scene_geometry_rays(const cdl_scene_geometry *geometry);
+size_t cdl_scene_geometry_piece_count(const cdl_scene_geometry *geometry);
+/* Piece for a ray-scene geom id (as reported in cdl_ray_hit). */
+const cdl_geometry_piece *cdl_scene_geometry_piece(const cdl_scene_geometry *geometry, size_t geom_id);
+size_t cdl_scene_geometry_triangle_count(const cdl_scene_geometry *geometry);
+
+/* Axis-aligned bounds of all geometry and its diagonal (0 for an empty scene). */
+void cdl_scene_geometry_bounds(const cdl_scene_geometry *geometry, cdl_vec3 *lo, cdl_vec3 *hi);
+double cdl_scene_geometry_extent(const cdl_scene_geometry *geometry);
+
+/* Ray epsilon that works at every scale: a small fraction of the scene
+ * extent plus the float resolution at the magnitude of p. Shadow and
+ * secondary rays start at t = epsilon and stop epsilon short of their end. */
+double cdl_scene_geometry_ray_epsilon(const cdl_scene_geometry *geometry, cdl_vec3 p);
+
+#endif
