@@ -1,0 +1,60 @@
+/* lux_scale.h - the logarithmic lux scale of false-colour maps.
+ *
+ * A map shows illuminance on a log scale, because the eye and lighting
+ * practice both judge light in ratios: the step from 100 to 200 lx matters as
+ * much as the step from 500 to 1000 lx. The scale runs between two round
+ * values of the 1-2-5 sequence (... 0.5, 1, 2, 5, 10, 20, 50 ... lx) that
+ * bracket the data, so legend ticks fall on numbers a designer reads at a
+ * glance. Values are numbered by step k:
+ *
+ *   value(k) = {1, 2, 5}[k mod 3] x 10^floor(k / 3) lx    (k = 0: 1 lx, k = 8: 500 lx, k = -1: 0.5 lx)
+ *
+ * computed as m x 10^e or m / 10^-e, so value(-1) is the double nearest 0.5
+ * and value(-2) the double nearest 0.2, exactly as the literals.
+ */
+#ifndef CANDELA_SOLVER_LUX_SCALE_H
+#define CANDELA_SOLVER_LUX_SCALE_H
+
+#include <stddef.h>
+
+#include "radiometry/units.h"
+
+/* Steps are kept within 1e-20 lx .. 1e20 lx; values beyond sit at the ends. */
+#define CDL_LUX_SCALE_MIN_STEP (-60)
+#define CDL_LUX_SCALE_MAX_STEP 60
+/* The widest range chosen from data: 12 steps, four decades. Values below
+ * the bottom of the range show in the bottom colour. */
+#define CDL_LUX_SCALE_MAX_STEPS 12
+
+typedef struct cdl_lux_scale {
+    int lo_step, hi_step;     /* lo_step < hi_step */
+    cdl_illuminance lo, hi;   /* value(lo_step), value(hi_step) */
+} cdl_lux_scale;
+
+/* The 1-2-5 value of step k (clamped to the step limits). */
+cdl_illuminance cdl_lux_scale_step_value(int step);
+
+/* The largest step whose value is <= E, and the smallest whose value is >= E
+ * (E > 0; clamped to the step limits). */
+int cdl_lux_scale_step_at_or_below(cdl_illuminance E);
+int cdl_lux_scale_step_at_or_above(cdl_illuminance E);
+
+/* The scale for `count` illuminances in lux (finite values):
+ *   hi = the smallest 1-2-5 value >= the largest E;
+ *   lo = the largest 1-2-5 value <= the smallest positive E, but no more than
+ *        CDL_LUX_SCALE_MAX_STEPS steps below hi;
+ *   when lo = hi (constant data on a round value) the range opens one step
+ *   each way (500 lx -> 200 .. 1000 lx);
+ *   with no positive value (all zero, or empty) it is 1 .. 10 lx. */
+cdl_lux_scale cdl_lux_scale_for_values(const double *E_lx, size_t count);
+
+/* Position of E on the scale in [0, 1]: log(E / lo) / log(hi / lo), clamped;
+ * 0 for E <= lo (including zero and negative values). */
+double cdl_lux_scale_position(const cdl_lux_scale *scale, cdl_illuminance E);
+
+/* The legend label of step k: "500 lx", "0.05 lx", "20k lx" (k = thousands,
+ * for 10 000 lx and up). Digits, '.', 'k', ' ', 'l', 'x' only. Written into
+ * buf (truncated to size - 1 characters); returns the full length. */
+size_t cdl_lux_scale_step_label(int step, char *buf, size_t size);
+
+#endif
