@@ -23,7 +23,7 @@ enum {
     TICK_TO_LABEL = 4,
     FONT_SCALE = 2,
     LABEL_HEIGHT = CDL_BITMAP_FONT_GLYPH_HEIGHT * FONT_SCALE,
-    LABEL_SPACING = LABEL_HEIGHT + 4, /* least distance between two labelled ticks */
+    LABEL_SPACING = LABEL_HEIGHT + 10, /* least distance between two labelled ticks */
     MAX_IMAGE_PIXELS = 1 << 26        /* 64 Mpixel: a larger map is a caller's mistake */
 };
 
