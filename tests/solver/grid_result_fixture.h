@@ -145,6 +145,16 @@ static inline char *fixture_read_file(const char *path, size_t *length)
     return buf;
 }
 
+/* 1 when the file at path holds exactly the n bytes at expected. */
+static inline int fixture_file_is(const char *path, const char *expected, size_t n)
+{
+    size_t len = 0;
+    char *text = fixture_read_file(path, &len);
+    int same = text && expected && len == n && memcmp(text, expected, n) == 0;
+    free(text);
+    return same;
+}
+
 static inline int fixture_write_file(const char *path, const char *text)
 {
     FILE *fp = fopen(path, "wb");

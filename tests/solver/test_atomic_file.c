@@ -9,10 +9,7 @@
 
 static int file_equals(const char *path, const char *expected)
 {
-    char *text = fixture_read_file(path, NULL);
-    int same = text && strcmp(text, expected) == 0;
-    free(text);
-    return same;
+    return fixture_file_is(path, expected, strlen(expected));
 }
 
 int main(void)
