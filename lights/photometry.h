@@ -9,7 +9,36 @@
  * that takes a direction: right-handed, nadir (gamma = 0, type C) along -z,
  * the C = 0 half-plane containing +x, C = 90 containing +y, so that
  *     direction = (sin g cos C, sin g sin C, -cos g).
- * Types A and B are mapped onto this frame as documented in photometry.c.
+ * C therefore runs counter-clockwise seen from above (from +z).
+ *
+ * How the file formats land in this frame (decided once, used everywhere):
+ *
+ *  - EULUMDAT C-planes and gamma are the frame's C and gamma, unchanged.
+ *  - IES type C: vertical angle V is gamma; horizontal angle H is measured
+ *    counter-clockwise seen from BELOW the luminaire (clockwise from above),
+ *    so the frame plane is  C = (360 - H) mod 360.  This is Radiance ies2rad's
+ *    reading (H = -phi) and what real converters do (FORMAT_NOTES section 3:
+ *    the IES H90 plane holds the EULUMDAT C270 data). For symmetric tables
+ *    (single plane, 0-90, 0-180) the mirror changes nothing; it matters for
+ *    0-360 and 90-270 data.
+ *  - IES type B (floodlights): photometric zero (H = 0, V = 0) points along
+ *    -z; the polar axis is the y axis; V rotates the measuring plane about y
+ *    toward +x, H is the lateral angle inside the plane, positive toward -y:
+ *        direction = (sin V cos H, -sin H, -cos V cos H),
+ *    dOmega = cos H dH dV (Radiance source.cal srcB_vert / srcB_horiz).
+ *  - IES type A (automotive): photometric zero along -z; the polar axis is
+ *    the x axis; H turns the measuring half-plane about x (positive toward
+ *    -y), V is the latitude inside it (positive toward +x):
+ *        direction = (sin V, -cos V sin H, -cos V cos H),
+ *    dOmega = cos V dV dH. Near the beam axis types A and B agree: H is the
+ *    lateral (left-right) angle and V the elevation.
+ *  - Type A/B sets whose H (or V) list runs 0..90 are mirrored (H -> -H,
+ *    V -> -V), as LM-63-2002 describes for laterally symmetric luminaires.
+ *
+ * Interpolation is bilinear in the table's two angles (C and gamma for type
+ * C, H and V for types A and B), with symmetry expansion and wrap-around at
+ * C = 360; the intensity is zero outside the measured angle ranges. Every
+ * flux below is the exact integral of that interpolated distribution.
  *
  * Application factors are NOT in the table: ballast factor, tilt factor,
  * maintenance factor and scene multipliers are applied by the emitter at
@@ -33,18 +62,42 @@ typedef enum cdl_photometric_type {
     CDL_PHOTOMETRIC_TYPE_A = 3  /* automotive (code 3) */
 } cdl_photometric_type;
 
+/* Symmetry of the stored table. The first five apply to type C (stored
+ * C range in brackets, in the photometric frame), the last three to types A/B. */
+typedef enum cdl_photometry_symmetry {
+    CDL_PHOTOMETRY_SYMMETRY_NONE = 0,          /* C: full circle; A/B: H and V as given */
+    CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL,        /* C: one plane, I independent of C */
+    CDL_PHOTOMETRY_SYMMETRY_BILATERAL_C0_C180, /* C: [0, 180], I(C) = I(360 - C) */
+    CDL_PHOTOMETRY_SYMMETRY_BILATERAL_C90_C270,/* C: [90, 270], I(C) = I(180 - C) */
+    CDL_PHOTOMETRY_SYMMETRY_QUADRANT,          /* C: [0, 90], both mirrors */
+    CDL_PHOTOMETRY_SYMMETRY_LATERAL,           /* A/B: H stored 0..90, I(-H) = I(H) */
+    CDL_PHOTOMETRY_SYMMETRY_VERTICAL,          /* A/B: V stored 0..90, I(-V) = I(V) */
+    CDL_PHOTOMETRY_SYMMETRY_LATERAL_VERTICAL   /* A/B: both */
+} cdl_photometry_symmetry;
+
+/* A short stable name ("none", "rotational", "bilateral-c0-c180", ...). */
+const char *cdl_photometry_symmetry_name(cdl_photometry_symmetry symmetry);
+
 typedef struct cdl_photometry cdl_photometry;
 
 typedef struct cdl_photometry_read_options {
     int strict;              /* 1: warnings become errors */
+    int no_external_files;   /* 1: refuse TILT=<file> instead of opening it (fuzzing, sandboxes) */
 } cdl_photometry_read_options;
-#define CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT {0}
+#define CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT {0, 0}
 
 /* Read an IES (any LM-63 version) or EULUMDAT file; the format is detected
  * from the content, not the extension. Errors: CDL_ERR_INPUT with
  * "FILE:LINE: expected ..., found ...". */
 cdl_status cdl_photometry_read_file(const char *path, const cdl_photometry_read_options *options,
                                     cdl_photometry **out, cdl_error *err);
+
+/* Same, from bytes in memory. `name` is used in messages and, for
+ * TILT=<file>, as the path the tilt file is resolved against (may be NULL:
+ * messages say "<memory>" and TILT=<file> is refused). */
+cdl_status cdl_photometry_read_memory(const void *data, size_t size, const char *name,
+                                      const cdl_photometry_read_options *options, cdl_photometry **out,
+                                      cdl_error *err);
 
 /* Build a type C table from arrays (used by tests and by programs that make
  * distributions): planes c_deg[nc] (ascending, within [0, 360]), angles
@@ -54,6 +107,14 @@ cdl_status cdl_photometry_read_file(const char *path, const cdl_photometry_read_
  * bilateral; 90..270: bilateral about 90-270; otherwise full). */
 cdl_status cdl_photometry_create_type_c(const double *c_deg, size_t nc, const double *gamma_deg, size_t ng,
                                         const double *candela, cdl_photometry **out, cdl_error *err);
+
+/* Build a table of any photometric type. For type C, h_deg are frame C
+ * planes and v_deg gamma angles (as cdl_photometry_create_type_c); for types
+ * A and B, h_deg are the horizontal angles H and v_deg the vertical angles V
+ * (each within [-90, 90] for the latitude-like angle and [-180, 180] for the
+ * other; a list running 0..90 is mirrored). candela[nh * nv], H outermost. */
+cdl_status cdl_photometry_create(cdl_photometric_type type, const double *h_deg, size_t nh, const double *v_deg,
+                                 size_t nv, const double *candela, cdl_photometry **out, cdl_error *err);
 
 void cdl_photometry_release(cdl_photometry *photometry);
 
@@ -69,6 +130,13 @@ cdl_luminous_intensity cdl_photometry_intensity_c_gamma(const cdl_photometry *ph
 /* Total flux: the exact integral of the interpolated distribution over the sphere. */
 cdl_luminous_flux cdl_photometry_flux(const cdl_photometry *photometry);
 
+/* Flux into the directions whose frame gamma (angle from -z) lies in
+ * [gamma_lo_deg, gamma_hi_deg]. Exact for type C tables and for the two
+ * hemispheres of every type; for 10-degree zones of type A/B tables it is a
+ * quadrature accurate to about 1e-4 of the total. */
+cdl_luminous_flux cdl_photometry_zone_flux(const cdl_photometry *photometry, double gamma_lo_deg,
+                                           double gamma_hi_deg);
+
 /* Largest tabulated intensity. */
 cdl_luminous_intensity cdl_photometry_max_intensity(const cdl_photometry *photometry);
 
@@ -81,5 +149,135 @@ double cdl_photometry_output_factor(const cdl_photometry *photometry);
  * interpolation in the file's TILT table, clamped at its ends); 1 when the
  * file has TILT=NONE. */
 double cdl_photometry_tilt_factor(const cdl_photometry *photometry, double tilt_deg);
+
+/* ---- the stored table ---------------------------------------------------- */
+
+/* A read-only view of the stored (symmetry-reduced) table. For type C,
+ * horizontal_deg are frame C planes (see the convention above), vertical_deg
+ * gamma; for types A/B, the file's H and V. candela[i * vertical_count + j]. */
+typedef struct cdl_photometry_table {
+    cdl_photometric_type type;
+    cdl_photometry_symmetry symmetry;
+    size_t horizontal_count, vertical_count;
+    const double *horizontal_deg;
+    const double *vertical_deg;
+    const double *candela;
+} cdl_photometry_table;
+
+void cdl_photometry_get_table(const cdl_photometry *photometry, cdl_photometry_table *table);
+
+/* Frame direction of the table's angle pair (h, v) (types A/B/C as above). */
+cdl_vec3 cdl_photometry_direction(cdl_photometric_type type, double h_deg, double v_deg);
+
+/* ---- file data ----------------------------------------------------------- */
+
+typedef enum cdl_photometry_format {
+    CDL_PHOTOMETRY_FORMAT_TABLE = 0,  /* built in memory (cdl_photometry_create*) */
+    CDL_PHOTOMETRY_FORMAT_IES,        /* IES LM-63, any version */
+    CDL_PHOTOMETRY_FORMAT_EULUMDAT
+} cdl_photometry_format;
+
+/* Shape of the luminous opening. LM-63-2002/2019 Table 1 names, 1995 and
+ * 1986 codes mapped onto them; UNKNOWN keeps a code found in no table (the
+ * raw numbers stay in cdl_luminous_opening.raw). "Length" lies along the
+ * C0-C180 plane (IES photometric horizontal), "width" across it. */
+typedef enum cdl_luminous_shape {
+    CDL_LUMINOUS_SHAPE_POINT = 0,
+    CDL_LUMINOUS_SHAPE_RECTANGLE,
+    CDL_LUMINOUS_SHAPE_BOX,                      /* rectangular with luminous sides */
+    CDL_LUMINOUS_SHAPE_CIRCLE,                   /* horizontal disk, diameter = width = length */
+    CDL_LUMINOUS_SHAPE_ELLIPSE,
+    CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER,
+    CDL_LUMINOUS_SHAPE_VERTICAL_ELLIPTIC_CYLINDER,
+    CDL_LUMINOUS_SHAPE_SPHERE,
+    CDL_LUMINOUS_SHAPE_ELLIPSOID,
+    CDL_LUMINOUS_SHAPE_HORIZONTAL_CYLINDER_ALONG,  /* axis along the C0-C180 plane */
+    CDL_LUMINOUS_SHAPE_HORIZONTAL_CYLINDER_ACROSS, /* axis along the C90-C270 plane */
+    CDL_LUMINOUS_SHAPE_VERTICAL_CIRCLE,          /* facing the C0 direction */
+    CDL_LUMINOUS_SHAPE_VERTICAL_ELLIPSE,
+    CDL_LUMINOUS_SHAPE_UNKNOWN
+} cdl_luminous_shape;
+
+const char *cdl_luminous_shape_name(cdl_luminous_shape shape);
+
+typedef struct cdl_luminous_opening {
+    cdl_luminous_shape shape;
+    double width_m, length_m, height_m; /* magnitudes in metres (diameter for round shapes) */
+    double raw[3];                      /* IES width, length, height as written (file units), else 0 */
+    int units_type;                     /* IES units: 1 feet, 2 metres; 0 when not from IES */
+} cdl_luminous_opening;
+
+/* One lamp set. An IES file has one (lamp count x lumens per lamp); an
+ * EULUMDAT file has 1..20, the first being the measured equipment and the
+ * others alternatives. */
+typedef struct cdl_photometry_lamp_set {
+    int count;          /* number of lamps (EULUMDAT: negative = absolute photometry) */
+    double flux_lm;     /* total rated flux of the set, all lamps; 0 when unknown */
+    double watts;       /* input power incl. ballast; 0 when unknown */
+    char type[128];     /* lamp type / description ("" when unknown) */
+    char colour[64];    /* colour appearance / CCT as written */
+    char cri[64];       /* colour rendering group / index as written */
+} cdl_photometry_lamp_set;
+
+typedef struct cdl_photometry_keyword {
+    char *key;          /* without brackets, e.g. "MANUFAC", "_ABSOLUTELUMENS"; "" for free text */
+    char *value;        /* [MORE] continuations joined with '\n' */
+} cdl_photometry_keyword;
+
+typedef enum cdl_tilt_kind { CDL_TILT_NONE = 0, CDL_TILT_INCLUDE, CDL_TILT_FILE } cdl_tilt_kind;
+
+#define CDL_PHOTOMETRY_MAX_LAMP_SETS 20
+
+typedef struct cdl_photometry_metadata {
+    cdl_photometry_format format;
+    int ies_version;              /* 1986, 1991, 1995, 2002 or 2019; 0 when not IES */
+    char version_tag[64];         /* IES line 1 as found (trimmed); "" for 1986 */
+    int absolute;                 /* 1: absolute photometry, no lamp reference */
+    double rated_lamp_flux_lm;    /* lamps x lumens (IES) or lamp set 1 (EULUMDAT); 0 if absolute */
+    double candela_multiplier;    /* IES multiplier or EULUMDAT conversion factor, as found (applied) */
+    double ballast_factor;        /* 1 when the format has none */
+    double ballast_lamp_factor;   /* LM-63-1995 and older record B field 2; 1 otherwise */
+    double file_generation_type;  /* LM-63-2019 record B field 2 (a code, not a factor); 0 otherwise */
+    double input_watts;           /* 0 when unknown */
+    size_t lamp_set_count;
+    cdl_photometry_lamp_set lamp_sets[CDL_PHOTOMETRY_MAX_LAMP_SETS];
+    cdl_luminous_opening opening;
+    size_t keyword_count;
+    cdl_photometry_keyword *keywords;
+    /* tilt */
+    cdl_tilt_kind tilt_kind;
+    char tilt_file[256];          /* TILT=<file> as written */
+    int tilt_geometry;            /* 1, 2 or 3 (LM-63 lamp-to-luminaire geometry); 0 without tilt */
+    size_t tilt_count;
+    const double *tilt_angles_deg;
+    const double *tilt_factors;
+    /* EULUMDAT fields (0 / "" when not from EULUMDAT) */
+    int ldt_ityp;                  /* type indicator 0..3 */
+    int ldt_isym;                  /* symmetry indicator 0..4 as found */
+    char ldt_company[128];
+    char ldt_report[128];          /* measurement report number */
+    char ldt_luminaire_name[128];
+    char ldt_luminaire_number[128];
+    char ldt_file_name[128];
+    char ldt_date_user[128];
+    double ldt_luminaire_mm[3];    /* length/diameter, width (0 = round), height */
+    double ldt_luminous_mm[2];     /* luminous length/diameter, width (0 = round) */
+    double ldt_luminous_height_mm[4]; /* in the C0, C90, C180, C270 planes */
+    double ldt_dff_percent;        /* downward flux fraction as stated */
+    double ldt_lorl_percent;       /* light output ratio as stated */
+    double ldt_measurement_tilt_deg;
+    double ldt_direct_ratios[10];  /* for room indices 0.60 ... 5.00 */
+} cdl_photometry_metadata;
+
+/* The file data. Never NULL for a valid photometry. */
+const cdl_photometry_metadata *cdl_photometry_get_metadata(const cdl_photometry *photometry);
+
+/* The value of the first keyword named `key` (case-insensitive), or NULL. */
+const char *cdl_photometry_keyword_value(const cdl_photometry *photometry, const char *key);
+
+/* Warnings found while reading (inconsistent header values, non-standard
+ * but readable constructs). Each is one line naming the file. */
+size_t cdl_photometry_warning_count(const cdl_photometry *photometry);
+const char *cdl_photometry_warning(const cdl_photometry *photometry, size_t index);
 
 #endif
