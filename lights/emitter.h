@@ -163,6 +163,10 @@ int cdl_emitter_eval_delta(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, c
 cdl_status cdl_emitter_exact_illuminance(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, cdl_illuminance *E,
                                          cdl_error *err);
 
+/* 1 when cdl_emitter_exact_illuminance has a closed form for this emitter
+ * (every kind except the image environment). */
+int cdl_emitter_has_exact_illuminance(const cdl_emitter *emitter);
+
 typedef struct cdl_light_sample {
     cdl_vec3 to_light;        /* unit vector from p towards the sampled point */
     double distance;          /* to the sampled point; INFINITY for environment */
@@ -176,8 +180,15 @@ typedef struct cdl_light_sample {
 int cdl_emitter_sample(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, double u1, double u2,
                        cdl_light_sample *out);
 
-/* Luminance arriving at p from world direction `to_light` and the pdf that
- * cdl_emitter_sample would have produced it with (for MIS); 0 if none. */
-cdl_luminance cdl_emitter_radiance(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 to_light, double *pdf);
+/* Luminance arriving at p from world direction `to_light` (any length > 0)
+ * and, in *pdf (may be NULL), the solid-angle density with which
+ * cdl_emitter_sample(emitter, p, n, ...) produces that direction (for MIS);
+ * L = 0 if no light arrives that way. Area emitters: the nearest point of
+ * the emitter along the ray, L = 0 on its back; the pdf is that point's.
+ * The receiver normal n is needed because some samplers depend on it
+ * (uniform environment and inward spheres sample cos-weighted about n).
+ * Delta emitters: L = 0, pdf = 0. */
+cdl_luminance cdl_emitter_radiance(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, cdl_vec3 to_light,
+                                   double *pdf);
 
 #endif

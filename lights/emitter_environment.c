@@ -1,0 +1,285 @@
+/* emitter_environment.c - light from infinitely far away in every direction.
+ *
+ *   parameter      meaning                                       unit    default  range
+ *   up             zenith                                        -       +z       non-zero
+ *   upper_hemi...  1: nothing from below the horizon of up       -       0        0 or 1
+ *   luminance      uniform sky (image == NULL)                   cd/m^2  -        >= 0
+ *   image          lat-long luminance, width x height, copied    cd/m^2  NULL     finite, >= 0
+ *   scale          multiplies the image                          -       1        > 0
+ *
+ * Image mapping (DESIGN.md): column u in [0,1) looks towards azimuth
+ * phi = pi + 2 pi u, counter-clockwise from the azimuth reference seen from
+ * above (left edge -x, centre +x for up = +z); row v in [0,1) towards polar
+ * angle theta = pi v from up. Luminance is constant over each pixel's solid
+ * angle Omega_j = (2 pi / width)(cos theta_j - cos theta_j+1).
+ * Azimuth reference: world +x made perpendicular to up (world +y when up is
+ * within 2.6 degrees of the x axis); azimuth 90 is up x reference.
+ *
+ * Illuminance on a plane of normal n, unoccluded:
+ *   uniform, full sphere:      E = pi L for every n;
+ *   uniform, upper hemisphere: E = pi L (1 + cos beta) / 2, beta the angle
+ *     between n and up (derivation at uniform_exact below);
+ *   image: no closed form (sampling only).
+ * "Flux" (cdl_emitter_flux): the flux on the face of a 1 m^2 disk facing up,
+ * Phi = int over the upper hemisphere of L cos theta dw: pi L for a uniform
+ * sky either way; for an image, per row
+ *   (2 pi / width) sum_i L_ij (sin^2 theta_b - sin^2 theta_a) / 2
+ * over the part [theta_a, theta_b] of the row above the horizon.
+ *
+ * Sampling: uniform sky, cosine-weighted about the receiver normal n
+ * (pdf = cos / pi: zero variance for a full sky with nothing in the way);
+ * image, a pixel with probability L_ij Omega_j / sum(L Omega), then a
+ * uniform direction within the pixel's solid angle: pdf = L_ij / sum(L Omega)
+ * in solid angle, exact.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lights/distribution2d.h"
+#include "lights/emitter.h"
+#include "lights/emitter_internal.h"
+#include "radiometry/constants.h"
+#include "radiometry/frame.h"
+#include "radiometry/sampling.h"
+
+typedef struct environment_emitter {
+    cdl_emitter base;
+    cdl_frame frame; /* s: azimuth 0, t: azimuth 90, n: up */
+    int upper_only;
+    double L;        /* uniform sky */
+    /* image */
+    float *image;
+    int width, height;
+    double scale;
+    double *cos_top, *cos_bottom; /* per row: cos of the polar bounds, the bottom clipped at the horizon if upper_only */
+    cdl_distribution2d *dist;     /* weights image x pixel solid angle */
+    double flux;
+} environment_emitter;
+
+static const environment_emitter *as_env(const cdl_emitter *e)
+{
+    return (const environment_emitter *)e;
+}
+
+/* cos(pi k / (2 m)) as sin(pi (m - k) / (2 m)): exactly 0 at the horizon. */
+static double cos_polar(int k2, int m2)
+{
+    return sin(CDL_PI * (double)(m2 - k2) / (double)m2);
+}
+
+/* ---- flux ------------------------------------------------------------------- */
+
+static cdl_luminous_flux environment_flux(const cdl_emitter *e)
+{
+    const environment_emitter *env = as_env(e);
+    /* Uniform sky over the upper hemisphere: int L cos dw = pi L. */
+    return cdl_lumens(env->image ? env->flux : CDL_PI * env->L);
+}
+
+/* int over rows above the horizon of L cos theta dw (see the header comment). */
+static double image_flux(const environment_emitter *env)
+{
+    double dphi = CDL_TWO_PI / env->width, flux = 0.0;
+    for (int j = 0; j < env->height; ++j) {
+        double a = CDL_PI * j / env->height, b = fmin(CDL_PI * (j + 1) / env->height, 0.5 * CDL_PI);
+        if (!(b > a)) break;
+        double row = 0.0;
+        for (int i = 0; i < env->width; ++i) row += env->image[(size_t)j * env->width + i];
+        /* int_a^b cos sin dtheta = (sin^2 b - sin^2 a)/2 = sin(b + a) sin(b - a) / 2. */
+        flux += row * dphi * 0.5 * sin(b + a) * sin(b - a);
+    }
+    return env->scale * flux;
+}
+
+/* ---- exact illuminance ------------------------------------------------------ */
+
+static int environment_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_illuminance *E)
+{
+    (void)p;
+    const environment_emitter *env = as_env(e);
+    if (env->image) return 0;
+    if (!env->upper_only) {
+        /* The receiver's whole hemisphere is sky: int L cos dw = pi L. */
+        *E = cdl_lux(CDL_PI * env->L);
+        return 1;
+    }
+    /* Sky above the horizon only. With max(0, x) = (x + |x|)/2:
+     *   int_sky n.w dw   = n . int_sky w dw = n . (pi up) = pi cos(beta),
+     *   int_sky |n.w| dw = half of int_sphere |n.w| dw = pi
+     * (w -> -w maps the sky onto the ground and keeps |n.w|), hence
+     *   E = L pi (1 + cos beta) / 2,
+     * the isotropic-sky view factor of a tilted plane (e.g. Duffie and
+     * Beckman, "Solar Engineering of Thermal Processes", 4th ed., 2013, 2.19). */
+    double cos_beta = fmax(-1.0, fmin(1.0, cdl_vec3_dot(n, env->frame.n)));
+    *E = cdl_lux(CDL_PI * env->L * 0.5 * (1.0 + cos_beta));
+    return 1;
+}
+
+/* ---- directions and pixels ------------------------------------------------- */
+
+static cdl_luminance uniform_radiance_towards(const environment_emitter *env, cdl_vec3 w)
+{
+    if (env->upper_only && !(cdl_vec3_dot(w, env->frame.n) > 0.0)) return cdl_nits(0.0);
+    return cdl_nits(env->L);
+}
+
+/* Pixel seen along unit world direction w; 0 if w is below the horizon of an upper-only sky. */
+static int pixel_of(const environment_emitter *env, cdl_vec3 w, int *i, int *j)
+{
+    cdl_vec3 l = cdl_frame_to_local(&env->frame, w);
+    if (env->upper_only && !(l.z > 0.0)) return 0;
+    double phi = atan2(l.y, l.x);                /* (-pi, pi] */
+    double u = (phi - CDL_PI) / CDL_TWO_PI;      /* phi = pi + 2 pi u */
+    if (u < 0.0) u += 1.0;
+    double v = atan2(hypot(l.x, l.y), l.z) / CDL_PI;
+    *i = (int)fmin(floor(u * env->width), env->width - 1.0);
+    *j = (int)fmin(floor(v * env->height), env->height - 1.0);
+    if (*i < 0) *i = 0;
+    if (*j < 0) *j = 0;
+    return 1;
+}
+
+static double pixel_value(const environment_emitter *env, int i, int j)
+{
+    return env->image[(size_t)j * env->width + i];
+}
+
+/* ---- sampling and radiance --------------------------------------------------- */
+
+static int environment_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1, double u2,
+                              cdl_light_sample *out)
+{
+    (void)p;
+    const environment_emitter *env = as_env(e);
+    cdl_vec3 w;
+    double pdf;
+    cdl_luminance L;
+    if (!env->image) {
+        cdl_frame f = cdl_frame_from_normal(n);
+        w = cdl_frame_to_world(&f, cdl_sample_cosine_hemisphere(u1, u2));
+        pdf = fmax(0.0, cdl_vec3_dot(n, w)) * CDL_INV_PI;
+        L = uniform_radiance_towards(env, w);
+    } else {
+        size_t i, j;
+        double fx, fy;
+        if (!cdl_distribution2d_sample(env->dist, u1, u2, &i, &j, &fx, &fy)) return 0;
+        /* Uniform in solid angle within the pixel: cos(theta) uniform between
+         * the row's bounds, phi uniform across the column. */
+        double cos_t = env->cos_top[j] - fy * (env->cos_top[j] - env->cos_bottom[j]);
+        double sin_t = sqrt(fmax(0.0, (1.0 - cos_t) * (1.0 + cos_t)));
+        double phi = CDL_PI + CDL_TWO_PI * ((double)i + fx) / env->width;
+        w = cdl_frame_to_world(&env->frame, cdl_vec3_make(sin_t * cos(phi), sin_t * sin(phi), cos_t));
+        double value = pixel_value(env, (int)i, (int)j);
+        /* pdf = P(pixel) / Omega(pixel) = (value Omega / total) / Omega = value / total. */
+        pdf = value / cdl_distribution2d_total(env->dist);
+        L = cdl_nits(env->scale * value);
+    }
+    if (!(cdl_vec3_dot(n, w) > 0.0) || !(L.cd_m2 > 0.0) || !(pdf > 0.0)) return 0;
+    out->to_light = w;
+    out->distance = INFINITY;
+    out->L = L;
+    out->pdf = pdf;
+    return 1;
+}
+
+static cdl_luminance environment_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_vec3 w, double *pdf)
+{
+    (void)p;
+    const environment_emitter *env = as_env(e);
+    if (!env->image) {
+        *pdf = fmax(0.0, cdl_vec3_dot(n, w)) * CDL_INV_PI;
+        return uniform_radiance_towards(env, w);
+    }
+    int i, j;
+    if (!pixel_of(env, w, &i, &j)) return cdl_nits(0.0);
+    double value = pixel_value(env, i, j);
+    double total = cdl_distribution2d_total(env->dist);
+    *pdf = total > 0.0 ? value / total : 0.0;
+    return cdl_nits(env->scale * value);
+}
+
+/* ---- construction ------------------------------------------------------------- */
+
+static void environment_destroy(cdl_emitter *e)
+{
+    environment_emitter *env = (environment_emitter *)e;
+    free(env->image);
+    free(env->cos_top);
+    free(env->cos_bottom);
+    cdl_distribution2d_release(env->dist);
+}
+
+static const cdl_emitter_ops environment_ops = {environment_flux, NULL, NULL, environment_exact,
+                                                environment_sample, environment_radiance, environment_destroy};
+
+static cdl_status build_image(environment_emitter *env, const cdl_environment_params *p, cdl_error *err)
+{
+    if (p->width < 1 || p->height < 1)
+        return cdl_error_set(err, CDL_ERR_INPUT, "environment image: expected at least 1 x 1 pixels, found %d x %d",
+                             p->width, p->height);
+    if (!(isfinite(p->scale) && p->scale > 0.0))
+        return cdl_error_set(err, CDL_ERR_INPUT, "environment image: scale: expected a finite number > 0, found %g",
+                             p->scale);
+    size_t count = (size_t)p->width * (size_t)p->height;
+    for (size_t k = 0; k < count; ++k)
+        if (!(isfinite(p->image[k]) && p->image[k] >= 0.0f))
+            return cdl_error_set(err, CDL_ERR_INPUT,
+                                 "environment image: pixel (column %zu, row %zu): expected a finite luminance >= 0 "
+                                 "cd/m^2, found %g",
+                                 k % (size_t)p->width, k / (size_t)p->width, (double)p->image[k]);
+    env->width = p->width;
+    env->height = p->height;
+    env->scale = p->scale;
+    env->image = malloc(count * sizeof *env->image);
+    env->cos_top = malloc((size_t)p->height * sizeof(double));
+    env->cos_bottom = malloc((size_t)p->height * sizeof(double));
+    double *omega = malloc((size_t)p->height * sizeof(double));
+    if (!env->image || !env->cos_top || !env->cos_bottom || !omega) {
+        free(omega);
+        return cdl_error_out_of_memory(err);
+    }
+    memcpy(env->image, p->image, count * sizeof *env->image);
+    for (int j = 0; j < p->height; ++j) {
+        env->cos_top[j] = cos_polar(2 * j, 2 * p->height);
+        env->cos_bottom[j] = cos_polar(2 * (j + 1), 2 * p->height);
+        if (env->upper_only) {
+            env->cos_top[j] = fmax(env->cos_top[j], 0.0);
+            env->cos_bottom[j] = fmax(env->cos_bottom[j], 0.0);
+        }
+        /* Pixel solid angle (2 pi / width)(cos top - cos bottom). */
+        omega[j] = CDL_TWO_PI / p->width * (env->cos_top[j] - env->cos_bottom[j]);
+    }
+    cdl_status st = cdl_distribution2d_create(p->image, omega, (size_t)p->width, (size_t)p->height, &env->dist, err);
+    free(omega);
+    if (st != CDL_OK) return st;
+    env->flux = image_flux(env);
+    return CDL_OK;
+}
+
+cdl_status cdl_emitter_create_environment(const cdl_environment_params *p, cdl_emitter **out, cdl_error *err)
+{
+    *out = NULL;
+    cdl_status st;
+    cdl_vec3 up;
+    if ((st = cdl_emitter_check_direction(p->up, "environment emitter: up", &up, err)) != CDL_OK) return st;
+    if (!p->image &&
+        (st = cdl_emitter_check_nonnegative(p->luminance.cd_m2, "environment emitter: luminance", "cd/m^2", err)) !=
+            CDL_OK)
+        return st;
+    environment_emitter *env = cdl_emitter_alloc(sizeof *env, CDL_EMITTER_ENVIRONMENT, &environment_ops, err);
+    if (!env) return CDL_ERR_INTERNAL;
+    /* Azimuth reference: world +x made perpendicular to up (Gram-Schmidt). */
+    cdl_vec3 ref = fabs(up.x) > 0.999 ? cdl_vec3_make(0.0, 1.0, 0.0) : cdl_vec3_make(1.0, 0.0, 0.0);
+    env->frame.n = up;
+    env->frame.s = cdl_vec3_normalize(cdl_vec3_madd(ref, -cdl_vec3_dot(ref, up), up));
+    env->frame.t = cdl_vec3_cross(up, env->frame.s);
+    env->upper_only = p->upper_hemisphere_only ? 1 : 0;
+    env->L = p->image ? 0.0 : p->luminance.cd_m2;
+    if (p->image && (st = build_image(env, p, err)) != CDL_OK) {
+        cdl_emitter_release(&env->base);
+        return st;
+    }
+    *out = &env->base;
+    return CDL_OK;
+}

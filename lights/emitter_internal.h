@@ -1,0 +1,57 @@
+/* emitter_internal.h - the per-kind table behind cdl_emitter (private to lights/).
+ *
+ * Each emitter kind lives in its own file (emitter_point.c, emitter_spot.c,
+ * ...) and defines a struct whose first member is `cdl_emitter base`, plus
+ * one constant table of operations. emitter.c dispatches through the table
+ * and holds the validation helpers every constructor shares, so that every
+ * kind reports bad parameters in the same words.
+ */
+#ifndef CANDELA_LIGHTS_EMITTER_INTERNAL_H
+#define CANDELA_LIGHTS_EMITTER_INTERNAL_H
+
+#include "lights/emitter.h"
+
+typedef struct cdl_emitter_ops {
+    cdl_luminous_flux (*flux)(const cdl_emitter *e);
+    cdl_luminous_intensity (*intensity)(const cdl_emitter *e, cdl_vec3 unit_dir);
+    /* Delta emitters only (NULL otherwise). */
+    int (*eval_delta)(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out);
+    /* Non-delta emitters: returns 0 when there is no closed form. */
+    int (*exact)(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_illuminance *E);
+    /* Non-delta emitters only (NULL otherwise). */
+    int (*sample)(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1, double u2, cdl_light_sample *out);
+    cdl_luminance (*radiance)(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_vec3 unit_dir, double *pdf);
+    /* Frees what the kind owns besides the block itself (may be NULL). */
+    void (*destroy)(cdl_emitter *e);
+} cdl_emitter_ops;
+
+struct cdl_emitter {
+    cdl_emitter_kind kind;
+    const cdl_emitter_ops *ops;
+};
+
+/* A zeroed block of `size` bytes whose leading cdl_emitter is filled in;
+ * NULL (and an out-of-memory error) on failure. */
+void *cdl_emitter_alloc(size_t size, cdl_emitter_kind kind, const cdl_emitter_ops *ops, cdl_error *err);
+
+/* Validation shared by the constructors. `what` names the parameter, e.g.
+ * "spot emitter: intensity". Each returns CDL_OK or CDL_ERR_INPUT with
+ * "WHAT: expected ..., found ...". */
+cdl_status cdl_emitter_check_position(cdl_vec3 v, const char *what, cdl_error *err);
+/* A finite non-zero vector; *unit receives it normalised. */
+cdl_status cdl_emitter_check_direction(cdl_vec3 v, const char *what, cdl_vec3 *unit, cdl_error *err);
+/* A finite number >= 0 in `unit`. */
+cdl_status cdl_emitter_check_nonnegative(double x, const char *what, const char *unit, cdl_error *err);
+/* A finite number in [lo, hi] in `unit`. */
+cdl_status cdl_emitter_check_range(double x, double lo, double hi, const char *what, const char *unit,
+                                   cdl_error *err);
+
+/* The delta-light record for a source at `position` whose intensity towards
+ * the receiver at p is given by intensity_towards(emitter, direction from the
+ * light to p); E = I cos / d^2 on the plane of n. Shared by point, spot and
+ * goniometric emitters. Returns 0 when E = 0. */
+typedef cdl_luminous_intensity (*cdl_emitter_intensity_fn)(const cdl_emitter *e, cdl_vec3 unit_dir);
+int cdl_emitter_eval_positional(const cdl_emitter *e, cdl_vec3 position, cdl_emitter_intensity_fn intensity_towards,
+                                cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out);
+
+#endif

@@ -1,0 +1,139 @@
+/* emitter_checks.h - numerical references shared by the emitter tests.
+ *
+ * Include after check.h. Everything is static: each test program gets its
+ * own copy. Two independent ways to reach a number an emitter states in
+ * closed form:
+ *  - quadrature over the sphere of directions (midpoint rule in cos(theta)
+ *    and phi, which is a product rule exact for constants and of order h^2
+ *    for functions with kinks), in a frame tilted away from the world axes
+ *    so that nothing lines up with the emitters' own symmetries by accident;
+ *  - Monte-Carlo estimates with the emitter's own importance sampling,
+ *    returning the mean and its standard error, and checking on the way that
+ *    cdl_emitter_radiance reports the same luminance and pdf as each sample.
+ */
+#ifndef CANDELA_TESTS_LIGHTS_EMITTER_CHECKS_H
+#define CANDELA_TESTS_LIGHTS_EMITTER_CHECKS_H
+
+#include <math.h>
+#include <stdint.h>
+
+#include "lights/emitter.h"
+#include "radiometry/constants.h"
+#include "radiometry/frame.h"
+#include "radiometry/rng.h"
+
+typedef double (*direction_fn)(void *ctx, cdl_vec3 w);
+
+/* A fixed frame tilted from the world axes (no special alignment). */
+static inline cdl_frame tilted_frame(void)
+{
+    return cdl_frame_from_normal(cdl_vec3_normalize(cdl_vec3_make(0.3141, -0.2718, 0.9100)));
+}
+
+/* int f(w) dw over the directions with cos(theta) >= mu_lo about fr's axis:
+ * n_theta x n_phi midpoint cells uniform in cos(theta) and phi, each of the
+ * same solid angle. */
+static inline double cap_quadrature(direction_fn f, void *ctx, const cdl_frame *fr, double mu_lo, int n_theta,
+                                    int n_phi)
+{
+    double dmu = (1.0 - mu_lo) / n_theta, sum = 0.0;
+    for (int j = 0; j < n_theta; ++j) {
+        double mu = 1.0 - (j + 0.5) * dmu, s = sqrt(fmax(0.0, 1.0 - mu * mu));
+        double row = 0.0;
+        for (int k = 0; k < n_phi; ++k) {
+            double phi = CDL_TWO_PI * (k + 0.5) / n_phi;
+            row += f(ctx, cdl_frame_to_world(fr, cdl_vec3_make(s * cos(phi), s * sin(phi), mu)));
+        }
+        sum += row;
+    }
+    return sum * dmu * CDL_TWO_PI / n_phi;
+}
+
+/* Over the whole sphere, about the tilted frame. */
+static inline double sphere_quadrature(direction_fn f, void *ctx, int n_theta)
+{
+    cdl_frame fr = tilted_frame();
+    return cap_quadrature(f, ctx, &fr, -1.0, n_theta, 2 * n_theta);
+}
+
+/* Over the hemisphere about unit n. */
+static inline double hemisphere_quadrature(direction_fn f, void *ctx, cdl_vec3 n, int n_theta)
+{
+    cdl_frame fr = cdl_frame_from_normal(n);
+    return cap_quadrature(f, ctx, &fr, 0.0, n_theta, 4 * n_theta);
+}
+
+/* Intensity of an emitter as a direction function (for flux quadratures). */
+static inline double intensity_of(void *ctx, cdl_vec3 w)
+{
+    return cdl_emitter_intensity((const cdl_emitter *)ctx, w).cd;
+}
+
+/* Receiver for radiance quadratures: L(p, w) max(0, n.w). */
+typedef struct receiver_ctx {
+    const cdl_emitter *emitter;
+    cdl_vec3 p, n;
+} receiver_ctx;
+
+static inline double radiance_cosine(void *ctx, cdl_vec3 w)
+{
+    const receiver_ctx *r = ctx;
+    double c = cdl_vec3_dot(r->n, w);
+    if (!(c > 0.0)) return 0.0;
+    return cdl_emitter_radiance(r->emitter, r->p, r->n, w, NULL).cd_m2 * c;
+}
+
+static inline double radiance_pdf(void *ctx, cdl_vec3 w)
+{
+    const receiver_ctx *r = ctx;
+    double pdf = 0.0;
+    cdl_emitter_radiance(r->emitter, r->p, r->n, w, &pdf);
+    return pdf;
+}
+
+typedef struct mc_result {
+    double mean, stderr_;   /* estimate of E (lx) and its standard error */
+    int pdf_mismatches;     /* samples where radiance() disagreed with sample() */
+    int bad_samples;        /* non-finite or non-positive pdf, or a non-unit direction */
+} mc_result;
+
+/* E = mean of L cos / pdf over k x k jittered strata (the sample variance of
+ * stratified samples overestimates the estimator's variance, so the
+ * standard error is conservative). With check_radiance, every sample is
+ * looked up again through cdl_emitter_radiance: luminance and pdf must agree
+ * to 1e-9 (they are the same formulas evaluated from a recomputed hit). */
+static inline mc_result mc_illuminance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, int k, uint64_t seed,
+                                       int check_radiance)
+{
+    mc_result r = {0.0, 0.0, 0, 0};
+    cdl_rng_key key = {seed, 99};
+    double sum = 0.0, sum2 = 0.0;
+    int count = k * k;
+    for (int j = 0; j < k; ++j)
+        for (int i = 0; i < k; ++i) {
+            double u[2];
+            cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
+            cdl_light_sample s;
+            double f = 0.0;
+            if (cdl_emitter_sample(e, p, n, (i + u[0]) / k, (j + u[1]) / k, &s)) {
+                if (!(s.pdf > 0.0) || !isfinite(s.pdf) || fabs(cdl_vec3_length(s.to_light) - 1.0) > 1e-12 ||
+                    !(s.distance > 0.0))
+                    r.bad_samples++;
+                double c = cdl_vec3_dot(n, s.to_light);
+                if (c > 0.0) f = s.L.cd_m2 * c / s.pdf;
+                if (check_radiance) {
+                    double pdf = 0.0;
+                    cdl_luminance L = cdl_emitter_radiance(e, p, n, s.to_light, &pdf);
+                    if (fabs(L.cd_m2 - s.L.cd_m2) > 1e-9 * s.L.cd_m2 || fabs(pdf - s.pdf) > 1e-9 * s.pdf)
+                        r.pdf_mismatches++;
+                }
+            }
+            sum += f;
+            sum2 += f * f;
+        }
+    r.mean = sum / count;
+    r.stderr_ = sqrt(fmax(0.0, (sum2 / count - r.mean * r.mean) / (count - 1)));
+    return r;
+}
+
+#endif
