@@ -15,8 +15,9 @@
  * A rect grid's raster is nu x nv, row 0 at the v = 1 edge (top of the
  * image), column 0 at the u = 0 edge. A polygon grid's raster covers its
  * bounding rectangle in the plane (first axis along the first edge of the
- * outer ring) at p/4 per pixel, each pixel taking the point of the triangle
- * containing its centre.
+ * outer ring) at p/4 per pixel (coarser when that would exceed 4096 pixels
+ * on a side), each pixel taking the point of the triangle containing its
+ * centre.
  */
 #ifndef CANDELA_SOLVER_GRID_H
 #define CANDELA_SOLVER_GRID_H
@@ -39,6 +40,10 @@ typedef struct cdl_grid {
     double pixel_size_m;      /* size of a raster pixel along the grid's first axis */
     double spacing_m;         /* polygon: spacing used; rect: |u|/nu */
 } cdl_grid;
+
+/* Largest number of points a grid may have (the scene loader refuses more;
+ * polygon grids check their estimated count before meshing). */
+#define CDL_GRID_MAX_POINTS 10000000
 
 /* EN 12464-1 grid spacing for a longest dimension d (m): 0.2 x 5^log10(d), capped at 10 m. */
 double cdl_grid_auto_spacing(double longest_dimension_m);

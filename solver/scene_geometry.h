@@ -28,7 +28,10 @@ typedef struct cdl_geometry_piece {
     int box_face;                        /* CDL_BOX_* for boxes, -1 otherwise */
     double reflectance;
     int two_sided;
-    double luminance_cd_m2;              /* > 0: the front emits */
+    double luminance_cd_m2;              /* > 0: the front emits (Lambertian). Area luminaires: the
+                                          * luminance they emit, maintenance factor included and
+                                          * flux_lm converted by flux = pi L area, so an emitter made
+                                          * from `shape` and this value is the luminaire. */
     cdl_shape shape;                     /* world-space shape; TRIANGLES arrays owned by the geometry */
     size_t triangle_count;               /* 0 for spheres */
     double area;                         /* m^2 */
@@ -47,9 +50,38 @@ size_t cdl_scene_geometry_triangle_count(const cdl_scene_geometry *geometry);
 void cdl_scene_geometry_bounds(const cdl_scene_geometry *geometry, cdl_vec3 *lo, cdl_vec3 *hi);
 double cdl_scene_geometry_extent(const cdl_scene_geometry *geometry);
 
+/* The triangles of a piece as placed in the ray scene (counter-clockwise
+ * seen from the front; for disks the inscribed fan). Returns the triangle
+ * count (0 for spheres, with NULL arrays). Valid while the geometry lives. */
+size_t cdl_scene_geometry_piece_triangles(const cdl_scene_geometry *geometry, size_t geom_id, const double **xyz,
+                                          size_t *vertex_count, const uint32_t **triangles);
+
 /* Ray epsilon that works at every scale: a small fraction of the scene
  * extent plus the float resolution at the magnitude of p. Shadow and
  * secondary rays start at t = epsilon and stop epsilon short of their end. */
 double cdl_scene_geometry_ray_epsilon(const cdl_scene_geometry *geometry, cdl_vec3 p);
+
+/* Ray queries that apply the epsilon for the caller (all thread-safe).
+ *
+ * A point p lying on a surface (a floor grid at z = 0, a hit point) with
+ * that surface's normal n starts its rays from p moved epsilon along n, to
+ * the side the ray goes (ray_origin; n may be the zero vector: no move).
+ * Then every direction of the hemisphere n faces, grazing ones included,
+ * leaves the surface without hitting it. Rays also ignore hits closer than
+ * epsilon and stop epsilon short of their end.
+ *
+ * ray_occluded: anything on p + t dir (dir unit), t in (0, distance)?
+ * distance may be INFINITY (directional light, environment, AO).
+ * segment_occluded: anything between p and q? Each end may carry the normal
+ * of the surface it lies on (an area-light sample), or the zero vector.
+ * intersect: the first hit along dir (unit) up to t_max; hit->t is the
+ * distance from p. */
+cdl_vec3 cdl_scene_geometry_ray_origin(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 n, cdl_vec3 toward);
+int cdl_scene_geometry_ray_occluded(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,
+                                    double distance);
+int cdl_scene_geometry_segment_occluded(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 p_normal, cdl_vec3 q,
+                                        cdl_vec3 q_normal);
+int cdl_scene_geometry_intersect(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,
+                                 double t_max, cdl_ray_hit *hit);
 
 #endif
