@@ -489,6 +489,7 @@ static void line_column(const char *text, size_t offset, size_t *line, size_t *c
     }
 }
 
+/* cJSON reports where it gave up, which is at or shortly after the error. */
 static cdl_status json_syntax_error(cdl_error *err, const char *file, const char *text, size_t size, size_t offset)
 {
     size_t line, column;
@@ -498,12 +499,15 @@ static cdl_status json_syntax_error(cdl_error *err, const char *file, const char
     for (size_t i = offset; i < size && k + 4 < sizeof near && text[i] != '\n'; ++i)
         near[k++] = isprint((unsigned char)text[i]) ? text[i] : '?';
     near[k] = '\0';
-    if (k == 0)
-        return cdl_error_set(err, CDL_ERR_INPUT, "%s:%zu:%zu: invalid JSON: expected a value, a comma or a bracket, "
-                                                 "found the end of the %s", file, line, column,
-                             offset >= size ? "file" : "line");
-    return cdl_error_set(err, CDL_ERR_INPUT, "%s:%zu:%zu: invalid JSON: expected valid JSON syntax, found \"%s\"", file,
-                         line, column, near);
+    if (offset >= size)
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "%s:%zu:%zu: invalid JSON: expected a well-formed JSON document, found a syntax error at "
+                             "or before the end of the file",
+                             file, line, column);
+    return cdl_error_set(err, CDL_ERR_INPUT,
+                         "%s:%zu:%zu: invalid JSON: expected a well-formed JSON document, found a syntax error at or "
+                         "before \"%s\"",
+                         file, line, column, near);
 }
 
 static char *copy_string(const char *s, size_t n)

@@ -77,7 +77,10 @@ typedef struct edge2d {
 static int compare_edges(const void *pa, const void *pb)
 {
     const edge2d *a = pa, *b = pb;
-    return (a->min_x > b->min_x) - (a->min_x < b->min_x);
+    /* Ties broken by position in the file, so reports do not depend on qsort. */
+    if (a->min_x != b->min_x) return (a->min_x > b->min_x) - (a->min_x < b->min_x);
+    if (a->ring != b->ring) return (a->ring > b->ring) - (a->ring < b->ring);
+    return (a->index > b->index) - (a->index < b->index);
 }
 
 static int edges_adjacent(const edge2d *e, const edge2d *f)
@@ -232,18 +235,24 @@ int cdl_scene_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size
         return set_problem(problem, CDL_POLYGON_NO_AREA, -1, 0);
     plane->normal = cdl_vec3_scale(area2, 1.0 / area2_len);
 
-    double tolerance = CDL_POLYGON_PLANARITY_TOLERANCE * plane->size;
+    /* Distances from the plane with that normal through the outer ring's
+     * mean point; the vertex farthest from it is reported, the one to fix. */
+    cdl_vec3 mean = cdl_vec3_make(0, 0, 0);
+    for (size_t i = 0; i < outer->count; ++i) mean = cdl_vec3_add(mean, outer->points[i]);
+    mean = cdl_vec3_scale(mean, 1.0 / (double)outer->count);
+    double tolerance = CDL_POLYGON_PLANARITY_TOLERANCE * plane->size, worst = 0.0;
     for (long r = -1; r < (long)hole_count; ++r) {
         const cdl_ring3 *ring = ring_at(outer, holes, r);
         for (size_t i = 0; i < ring->count; ++i) {
-            double d = fabs(cdl_vec3_dot(cdl_vec3_sub(ring->points[i], plane->origin), plane->normal));
-            if (d > tolerance) {
+            double d = fabs(cdl_vec3_dot(cdl_vec3_sub(ring->points[i], mean), plane->normal));
+            if (d > tolerance && d > worst) {
+                worst = d;
                 set_problem(problem, CDL_POLYGON_NOT_PLANAR, r, i);
                 problem->distance = d;
-                return 0;
             }
         }
     }
+    if (worst > 0.0) return 0;
 
     /* e1 along the first edge, made exactly orthogonal to the normal. */
     cdl_vec3 edge = cdl_vec3_sub(outer->points[1], outer->points[0]);
