@@ -232,6 +232,8 @@ typedef struct cdl_photometry_metadata {
     cdl_photometry_format format;
     int ies_version;              /* 1986, 1991, 1995, 2002 or 2019; 0 when not IES */
     char version_tag[64];         /* IES line 1 as found (trimmed); "" for 1986 */
+    size_t file_horizontal_count; /* as written: IES horizontal angles (with a closing 360) or EULUMDAT Mc */
+    size_t file_vertical_count;   /* as written: IES vertical angles or EULUMDAT Ng */
     int absolute;                 /* 1: absolute photometry, no lamp reference */
     double rated_lamp_flux_lm;    /* lamps x lumens (IES) or lamp set 1 (EULUMDAT); 0 if absolute */
     double candela_multiplier;    /* IES multiplier or EULUMDAT conversion factor, as found (applied) */
@@ -279,5 +281,89 @@ const char *cdl_photometry_keyword_value(const cdl_photometry *photometry, const
  * but readable constructs). Each is one line naming the file. */
 size_t cdl_photometry_warning_count(const cdl_photometry *photometry);
 const char *cdl_photometry_warning(const cdl_photometry *photometry, size_t index);
+
+/* ---- summary ------------------------------------------------------------- */
+
+/* Which plane a beam or field angle is measured in: the great circle
+ * through nadir and zenith containing C0 and C180 (the frame's x-z plane),
+ * or C90 and C270 (the y-z plane). For types A/B the same frame planes are used. */
+typedef enum cdl_photometry_plane { CDL_PLANE_C0_C180 = 0, CDL_PLANE_C90_C270 = 1 } cdl_photometry_plane;
+
+/* Full angle in degrees between the two directions on either side of the
+ * plane's maximum where the interpolated intensity falls to `fraction` of
+ * that maximum (0.5: beam angle, 0.1: field angle, as in IES/CIE usage).
+ * -1 when undefined: no light in the plane, or it never falls that low. */
+double cdl_photometry_spread_angle(const cdl_photometry *photometry, cdl_photometry_plane plane, double fraction);
+
+typedef struct cdl_photometry_summary {
+    cdl_luminous_flux flux;                  /* exact integral of the table */
+    cdl_luminous_flux downward_flux;         /* frame gamma in [0, 90] (below the horizontal) */
+    cdl_luminous_flux upward_flux;           /* frame gamma in [90, 180] */
+    cdl_luminous_flux zone_flux[18];         /* zone k: gamma in [10k, 10k + 10] */
+    double downward_fraction;                /* downward / total, 0 without light */
+    int lamp_flux_known;                     /* relative photometry: rated lamp flux given */
+    cdl_luminous_flux lamp_flux;             /* rated lamp flux (all lamps), 0 when unknown */
+    int lor_known;
+    double lor;                              /* light output ratio: flux / lamp flux */
+    cdl_luminous_intensity max_intensity;    /* largest tabulated value */
+    double max_c_deg, max_gamma_deg;         /* its frame direction */
+    double max_h_deg, max_v_deg;             /* its angles in the table (frame C/gamma for type C, H/V for A/B) */
+    double beam_angle_deg[2];                /* [CDL_PLANE_C0_C180], [CDL_PLANE_C90_C270]; -1 undefined */
+    double field_angle_deg[2];
+    int efficacy_known;
+    cdl_luminous_efficacy efficacy;          /* flux x output factor / input watts */
+} cdl_photometry_summary;
+
+void cdl_photometry_summarize(const cdl_photometry *photometry, cdl_photometry_summary *summary);
+
+/* ---- transforming -------------------------------------------------------- */
+
+/* A type C copy with every plane moved to C' = (sign x C + offset) mod 360
+ * (sign +1 or -1, offset a multiple of 90 keeps symmetric grids symmetric),
+ * stored with the most compact symmetry that represents the data exactly
+ * (rotational, quadrant, bilateral, or none). sign = +1, offset = 0 just
+ * compacts. Metadata is copied. Type A/B tables are refused. */
+cdl_status cdl_photometry_remap_c(const cdl_photometry *photometry, int sign, double offset_deg,
+                                  cdl_photometry **out, cdl_error *err);
+
+/* A type C copy of any table, sampled from the interpolated distribution on
+ * C-planes every dc_deg and gamma angles every dg_deg (both dividing 360
+ * and 180), then compacted. For types A/B this is a resampling (EULUMDAT
+ * knows only type C): the flux changes slightly. */
+cdl_status cdl_photometry_resample_type_c(const cdl_photometry *photometry, double dc_deg, double dg_deg,
+                                          cdl_photometry **out, cdl_error *err);
+
+/* ---- writing ------------------------------------------------------------- */
+
+/* What a target format could not hold, one line each (for stderr). */
+typedef struct cdl_photometry_notes {
+    size_t count;
+    char **items;
+} cdl_photometry_notes;
+#define CDL_PHOTOMETRY_NOTES_INIT {0, NULL}
+void cdl_photometry_notes_free(cdl_photometry_notes *notes);
+
+typedef struct cdl_photometry_write_options {
+    int ies_version;        /* IES output: 2019 (also when 0) or 2002 */
+    const char *file_name;  /* EULUMDAT line 11; NULL: the output file's name */
+} cdl_photometry_write_options;
+#define CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT {2019, NULL}
+
+/* The file text in a malloc'd buffer (*text, NUL-terminated, *length
+ * bytes). IES: LM-63-2019 or -2002, lines end in CR LF as the standard
+ * says; horizontal angles H = (360 - C) mod 360 (photometry.h). EULUMDAT:
+ * intensities in cd/klm of lamp set 1 (for absolute photometry: of the
+ * integrated flux, with a negative lamp count), CR LF. Both write the most
+ * compact symmetry that represents the table exactly. `lost` (may be NULL)
+ * receives what the format cannot hold. */
+cdl_status cdl_photometry_format_ies(const cdl_photometry *photometry, const cdl_photometry_write_options *options,
+                                     char **text, size_t *length, cdl_photometry_notes *lost, cdl_error *err);
+cdl_status cdl_photometry_format_ldt(const cdl_photometry *photometry, const cdl_photometry_write_options *options,
+                                     char **text, size_t *length, cdl_photometry_notes *lost, cdl_error *err);
+
+/* Write a file atomically (temporary name, then rename). */
+cdl_status cdl_photometry_write_file(const cdl_photometry *photometry, const char *path, cdl_photometry_format format,
+                                     const cdl_photometry_write_options *options, cdl_photometry_notes *lost,
+                                     cdl_error *err);
 
 #endif

@@ -80,6 +80,10 @@ int cdl_photometry_direction_to_hv(cdl_photometric_type type, cdl_vec3 d, double
 /* Exact flux of the table (no caching); used once at set-up. */
 double cdl_photometry_compute_flux(const cdl_photometry *p);
 
+/* Every plane of a type C table's full circle, in [0, 360), ascending
+ * (the stored sector and its mirror images). malloc'd. */
+cdl_status cdl_photometry_full_planes(const cdl_photometry *p, double **c, size_t *count);
+
 /* Copy a string of given length into a fixed buffer, trimmed of surrounding
  * blanks, always NUL-terminated. */
 void cdl_photometry_copy_text(char *dst, size_t dst_size, const char *src, size_t len);

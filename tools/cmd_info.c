@@ -1,5 +1,12 @@
-/* cmd_info.c - `candela info`. */
+/* cmd_info.c - `candela info`: a summary of a luminaire file, as text or JSON. */
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli_args.h"
 #include "command.h"
+#include "lights/photometry.h"
 
 static void print_help(FILE *out)
 {
@@ -11,12 +18,281 @@ static void print_help(FILE *out)
           "direction, beam (50 %) and field (10 %) angles, downward fraction, warnings.\n"
           "\n"
           "  --json     one JSON object on stdout instead of text\n"
-          "  --strict   treat warnings (inconsistent header values) as errors\n", out);
+          "  --strict   treat warnings (inconsistent header values) as errors\n"
+          "\n"
+          "Flux is the exact integral of the bilinearly interpolated table. Angles\n"
+          "are in the photometric frame: gamma from nadir, C counter-clockwise seen\n"
+          "from above, C0 along the luminaire's photometric horizontal; IES type C\n"
+          "horizontal angles H map to C = (360 - H) mod 360 (see `candela convert\n"
+          "--help`). Beam and field angles are full angles in the C0-C180 and\n"
+          "C90-C270 planes, relative to each plane's maximum; null when undefined.\n"
+          "\n"
+          "JSON keys: file, format, version, photometric_type, symmetry, c_planes,\n"
+          "gamma_angles (both as written in the file), stored_planes, lamp_flux_lm\n"
+          "(null for absolute photometry), flux_lm, lor (null when unknown),\n"
+          "max_intensity_cd, max_intensity_direction, beam_angle_deg and\n"
+          "field_angle_deg ({\"c0_c180\", \"c90_c270\"}), downward_fraction,\n"
+          "zone_flux_lm (18 zones of 10 degrees from nadir), efficacy_lm_per_w,\n"
+          "input_watts, ballast_factor, output_factor, tilt, opening, keywords, warnings.\n"
+          "\n"
+          "Exit status: 0 success, 1 bad input, 2 usage error.\n", out);
+}
+
+static const char *type_letter(cdl_photometric_type t)
+{
+    return t == CDL_PHOTOMETRIC_TYPE_A ? "A" : t == CDL_PHOTOMETRIC_TYPE_B ? "B" : "C";
+}
+
+static void version_text(const cdl_photometry_metadata *m, char *buf, size_t size)
+{
+    if (m->format == CDL_PHOTOMETRY_FORMAT_IES) snprintf(buf, size, "LM-63-%d", m->ies_version);
+    else if (m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT) snprintf(buf, size, "EULUMDAT");
+    else snprintf(buf, size, "table");
+}
+
+/* Text from files is bytes: keep valid UTF-8, read anything else as Latin-1. */
+static char *to_utf8(const char *s)
+{
+    size_t n = strlen(s);
+    int valid = 1;
+    for (size_t i = 0; i < n && valid;) {
+        unsigned char c = (unsigned char)s[i];
+        size_t len = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+        if (len == 0 || i + len > n) valid = 0;
+        for (size_t k = 1; valid && k < len; ++k)
+            if (((unsigned char)s[i + k] >> 6) != 2) valid = 0;
+        i += len ? len : 1;
+    }
+    char *out = malloc(2 * n + 1);
+    if (!out) return NULL;
+    if (valid) {
+        memcpy(out, s, n + 1);
+        return out;
+    }
+    size_t k = 0;
+    for (size_t i = 0; i < n; ++i) {
+        unsigned char c = (unsigned char)s[i];
+        if (c < 0x80) {
+            out[k++] = (char)c;
+        } else {
+            out[k++] = (char)(0xC0 | (c >> 6));
+            out[k++] = (char)(0x80 | (c & 0x3F));
+        }
+    }
+    out[k] = '\0';
+    return out;
+}
+
+static void add_string(cJSON *obj, const char *key, const char *value)
+{
+    char *u = to_utf8(value ? value : "");
+    cJSON_AddStringToObject(obj, key, u ? u : "");
+    free(u);
+}
+
+/* A finite number, or null. */
+static void add_number(cJSON *obj, const char *key, int known, double value)
+{
+    if (known && isfinite(value)) cJSON_AddNumberToObject(obj, key, value);
+    else cJSON_AddNullToObject(obj, key);
+}
+
+static void add_planes(cJSON *obj, const char *key, const double angles[2])
+{
+    cJSON *o = cJSON_AddObjectToObject(obj, key);
+    add_number(o, "c0_c180", angles[0] >= 0.0, angles[0]);
+    add_number(o, "c90_c270", angles[1] >= 0.0, angles[1]);
+}
+
+static void add_array(cJSON *obj, const char *key, const double *x, size_t n)
+{
+    cJSON *a = cJSON_AddArrayToObject(obj, key);
+    for (size_t i = 0; i < n; ++i) cJSON_AddItemToArray(a, cJSON_CreateNumber(isfinite(x[i]) ? x[i] : 0.0));
+}
+
+static int print_json(const char *path, const cdl_photometry *p, const cdl_photometry_summary *s)
+{
+    const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
+    cdl_photometry_table t;
+    cdl_photometry_get_table(p, &t);
+    char version[32];
+    version_text(m, version, sizeof version);
+    cJSON *j = cJSON_CreateObject();
+    if (!j) return CDL_EXIT_INTERNAL;
+    add_string(j, "file", path);
+    add_string(j, "format", m->format == CDL_PHOTOMETRY_FORMAT_IES        ? "IES"
+                            : m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT ? "EULUMDAT"
+                                                                          : "table");
+    add_string(j, "version", version);
+    add_string(j, "version_tag", m->version_tag);
+    add_string(j, "photometric_type", type_letter(t.type));
+    add_string(j, "symmetry", cdl_photometry_symmetry_name(t.symmetry));
+    cJSON_AddNumberToObject(j, "c_planes", (double)m->file_horizontal_count);
+    cJSON_AddNumberToObject(j, "gamma_angles", (double)m->file_vertical_count);
+    cJSON_AddNumberToObject(j, "stored_planes", (double)t.horizontal_count);
+    cJSON_AddBoolToObject(j, "absolute_photometry", m->absolute);
+    add_number(j, "lamp_flux_lm", s->lamp_flux_known, s->lamp_flux.lm);
+    cJSON_AddNumberToObject(j, "lamps", (double)(m->lamp_set_count ? m->lamp_sets[0].count : 0));
+    add_number(j, "flux_lm", 1, s->flux.lm);
+    add_number(j, "lor", s->lor_known, s->lor);
+    add_number(j, "max_intensity_cd", 1, s->max_intensity.cd);
+    cJSON *dir = cJSON_AddObjectToObject(j, "max_intensity_direction");
+    add_number(dir, "c_deg", 1, s->max_c_deg);
+    add_number(dir, "gamma_deg", 1, s->max_gamma_deg);
+    add_planes(j, "beam_angle_deg", s->beam_angle_deg);
+    add_planes(j, "field_angle_deg", s->field_angle_deg);
+    add_number(j, "downward_fraction", 1, s->downward_fraction);
+    add_number(j, "upward_fraction", 1, s->flux.lm > 0.0 ? s->upward_flux.lm / s->flux.lm : 0.0);
+    double zones[18];
+    for (int k = 0; k < 18; ++k) zones[k] = s->zone_flux[k].lm;
+    add_array(j, "zone_flux_lm", zones, 18);
+    add_number(j, "efficacy_lm_per_w", s->efficacy_known, s->efficacy.lm_W);
+    add_number(j, "input_watts", m->input_watts > 0.0, m->input_watts);
+    add_number(j, "ballast_factor", 1, m->ballast_factor);
+    add_number(j, "output_factor", 1, cdl_photometry_output_factor(p));
+    add_number(j, "candela_multiplier", 1, m->candela_multiplier);
+    if (m->tilt_count > 0) {
+        cJSON *tilt = cJSON_AddObjectToObject(j, "tilt");
+        cJSON_AddNumberToObject(tilt, "geometry", m->tilt_geometry);
+        add_array(tilt, "angles_deg", m->tilt_angles_deg, m->tilt_count);
+        add_array(tilt, "factors", m->tilt_factors, m->tilt_count);
+    } else {
+        cJSON_AddNullToObject(j, "tilt");
+    }
+    cJSON *op = cJSON_AddObjectToObject(j, "opening");
+    add_string(op, "shape", cdl_luminous_shape_name(m->opening.shape));
+    add_number(op, "width_m", 1, m->opening.width_m);
+    add_number(op, "length_m", 1, m->opening.length_m);
+    add_number(op, "height_m", 1, m->opening.height_m);
+    cJSON *kw = cJSON_AddArrayToObject(j, "keywords");
+    for (size_t i = 0; i < m->keyword_count; ++i) {
+        cJSON *pair = cJSON_CreateObject();
+        add_string(pair, "key", m->keywords[i].key);
+        add_string(pair, "value", m->keywords[i].value);
+        cJSON_AddItemToArray(kw, pair);
+    }
+    cJSON *w = cJSON_AddArrayToObject(j, "warnings");
+    for (size_t i = 0; i < cdl_photometry_warning_count(p); ++i) {
+        char *u = to_utf8(cdl_photometry_warning(p, i));
+        cJSON_AddItemToArray(w, cJSON_CreateString(u ? u : ""));
+        free(u);
+    }
+    char *text = cJSON_Print(j);
+    cJSON_Delete(j);
+    if (!text) return CDL_EXIT_INTERNAL;
+    puts(text);
+    cJSON_free(text);
+    return CDL_EXIT_OK;
+}
+
+static void print_angle(const char *label, const double a[2])
+{
+    printf("%-16s", label);
+    for (int k = 0; k < 2; ++k) {
+        if (a[k] >= 0.0) printf("%.1f deg", a[k]);
+        else printf("undefined");
+        printf("%s", k == 0 ? " (C0-C180), " : " (C90-C270)\n");
+    }
+}
+
+static void print_text(const char *path, const cdl_photometry *p, const cdl_photometry_summary *s)
+{
+    const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
+    cdl_photometry_table t;
+    cdl_photometry_get_table(p, &t);
+    char version[32];
+    version_text(m, version, sizeof version);
+    printf("%-16s%s\n", "file", path);
+    if (m->format == CDL_PHOTOMETRY_FORMAT_IES)
+        printf("%-16sIES %s%s%s%s\n", "format", version, m->version_tag[0] ? " (tag '" : " (no version tag)",
+               m->version_tag, m->version_tag[0] ? "')" : "");
+    else
+        printf("%-16sEULUMDAT (Isym %d, Ityp %d)\n", "format", m->ldt_isym, m->ldt_ityp);
+    const char *name = m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT ? m->ldt_luminaire_name
+                                                                   : cdl_photometry_keyword_value(p, "LUMINAIRE");
+    const char *maker = m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT ? m->ldt_company
+                                                                    : cdl_photometry_keyword_value(p, "MANUFAC");
+    if (maker && *maker) printf("%-16s%s\n", "manufacturer", maker);
+    if (name && *name) printf("%-16s%.*s\n", "luminaire", (int)strcspn(name, "\n"), name);
+    printf("%-16stype %s, symmetry %s, %zu x %zu angles in the file (%zu planes stored)\n", "photometry",
+           type_letter(t.type), cdl_photometry_symmetry_name(t.symmetry), m->file_horizontal_count,
+           m->file_vertical_count, t.horizontal_count);
+    if (s->lamp_flux_known)
+        printf("%-16s%d x %.6g lm = %.6g lm rated (relative photometry)\n", "lamps",
+               m->lamp_sets[0].count, s->lamp_flux.lm / (m->lamp_sets[0].count ? abs(m->lamp_sets[0].count) : 1),
+               s->lamp_flux.lm);
+    else
+        printf("%-16sabsolute photometry (no lamp reference)\n", "lamps");
+    printf("%-16s%.6g lm (integrated), downward %.1f %%, upward %.1f %%\n", "flux", s->flux.lm,
+           100.0 * s->downward_fraction, s->flux.lm > 0.0 ? 100.0 * s->upward_flux.lm / s->flux.lm : 0.0);
+    if (s->lor_known) printf("%-16s%.1f %%\n", "LOR", 100.0 * s->lor);
+    if (m->input_watts > 0.0) printf("%-16s%.6g W\n", "input power", m->input_watts);
+    if (s->efficacy_known)
+        printf("%-16s%.1f lm/W%s\n", "efficacy", s->efficacy.lm_W,
+               cdl_photometry_output_factor(p) != 1.0 ? " (output factor applied)" : "");
+    if (cdl_photometry_output_factor(p) != 1.0)
+        printf("%-16s%.4g (applied at render time, not in the table)\n", "output factor", cdl_photometry_output_factor(p));
+    printf("%-16s%.6g cd at C %.4g, gamma %.4g\n", "max intensity", s->max_intensity.cd, s->max_c_deg,
+           s->max_gamma_deg);
+    print_angle("beam angle", s->beam_angle_deg);
+    print_angle("field angle", s->field_angle_deg);
+    printf("%-16s%s", "opening", cdl_luminous_shape_name(m->opening.shape));
+    if (m->opening.shape != CDL_LUMINOUS_SHAPE_POINT)
+        printf(", %.4g x %.4g x %.4g m (width x length x height)", m->opening.width_m, m->opening.length_m,
+               m->opening.height_m);
+    printf("\n");
+    if (m->tilt_count > 0)
+        printf("%-16s%zu angles, geometry %d (factors %.4g..%.4g)\n", "tilt", m->tilt_count, m->tilt_geometry,
+               m->tilt_factors[0], m->tilt_factors[m->tilt_count - 1]);
+    printf("%-16s", "zones (lm)");
+    for (int k = 0; k < 18; ++k) printf("%s%d-%d: %.4g", k == 0 ? "" : k % 6 == 0 ? "\n                " : ", ",
+                                        10 * k, 10 * k + 10, s->zone_flux[k].lm);
+    printf("\n");
+    size_t nw = cdl_photometry_warning_count(p);
+    if (nw == 0) printf("%-16snone\n", "warnings");
+    for (size_t i = 0; i < nw; ++i) printf("%-16s%s\n", i == 0 ? "warnings" : "", cdl_photometry_warning(p, i));
 }
 
 static int run(int argc, char **argv)
 {
-    return cdl_command_not_built(&cdl_command_info, argc, argv);
+    cdl_cli_option options[] = {{"json", 0, 0, 0, NULL}, {"strict", 0, 0, 0, NULL}};
+    const size_t count = sizeof options / sizeof options[0];
+    cdl_cli_result r;
+    if (cdl_cli_scan(argc, argv, options, count, &r) != 0) {
+        fprintf(stderr, "candela info: %s\n(see 'candela info --help')\n", r.message);
+        return CDL_EXIT_USAGE;
+    }
+    if (r.help) {
+        print_help(stdout);
+        return CDL_EXIT_OK;
+    }
+    if (r.positional_count != 1) {
+        fprintf(stderr, "candela info: expected one luminaire file, found %zu arguments\n(see 'candela info --help')\n",
+                r.positional_count);
+        return CDL_EXIT_USAGE;
+    }
+    const char *path = r.positional[0];
+    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    ro.strict = cdl_cli_find(options, count, "strict")->present;
+    cdl_photometry *p = NULL;
+    cdl_error err;
+    cdl_error_clear(&err);
+    cdl_status st = cdl_photometry_read_file(path, &ro, &p, &err);
+    if (st != CDL_OK) {
+        fprintf(stderr, "candela info: %s\n", err.message);
+        return (int)st;
+    }
+    cdl_photometry_summary s;
+    cdl_photometry_summarize(p, &s);
+    int rc = CDL_EXIT_OK;
+    if (cdl_cli_find(options, count, "json")->present) rc = print_json(path, p, &s);
+    else print_text(path, p, &s);
+    cdl_photometry_release(p);
+    if (fflush(stdout) != 0) {
+        fprintf(stderr, "candela info: cannot write the output\n");
+        return CDL_EXIT_INTERNAL;
+    }
+    return rc;
 }
 
 const cdl_command cdl_command_info = {"info", "summarise a luminaire file: format, flux, efficacy, beam/field angles, symmetry, max cd", run, print_help};
