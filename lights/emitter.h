@@ -20,6 +20,19 @@
  *    illuminance (closed form), used when nothing hides the emitter;
  *  - all non-delta emitters: importance samples with their pdf, used when
  *    the emitter is partly hidden.
+ *
+ * Photometric amounts given as flux (DESIGN.md `flux_lm`) are converted by
+ * the caller, once, with the closed-form flux, which is linear in the
+ * intensity or luminance: create the emitter with 1 cd (1 cd/m^2), read
+ * cdl_emitter_flux, and scale: I0 = Phi / flux_at_1cd (spot), L = Phi /
+ * flux_at_1nit (area; = Phi / (pi A)), I = Phi / (4 pi) (point,
+ * cdl_isotropic_intensity_from_flux). Goniometric emitters take flux_lm.
+ *
+ * Each kind's file (lights/emitter_<kind>.c) opens with its parameter
+ * table (meaning, unit, default, range) and the physics it uses.
+ * Constructors validate every parameter and fail with CDL_ERR_INPUT and
+ * "<kind> emitter: <parameter>: expected ..., found ..." (the caller
+ * prefixes the scene file and JSON path).
  */
 #ifndef CANDELA_LIGHTS_EMITTER_H
 #define CANDELA_LIGHTS_EMITTER_H
@@ -60,18 +73,28 @@ typedef struct cdl_spot_params {
     double exponent;                       /* cos^n: n >= 0, zero behind the spot */
 } cdl_spot_params;
 
+/* Goniometric: I(w) = I_table(luminaire_from_world w) x k with
+ * k = s x output factor x tilt factor x multiplier x maintenance factor,
+ * s = flux_lm / Phi_table when flux_lm > 0 (the table is rescaled to that
+ * luminaire flux first; every application factor then acts on it), else 1.
+ * world_from_luminaire = Rz Ry Rx, right-handed about the fixed world axes;
+ * the tilt factor is taken at the installed tilt (angle between the turned
+ * nadir and world -z). See emitter_goniometric.c. */
 typedef struct cdl_goniometric_params {
     cdl_vec3 position;
     double rotation_deg[3];                /* about world x, then y, then z (fixed axes) */
     const cdl_photometry *photometry;      /* borrowed: must outlive the emitter */
-    double multiplier;                     /* scene multiplier, >= 0 (default 1) */
-    double maintenance_factor;             /* (0, 1] typically (default 1) */
+    double multiplier;                     /* scene multiplier, > 0 (default 1) */
+    double maintenance_factor;             /* > 0, (0, 1] typically (default 1) */
     double flux_lm;                        /* > 0: rescale the table to this flux; <= 0: keep */
     int apply_output_factor;               /* 1: apply cdl_photometry_output_factor (default 1) */
 } cdl_goniometric_params;
+#define CDL_GONIOMETRIC_PARAMS_DEFAULT {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, NULL, 1.0, 1.0, 0.0, 1}
 
 /* Shapes of area emitters. Triangles are counter-clockwise seen from the
- * emitting side; rect and disk emit along their normal (u x v for rect). */
+ * emitting side; rect and disk emit along their normal (u x v for rect);
+ * a sphere emits outward, or inward with `inward`. Degenerate triangles
+ * (zero area) are skipped; the total area must be > 0. */
 typedef enum cdl_shape_kind {
     CDL_SHAPE_TRIANGLES,
     CDL_SHAPE_RECT,
@@ -105,18 +128,22 @@ typedef struct cdl_directional_params {
 } cdl_directional_params;
 
 typedef struct cdl_environment_params {
-    cdl_vec3 up;                           /* zenith */
+    cdl_vec3 up;                           /* zenith, any length > 0 (default +z) */
     int upper_hemisphere_only;             /* 1: no light from below the horizon of `up` */
     /* uniform: image == NULL */
     cdl_luminance luminance;
-    /* lat-long image (copied): luminance in cd/m^2 per pixel, row-major, top
-     * row first. Column u in [0,1) looks towards azimuth phi = pi + 2 pi u
-     * (counter-clockwise from +x seen from above; left edge -x, centre +x);
-     * row v in [0,1) towards polar angle pi v from `up`. */
+    /* lat-long image (copied): luminance in cd/m^2 per pixel BEFORE `scale`
+     * (the file's Y, or 0.2126 R + 0.7152 G + 0.0722 B), row-major, top row
+     * first, every value finite and >= 0. Column u in [0,1) looks towards
+     * azimuth phi = pi + 2 pi u (counter-clockwise from +x seen from above;
+     * left edge -x, centre +x); row v in [0,1) towards polar angle pi v from
+     * `up`. For an `up` other than +z, azimuth 0 is world +x made
+     * perpendicular to `up` (world +y if `up` is within 2.6 deg of the x axis). */
     const float *image;
     int width, height;
-    double scale;                          /* multiplies the image (default 1) */
+    double scale;                          /* multiplies the image, > 0 (default 1) */
 } cdl_environment_params;
+#define CDL_ENVIRONMENT_PARAMS_DEFAULT {{0.0, 0.0, 1.0}, 0, {0.0}, NULL, 0, 0, 1.0}
 
 cdl_status cdl_emitter_create_point(const cdl_point_params *p, cdl_emitter **out, cdl_error *err);
 cdl_status cdl_emitter_create_spot(const cdl_spot_params *p, cdl_emitter **out, cdl_error *err);
@@ -132,13 +159,22 @@ int cdl_emitter_is_delta(const cdl_emitter *emitter);
 
 /* Closed-form total flux. Point/spot/goniometric/area: all light emitted.
  * Directional: flux through 1 m^2 normal to the beam (= E).
- * Environment: flux incident on the upper face of a horizontal 1 m^2 disk
- * with nothing around it (uniform full sphere: pi L; see emitter docs). */
+ * Environment: flux incident on the face of a 1 m^2 disk facing `up` with
+ * nothing around it: pi L for a uniform sky (full or upper hemisphere);
+ * for an image, the exact sum over pixels of L times their cosine-weighted
+ * solid angle above the horizon (emitter_environment.c). */
 cdl_luminous_flux cdl_emitter_flux(const cdl_emitter *emitter);
 
-/* Luminous intensity emitted toward world direction `dir` (delta emitters
- * except directional; area emitters: the total of L cos over the shape). */
+/* Luminous intensity emitted toward world direction `dir` (any length > 0).
+ * Point, spot, goniometric: their distribution. Area: int L max(0, m.w) dA
+ * over the shape, self-occlusion ignored (so its integral over the sphere
+ * is the flux). Directional and environment: 0 (no finite intensity). */
 cdl_luminous_intensity cdl_emitter_intensity(const cdl_emitter *emitter, cdl_vec3 dir);
+
+/* The installed tilt of a goniometric emitter in degrees (angle between its
+ * turned nadir and world -z), the angle its TILT factor was taken at; 0 for
+ * other kinds. */
+double cdl_emitter_goniometric_tilt_deg(const cdl_emitter *emitter);
 
 /* ---- delta emitters ------------------------------------------------------ */
 
@@ -149,7 +185,10 @@ typedef struct cdl_delta_light {
 } cdl_delta_light;
 
 /* Illuminance at p on the plane with unit normal n (hemisphere n faces),
- * without shadowing. Returns 0 when E = 0 (behind, outside the beam). */
+ * without shadowing: E = I cos(theta) / d^2 (directional: E_n cos(theta)),
+ * with full relative precision for d from 1e-4 to 1e5 m and any I. Returns
+ * 0 when E = 0 (behind, outside the beam, p at the light) and for
+ * non-delta emitters. */
 int cdl_emitter_eval_delta(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out);
 
 /* ---- extended emitters (area, environment) -------------------------------- */
@@ -157,9 +196,14 @@ int cdl_emitter_eval_delta(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, c
 /* Exact illuminance at p on the plane with unit normal n from the whole
  * emitter as if nothing occluded it, parts below the plane excluded.
  * Area emitters: contour integral (Lambert) over the shape clipped to the
- * hemisphere; disk and sphere in closed form. Uniform environment:
- * pi L x (visible fraction). Returns CDL_ERR_USAGE for image environments
- * (no closed form). */
+ * hemisphere (far from a small polygon, a converged cubature of the same
+ * integral, which does not cancel); disk and sphere in closed form; inside
+ * an inward sphere pi L. A non-convex mesh's self-occlusion is ignored (the
+ * caller's visibility test must treat the emitter's own triangles as
+ * occluders). Uniform environment: pi L (full sphere) or pi L (1 + cos
+ * beta) / 2 (upper hemisphere, beta between n and up). Delta emitters: the
+ * E of cdl_emitter_eval_delta. Returns CDL_ERR_USAGE (E = 0) for image
+ * environments (no closed form); `err` may be NULL. */
 cdl_status cdl_emitter_exact_illuminance(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, cdl_illuminance *E,
                                          cdl_error *err);
 
@@ -174,9 +218,18 @@ typedef struct cdl_light_sample {
     double pdf;               /* with respect to solid angle at p; > 0 */
 } cdl_light_sample;
 
-/* Importance-sample a direction towards the emitter from p (n: receiver
- * normal, used to skip the back hemisphere where possible). Returns 0 if the
- * sample carries no light. The estimator of E is L cos / pdf averaged. */
+/* Importance-sample a direction towards the emitter from p (n: unit
+ * receiver normal). u1, u2 in [0, 1); stratified pairs give stratified
+ * samples. Returns 0 if the sample carries no light (behind the receiver's
+ * plane, the back of the emitter, a dark pixel) and for delta emitters.
+ * The mean of L cos / pdf over samples (counting the 0s) is, without
+ * shadowing, exactly cdl_emitter_exact_illuminance: area samples are points
+ * on the emitter chosen whether or not another part of the same emitter
+ * hides them, so a shadow ray to each sample gives the shadowed E.
+ * Samplers: area emitters by area (pdf = d^2 / (A cos theta_e)), spheres
+ * uniform in their cone (outside) or cos-weighted about n (inside an
+ * inward sphere); uniform sky cos-weighted about n; image sky by pixel
+ * luminance x solid angle (see the kinds' files). */
 int cdl_emitter_sample(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, double u1, double u2,
                        cdl_light_sample *out);
 

@@ -62,10 +62,11 @@ static const environment_emitter *as_env(const cdl_emitter *e)
     return (const environment_emitter *)e;
 }
 
-/* cos(pi k / (2 m)) as sin(pi (m - k) / (2 m)): exactly 0 at the horizon. */
-static double cos_polar(int k2, int m2)
+/* cos(theta_j) of the row boundary theta_j = pi j / H, as
+ * sin(pi/2 - theta_j) = sin(pi (H - 2j) / (2H)): exactly 0 at the horizon. */
+static double cos_polar(int j, int H)
 {
-    return sin(CDL_PI * (double)(m2 - k2) / (double)m2);
+    return sin(CDL_PI * (double)(H - 2 * j) / (2.0 * (double)H));
 }
 
 /* ---- flux ------------------------------------------------------------------- */
@@ -241,8 +242,8 @@ static cdl_status build_image(environment_emitter *env, const cdl_environment_pa
     }
     memcpy(env->image, p->image, count * sizeof *env->image);
     for (int j = 0; j < p->height; ++j) {
-        env->cos_top[j] = cos_polar(2 * j, 2 * p->height);
-        env->cos_bottom[j] = cos_polar(2 * (j + 1), 2 * p->height);
+        env->cos_top[j] = cos_polar(j, p->height);
+        env->cos_bottom[j] = cos_polar(j + 1, p->height);
         if (env->upper_only) {
             env->cos_top[j] = fmax(env->cos_top[j], 0.0);
             env->cos_bottom[j] = fmax(env->cos_bottom[j], 0.0);

@@ -107,8 +107,10 @@ static inline mc_result mc_illuminance(const cdl_emitter *e, cdl_vec3 p, cdl_vec
 {
     mc_result r = {0.0, 0.0, 0, 0};
     cdl_rng_key key = {seed, 99};
-    double sum = 0.0, sum2 = 0.0;
-    int count = k * k;
+    /* Welford's running mean and squared deviations: no cancellation when
+     * the variance is tiny compared with the mean. */
+    double mean = 0.0, m2 = 0.0;
+    int count = 0;
     for (int j = 0; j < k; ++j)
         for (int i = 0; i < k; ++i) {
             double u[2];
@@ -128,11 +130,13 @@ static inline mc_result mc_illuminance(const cdl_emitter *e, cdl_vec3 p, cdl_vec
                         r.pdf_mismatches++;
                 }
             }
-            sum += f;
-            sum2 += f * f;
+            ++count;
+            double delta = f - mean;
+            mean += delta / count;
+            m2 += delta * (f - mean);
         }
-    r.mean = sum / count;
-    r.stderr_ = sqrt(fmax(0.0, (sum2 / count - r.mean * r.mean) / (count - 1)));
+    r.mean = mean;
+    r.stderr_ = sqrt(m2 / (count - 1) / count);
     return r;
 }
 

@@ -1,0 +1,144 @@
+/* emitter_goniometric.c - a luminaire's measured distribution, placed and turned.
+ *
+ *   parameter            meaning                                       unit  default  range
+ *   position             photometric centre                            m     -        finite
+ *   rotation_deg         about world x, then y, then z (fixed axes)    deg   0,0,0    finite
+ *   photometry           the table (borrowed, must outlive emitter)    -     -        non-NULL
+ *   multiplier           scene multiplier                              -     1        > 0
+ *   maintenance_factor   light loss over time                          -     1        > 0
+ *   flux_lm              > 0: rescale the table to this flux           lm    0 (keep) finite
+ *   apply_output_factor  1: the file's ballast/output factor applies   -     1        0 or 1
+ *
+ * Placement (DESIGN.md): the photometric frame (gamma = 0 along -z, C = 0
+ * towards +x, C = 90 towards +y) is turned by world_from_luminaire =
+ * Rz(rz) Ry(ry) Rx(rx): right-handed rotations about the fixed world axes,
+ * x first. So [0, -30, 0] tilts the nadir from -z towards +x.
+ *
+ * Intensity towards world direction w:
+ *     I(w) = I_table(luminaire_from_world w) x k,
+ *     k = s x output factor x tilt factor x multiplier x maintenance factor,
+ * with s = flux_lm / Phi_table when flux_lm > 0 (the table is first rescaled
+ * to the given luminaire flux, then every application factor acts on it),
+ * else 1; the output factor is 1 unless apply_output_factor; the tilt factor
+ * is the file's TILT table at the installed tilt, the angle between the
+ * turned nadir and world -z. Flux Phi = k Phi_table (the table's exact flux).
+ */
+#include <math.h>
+
+#include "lights/emitter.h"
+#include "lights/emitter_internal.h"
+#include "radiometry/constants.h"
+
+typedef struct goniometric_emitter {
+    cdl_emitter base;
+    cdl_vec3 position;
+    const cdl_photometry *photometry;
+    cdl_vec3 col[3];  /* columns of world_from_luminaire: the luminaire's x, y, z axes in world */
+    double factor;    /* k above */
+    double tilt_deg;
+} goniometric_emitter;
+
+static const goniometric_emitter *as_gonio(const cdl_emitter *e)
+{
+    return (const goniometric_emitter *)e;
+}
+
+/* luminaire_from_world w = R^T w: the components of w along the luminaire's axes. */
+static cdl_vec3 to_luminaire(const goniometric_emitter *g, cdl_vec3 w)
+{
+    return cdl_vec3_make(cdl_vec3_dot(g->col[0], w), cdl_vec3_dot(g->col[1], w), cdl_vec3_dot(g->col[2], w));
+}
+
+static cdl_luminous_intensity gonio_intensity(const cdl_emitter *e, cdl_vec3 unit_dir)
+{
+    const goniometric_emitter *g = as_gonio(e);
+    cdl_luminous_intensity I = cdl_photometry_intensity(g->photometry, to_luminaire(g, unit_dir));
+    return cdl_candelas(I.cd * g->factor);
+}
+
+static cdl_luminous_flux gonio_flux(const cdl_emitter *e)
+{
+    const goniometric_emitter *g = as_gonio(e);
+    /* Every factor is a constant multiplier of the whole distribution. */
+    return cdl_lumens(cdl_photometry_flux(g->photometry).lm * g->factor);
+}
+
+static int gonio_eval_delta(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out)
+{
+    return cdl_emitter_eval_positional(e, as_gonio(e)->position, gonio_intensity, p, n, out);
+}
+
+static const cdl_emitter_ops gonio_ops = {gonio_flux, gonio_intensity, gonio_eval_delta, NULL, NULL, NULL, NULL};
+
+/* Columns of Rz(c) Ry(b) Rx(a) (angles in radians), each rotation
+ * right-handed about a fixed world axis: R e_k for k = x, y, z. */
+static void rotation_columns(double a, double b, double c, cdl_vec3 col[3])
+{
+    double ca = cos(a), sa = sin(a), cb = cos(b), sb = sin(b), cc = cos(c), sc = sin(c);
+    /* Rz Ry Rx =
+     *   [cc cb   cc sb sa - sc ca   cc sb ca + sc sa]
+     *   [sc cb   sc sb sa + cc ca   sc sb ca - cc sa]
+     *   [-sb     cb sa              cb ca           ] */
+    col[0] = cdl_vec3_make(cc * cb, sc * cb, -sb);
+    col[1] = cdl_vec3_make(cc * sb * sa - sc * ca, sc * sb * sa + cc * ca, cb * sa);
+    col[2] = cdl_vec3_make(cc * sb * ca + sc * sa, sc * sb * ca - cc * sa, cb * ca);
+}
+
+double cdl_emitter_goniometric_tilt_deg(const cdl_emitter *emitter)
+{
+    return emitter->kind == CDL_EMITTER_GONIOMETRIC ? as_gonio(emitter)->tilt_deg : 0.0;
+}
+
+cdl_status cdl_emitter_create_goniometric(const cdl_goniometric_params *p, cdl_emitter **out, cdl_error *err)
+{
+    *out = NULL;
+    cdl_status st;
+    if (!p->photometry)
+        return cdl_error_set(err, CDL_ERR_USAGE, "goniometric emitter: photometry: expected a table, found NULL");
+    if ((st = cdl_emitter_check_position(p->position, "goniometric emitter: position", err)) != CDL_OK) return st;
+    for (int k = 0; k < 3; ++k)
+        if (!isfinite(p->rotation_deg[k]))
+            return cdl_error_set(err, CDL_ERR_INPUT,
+                                 "goniometric emitter: rotation[%d]: expected a finite angle in degrees, found %g", k,
+                                 p->rotation_deg[k]);
+    if (!(isfinite(p->multiplier) && p->multiplier > 0.0))
+        return cdl_error_set(err, CDL_ERR_INPUT, "goniometric emitter: multiplier: expected a finite number > 0, found %g",
+                             p->multiplier);
+    if (!(isfinite(p->maintenance_factor) && p->maintenance_factor > 0.0))
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "goniometric emitter: maintenance_factor: expected a finite number > 0, found %g",
+                             p->maintenance_factor);
+    if (!isfinite(p->flux_lm))
+        return cdl_error_set(err, CDL_ERR_INPUT, "goniometric emitter: flux_lm: expected a finite number, found %g",
+                             p->flux_lm);
+    double table_flux = cdl_photometry_flux(p->photometry).lm;
+    if (p->flux_lm > 0.0 && !(table_flux > 0.0))
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "goniometric emitter: flux_lm: cannot rescale a distribution whose flux is %g lm to %g lm",
+                             table_flux, p->flux_lm);
+
+    goniometric_emitter *g = cdl_emitter_alloc(sizeof *g, CDL_EMITTER_GONIOMETRIC, &gonio_ops, err);
+    if (!g) return CDL_ERR_INTERNAL;
+    g->position = p->position;
+    g->photometry = p->photometry;
+    rotation_columns(p->rotation_deg[0] * CDL_DEG_TO_RAD, p->rotation_deg[1] * CDL_DEG_TO_RAD,
+                     p->rotation_deg[2] * CDL_DEG_TO_RAD, g->col);
+    /* Installed tilt: angle between the turned nadir R(-e_z) = -col[2] and
+     * world -z, from atan2(|a x b|, a.b), exact at every angle. */
+    cdl_vec3 nadir = cdl_vec3_neg(g->col[2]), down = cdl_vec3_make(0.0, 0.0, -1.0);
+    g->tilt_deg = atan2(cdl_vec3_length(cdl_vec3_cross(nadir, down)), cdl_vec3_dot(nadir, down)) * CDL_RAD_TO_DEG;
+    double k = p->flux_lm > 0.0 ? p->flux_lm / table_flux : 1.0;
+    if (p->apply_output_factor) k *= cdl_photometry_output_factor(p->photometry);
+    k *= cdl_photometry_tilt_factor(p->photometry, g->tilt_deg);
+    k *= p->multiplier * p->maintenance_factor;
+    if (!(isfinite(k) && k >= 0.0)) {
+        cdl_emitter_release(&g->base);
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "goniometric emitter: expected a finite non-negative total factor, found %g (check the "
+                             "file's ballast and tilt factors)",
+                             k);
+    }
+    g->factor = k;
+    *out = &g->base;
+    return CDL_OK;
+}
