@@ -79,17 +79,6 @@ static double exact_E(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n)
     return E.lx;
 }
 
-static double parallel_corner(double a, double b, double c)
-{
-    long double X = (long double)a / c, Y = (long double)b / c, sx = sqrtl(1 + X * X), sy = sqrtl(1 + Y * Y);
-    return (double)((X / sx * atanl(Y / sx) + Y / sy * atanl(X / sy)) / (2.0L * CDL_PI));
-}
-
-static double perpendicular_corner(double a, double b, double c)
-{
-    long double X = (long double)c / a, Y = (long double)b / a, s = sqrtl(X * X + Y * Y);
-    return (double)((atanl(1.0L / Y) - Y / s * atanl(1.0L / s)) / (2.0L * CDL_PI));
-}
 
 /* ---- exact illuminance ------------------------------------------------------ */
 
@@ -106,7 +95,7 @@ static void test_rect_configuration_factors(void)
         cdl_emitter *e = make_area(rect_shape(cdl_vec3_add(p, cdl_vec3_make(0, 0, hs[k])), cdl_vec3_make(0, 0.7, 0),
                                               cdl_vec3_make(1.3, 0, 0)),
                                    L);
-        CHECK_REL(exact_E(e, p, up), L * CDL_PI * parallel_corner(1.3, 0.7, hs[k]), 1e-12);
+        CHECK_REL(exact_E(e, p, up), L * CDL_PI * howell_parallel_corner(1.3, 0.7, hs[k]), 1e-12);
         /* From above it is dark (one-sided). */
         CHECK(exact_E(e, cdl_vec3_add(p, cdl_vec3_make(0, 0, hs[k] + 1.0)), cdl_vec3_make(0, 0, -1)) == 0.0);
         cdl_emitter_release(e);
@@ -116,7 +105,7 @@ static void test_rect_configuration_factors(void)
     double bs[] = {1e-3, 0.8, 3.0, 1e3};
     for (size_t k = 0; k < sizeof bs / sizeof bs[0]; ++k) {
         cdl_emitter *e = make_area(rect_shape(cdl_vec3_make(0, bs[k], 0), cdl_vec3_make(1.1, 0, 0), cdl_vec3_make(0, 0, 0.6)), L);
-        CHECK_REL(exact_E(e, cdl_vec3_make(0, 0, 0), up), L * CDL_PI * perpendicular_corner(1.1, bs[k], 0.6), 1e-12);
+        CHECK_REL(exact_E(e, cdl_vec3_make(0, 0, 0), up), L * CDL_PI * howell_perpendicular_corner(1.1, bs[k], 0.6), 1e-12);
         cdl_emitter_release(e);
     }
     /* A 1 m^2 panel: right under it at 1e-3 m the whole hemisphere is
@@ -126,7 +115,7 @@ static void test_rect_configuration_factors(void)
     cdl_emitter *e = make_area(rect_shape(cdl_vec3_make(-0.5, -0.5, 1e-3), cdl_vec3_make(0, 1, 0), cdl_vec3_make(1, 0, 0)), L);
     double En = exact_E(e, cdl_vec3_make(0, 0, 0), up);
     CHECK(En < CDL_PI * L && En > CDL_PI * L * (1 - 3e-3));
-    CHECK_REL(En, 4 * L * CDL_PI * parallel_corner(0.5, 0.5, 1e-3), 1e-12);
+    CHECK_REL(En, 4 * L * CDL_PI * howell_parallel_corner(0.5, 0.5, 1e-3), 1e-12);
     cdl_emitter_release(e);
     e = make_area(rect_shape(cdl_vec3_make(-0.5, -0.5, 1e4), cdl_vec3_make(0, 1, 0), cdl_vec3_make(1, 0, 0)), L);
     CHECK_REL(exact_E(e, cdl_vec3_make(0, 0, 0), up), L * 1.0 / 1e8, 1e-7);

@@ -10,21 +10,10 @@
 #include "lights/emitter.h"
 #include "radiometry/constants.h"
 
-static cdl_emitter *make_uniform(double L, int upper, cdl_vec3 up)
+static cdl_emitter *make_env(double L, const float *img, int w, int h, double scale, int upper, cdl_vec3 up)
 {
     cdl_environment_params p = CDL_ENVIRONMENT_PARAMS_DEFAULT;
     p.luminance = cdl_nits(L);
-    p.upper_hemisphere_only = upper;
-    p.up = up;
-    cdl_emitter *e = NULL;
-    cdl_error err;
-    CHECK_OK(cdl_emitter_create_environment(&p, &e, &err), &err);
-    return e;
-}
-
-static cdl_emitter *make_image(const float *img, int w, int h, double scale, int upper, cdl_vec3 up)
-{
-    cdl_environment_params p = CDL_ENVIRONMENT_PARAMS_DEFAULT;
     p.image = img;
     p.width = w;
     p.height = h;
@@ -35,6 +24,16 @@ static cdl_emitter *make_image(const float *img, int w, int h, double scale, int
     cdl_error err;
     CHECK_OK(cdl_emitter_create_environment(&p, &e, &err), &err);
     return e;
+}
+
+static cdl_emitter *make_uniform(double L, int upper, cdl_vec3 up)
+{
+    return make_env(L, NULL, 0, 0, 1.0, upper, up);
+}
+
+static cdl_emitter *make_image(const float *img, int w, int h, double scale, int upper, cdl_vec3 up)
+{
+    return make_env(0.0, img, w, h, scale, upper, up);
 }
 
 static double exact_E(const cdl_emitter *e, cdl_vec3 n)

@@ -162,21 +162,8 @@ static void test_factors_and_flux(void)
     /* 3. Monte Carlo with eval_delta on a sphere of radius 1.5 m around the
      * luminaire, uniform points (pdf 1 / (4 pi r^2) in area), 65536 samples:
      * 5 standard errors. */
-    cdl_rng_key key = {8, 8};
-    double sum = 0, sum2 = 0, r = 1.5;
-    int N = 65536;
-    for (int i = 0; i < N; ++i) {
-        double u[2];
-        cdl_rng_uniform2(key, (uint64_t)i, u);
-        double z = 1 - 2 * u[0], s = sqrt(1 - z * z), ph_ = CDL_TWO_PI * u[1];
-        cdl_vec3 w = {s * cos(ph_), s * sin(ph_), z};
-        cdl_delta_light dl;
-        cdl_emitter_eval_delta(e, cdl_vec3_madd(p.position, r, w), cdl_vec3_neg(w), &dl);
-        double v = dl.E.lx * CDL_FOUR_PI * r * r;
-        sum += v;
-        sum2 += v * v;
-    }
-    double mean = sum / N, se = sqrt((sum2 / N - mean * mean) / (N - 1));
+    double mean, se;
+    delta_flux_on_sphere(e, p.position, 1.5, 65536, 8, &mean, &se);
     CHECK_MSG(fabs(mean - Phi) <= 5 * se, "MC %g vs %g (se %g)", mean, Phi, se);
     CHECK(se < 0.01 * Phi);
 
@@ -212,8 +199,70 @@ static void test_factors_and_flux(void)
     cdl_photometry_release(ph);
 }
 
+/* A small LM-63-2002 file: TILT=INCLUDE with factors 1, 0.8, 0.5 at 0, 45,
+ * 90 degrees; ballast factor 0.9; a rotationally symmetric distribution. */
+static const char tilted_ies[] =
+    "IESNA:LM-63-2002\r\n"
+    "[TEST] emitter tilt and ballast factors\r\n"
+    "TILT=INCLUDE\r\n"
+    "1\r\n"
+    "3\r\n"
+    "0 45 90\r\n"
+    "1.0 0.8 0.5\r\n"
+    "1 1000 1 3 1 1 2 0 0 0\r\n"
+    "0.9 1 100\r\n"
+    "0 45 90\r\n"
+    "0\r\n"
+    "100 80 50\r\n";
+
+static void test_file_factors(void)
+{
+    cdl_photometry *ph = NULL;
+    cdl_error err;
+    cdl_photometry_read_options opts = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    CHECK_OK(cdl_photometry_read_memory(tilted_ies, sizeof tilted_ies - 1, "tilted.ies", &opts, &ph, &err), &err);
+    if (!ph) return;
+    CHECK_REL(cdl_photometry_output_factor(ph), 0.9, 1e-15);
+    double table_flux = cdl_photometry_flux(ph).lm;
+    cdl_goniometric_params p = CDL_GONIOMETRIC_PARAMS_DEFAULT;
+    p.position = cdl_vec3_make(0, 0, 3);
+    p.photometry = ph;
+    p.rotation_deg[1] = -30.0; /* installed 30 degrees from nadir-down */
+    p.multiplier = 2.0;
+    p.maintenance_factor = 0.75;
+    cdl_emitter *e = NULL;
+    CHECK_OK(cdl_emitter_create_goniometric(&p, &e, &err), &err);
+    /* Tilt factor at 30 degrees, by hand: linear between (0, 1) and (45, 0.8). */
+    double tilt = 1.0 - 30.0 / 45.0 * 0.2;
+    double k = 0.9 * tilt * 2.0 * 0.75;
+    CHECK_REL(cdl_emitter_flux(e).lm, k * table_flux, 1e-13);
+    /* Along the turned nadir, 2 m away: E = I(0) k / 4 = 100 k / 4. */
+    cdl_vec3 nadir = {0.5, 0, -sqrt(3.0) / 2};
+    cdl_delta_light dl;
+    cdl_emitter_eval_delta(e, cdl_vec3_madd(p.position, 2.0, nadir), cdl_vec3_neg(nadir), &dl);
+    CHECK_REL(dl.E.lx, 100.0 * k / 4.0, 1e-12);
+    cdl_emitter_release(e);
+    /* Without the output factor, and untilted (factor 1 at 0 degrees). */
+    p.apply_output_factor = 0;
+    p.rotation_deg[1] = 0.0;
+    CHECK_OK(cdl_emitter_create_goniometric(&p, &e, &err), &err);
+    CHECK_REL(cdl_emitter_flux(e).lm, 2.0 * 0.75 * table_flux, 1e-13);
+    cdl_emitter_release(e);
+    /* Upside down (180 degrees about x): the TILT table is clamped at its
+     * last entry, 0.5 at 90 degrees. flux_lm rescales before the factors. */
+    p.rotation_deg[0] = 180.0;
+    p.flux_lm = 500.0;
+    p.apply_output_factor = 1;
+    CHECK_OK(cdl_emitter_create_goniometric(&p, &e, &err), &err);
+    CHECK_REL(cdl_emitter_goniometric_tilt_deg(e), 180.0, 1e-13);
+    CHECK_REL(cdl_emitter_flux(e).lm, 500.0 * 0.9 * 0.5 * 2.0 * 0.75, 1e-13);
+    cdl_emitter_release(e);
+    cdl_photometry_release(ph);
+}
+
 int main(void)
 {
+    test_file_factors();
     test_documented_tilt_example();
     test_rotated_probes();
     test_factors_and_flux();

@@ -22,15 +22,12 @@
 #include <math.h>
 
 #include "check.h"
+#include "emitter_checks.h"
 #include "lights/projected_solid_angle.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "radiometry/rng.h"
 
-/* The references are evaluated in long double (64-bit significand on
- * x86-64): the perpendicular and offset-disk formulas subtract nearly equal
- * terms when the receiver is far (terms ~1e-3, result ~1e-10), which costs
- * them about 7 of double's 16 digits but leaves long double's 19 enough. */
 /* Six uniform numbers for random case t. */
 static void case_uniforms(cdl_rng_key key, int t, double u[2], double w[2], double x[2])
 {
@@ -39,17 +36,6 @@ static void case_uniforms(cdl_rng_key key, int t, double u[2], double w[2], doub
     cdl_rng_uniform2(key, 3 * (uint64_t)t + 2, x);
 }
 
-static double parallel_corner(double a, double b, double c)
-{
-    long double X = (long double)a / c, Y = (long double)b / c, sx = sqrtl(1 + X * X), sy = sqrtl(1 + Y * Y);
-    return (double)((X / sx * atanl(Y / sx) + Y / sy * atanl(X / sy)) / (2.0L * CDL_PI));
-}
-
-static double perpendicular_corner(double a, double b, double c)
-{
-    long double X = (long double)c / a, Y = (long double)b / a, s = sqrtl(X * X + Y * Y);
-    return (double)((atanl(1.0L / Y) - Y / s * atanl(1.0L / s)) / (2.0L * CDL_PI));
-}
 
 /* Rect origin + s u + t v relative to the receiver, counter-clockwise seen from the side u x v faces. */
 static double rect_psa(cdl_vec3 o, cdl_vec3 u, cdl_vec3 v, cdl_vec3 n)
@@ -69,14 +55,14 @@ static void test_parallel_rectangles(void)
     for (size_t k = 0; k < sizeof cs / sizeof cs[0]; ++k) {
         double a = 1.3, b = 0.7, c = cs[k];
         double omega = rect_psa(cdl_vec3_make(0, 0, c), cdl_vec3_make(0, b, 0), cdl_vec3_make(a, 0, 0), up);
-        CHECK_REL(omega, CDL_PI * parallel_corner(a, b, c), 1e-12);
+        CHECK_REL(omega, CDL_PI * howell_parallel_corner(a, b, c), 1e-12);
     }
     /* A receiver under the centre of a 1 m^2 square: four corner rectangles. */
     double hs[] = {1e-3, 0.5, 2.0, 1e4};
     for (size_t k = 0; k < sizeof hs / sizeof hs[0]; ++k) {
         double h = hs[k];
         double omega = rect_psa(cdl_vec3_make(-0.5, -0.5, h), cdl_vec3_make(0, 1, 0), cdl_vec3_make(1, 0, 0), up);
-        CHECK_REL(omega, 4.0 * CDL_PI * parallel_corner(0.5, 0.5, h), 1e-12);
+        CHECK_REL(omega, 4.0 * CDL_PI * howell_parallel_corner(0.5, 0.5, h), 1e-12);
     }
     /* Near field: at 1e-3 m under the centre of a 1 m^2 square nearly the
      * whole hemisphere is bright: Omega_p = pi (1 - O(h)). */
@@ -88,7 +74,7 @@ static void test_parallel_rectangles(void)
     CHECK_REL(far, 1.0 / (1e4 * 1e4), 1e-7);
     /* Clockwise seen from the receiver: the negated value. */
     double cw = rect_psa(cdl_vec3_make(0, 0, 1), cdl_vec3_make(1.3, 0, 0), cdl_vec3_make(0, 0.7, 0), up);
-    CHECK_REL(cw, -CDL_PI * parallel_corner(1.3, 0.7, 1.0), 1e-12);
+    CHECK_REL(cw, -CDL_PI * howell_parallel_corner(1.3, 0.7, 1.0), 1e-12);
 }
 
 static void test_perpendicular_rectangles(void)
@@ -99,11 +85,11 @@ static void test_perpendicular_rectangles(void)
     for (size_t k = 0; k < sizeof bs / sizeof bs[0]; ++k) {
         double a = 1.1, b = bs[k], c = 0.6;
         double omega = rect_psa(cdl_vec3_make(0, b, 0), cdl_vec3_make(a, 0, 0), cdl_vec3_make(0, 0, c), up);
-        CHECK_REL(omega, CDL_PI * perpendicular_corner(a, b, c), 1e-11);
+        CHECK_REL(omega, CDL_PI * howell_perpendicular_corner(a, b, c), 1e-11);
         /* The same wall extended below the receiver's plane: Sutherland-
          * Hodgman clips the lower part away, the answer must not change. */
         double clipped = rect_psa(cdl_vec3_make(0, b, -2.5), cdl_vec3_make(a, 0, 0), cdl_vec3_make(0, 0, c + 2.5), up);
-        CHECK_REL(clipped, CDL_PI * perpendicular_corner(a, b, c), 1e-11);
+        CHECK_REL(clipped, CDL_PI * howell_perpendicular_corner(a, b, c), 1e-11);
     }
     /* Entirely below the plane: nothing. */
     CHECK_ABS(rect_psa(cdl_vec3_make(0, 1, -1), cdl_vec3_make(1, 0, 0), cdl_vec3_make(0, 0, 0.5), up), 0.0, 0.0);
