@@ -23,7 +23,8 @@ typedef struct cdl_scene_geometry cdl_scene_geometry;
 
 /* One piece of geometry as placed in the ray scene (one per ray-scene geom id). */
 typedef struct cdl_geometry_piece {
-    int is_luminaire;                    /* 0: from surfaces[], 1: from luminaires[] (area) */
+    int is_luminaire;                    /* 0: from surfaces[], 1: from luminaires[] (area;
+                                          * reflectance from the luminaire, default 0; two_sided 1) */
     size_t source_index;                 /* index into scene->surfaces or scene->luminaires */
     int box_face;                        /* CDL_BOX_* for boxes, -1 otherwise */
     double reflectance;
@@ -57,8 +58,12 @@ size_t cdl_scene_geometry_piece_triangles(const cdl_scene_geometry *geometry, si
                                           size_t *vertex_count, const uint32_t **triangles);
 
 /* Ray epsilon that works at every scale: a small fraction of the scene
- * extent plus the float resolution at the magnitude of p. Shadow and
- * secondary rays start at t = epsilon and stop epsilon short of their end. */
+ * extent plus the float resolution at the magnitude of p (measured from the
+ * centre of the bounds, where the ray scene works): 1e-5 x extent +
+ * 2^-16 x |p - centre|_inf. Shadow and secondary rays start at t = epsilon
+ * and stop epsilon short of their end. Alone, that leaves grazing rays from
+ * points on tilted or curved surfaces hitting their own surface; the
+ * queries below also move the origin off the surface and handle that. */
 double cdl_scene_geometry_ray_epsilon(const cdl_scene_geometry *geometry, cdl_vec3 p);
 
 /* Ray queries that apply the epsilon for the caller (all thread-safe).
