@@ -530,8 +530,10 @@ cdl_status cdl_ies_read(const char *data, size_t size, const char *name, const c
     size_t nv = (size_t)h.nv, nh = (size_t)h.nh;
     double *v = malloc(nv * sizeof *v), *hz = malloc(nh * sizeof *hz), *cd = malloc(nv * nh * sizeof *cd);
     if (!v || !hz || !cd) st = oom(&r);
-    if (st == CDL_OK) st = read_angles(&r, "vertical", h.nv, lo_v, hi_v, v);
-    if (st == CDL_OK) st = read_angles(&r, "horizontal", h.nh, lo_h, hi_h, hz);
+    const char *vname = h.type == 1 ? "vertical (type C)" : h.type == 2 ? "vertical (type B)" : "vertical (type A)";
+    const char *hname = h.type == 1 ? "horizontal (type C)" : h.type == 2 ? "horizontal (type B)" : "horizontal (type A)";
+    if (st == CDL_OK) st = read_angles(&r, vname, h.nv, lo_v, hi_v, v);
+    if (st == CDL_OK) st = read_angles(&r, hname, h.nh, lo_h, hi_h, hz);
     if (st == CDL_OK) st = read_values(&r, &h, v, hz, cd);
     if (st == CDL_OK) st = check_trailing(&r);
     if (st == CDL_OK) st = fill_metadata(&r, &h);

@@ -142,8 +142,10 @@ static cdl_status read_header(ldt_reader *r, ldt_header *h)
     TRY(number_field(r, "the measurement tilt in degrees (line 25)", 1, 0.0, &m->ldt_measurement_tilt_deg));
     TRY(integer_field(r, "the number of lamp sets n (line 26)", 1, CDL_PHOTOMETRY_MAX_LAMP_SETS, &h->nsets));
     if (!(h->cfli > 0.0))
-        return cdl_error_set(r->err, CDL_ERR_INPUT, "%s:%u: expected a conversion factor > 0, found %g", r->source,
-                             cfli_line, h->cfli);
+        return cdl_error_set(r->err, CDL_ERR_INPUT,
+                             "%s:%u: expected the intensity conversion factor > 0, found %g (if a header line is "
+                             "missing or extra, every later field shifts)",
+                             r->source, cfli_line, h->cfli);
     m->lamp_set_count = (size_t)h->nsets;
     char what[96];
     for (long k = 0; k < h->nsets; ++k) {

@@ -133,14 +133,15 @@ int cdl_photometry_direction_to_hv(cdl_photometric_type type, cdl_vec3 d, double
         double s = -d.y;
         s = s > 1.0 ? 1.0 : (s < -1.0 ? -1.0 : s);
         *h = asin(s) * CDL_RAD_TO_DEG;
-        *v = atan2(d.x, -d.z) * CDL_RAD_TO_DEG;
+        /* 0.0 - x turns -0 into +0, so the poles (x = z = 0) read V = 0, not 180 */
+        *v = atan2(d.x, 0.0 - d.z) * CDL_RAD_TO_DEG;
         return 1;
     }
     case CDL_PHOTOMETRIC_TYPE_A: {
         /* d = (sin V, -cos V sin H, -cos V cos H) */
         double s = d.x > 1.0 ? 1.0 : (d.x < -1.0 ? -1.0 : d.x);
         *v = asin(s) * CDL_RAD_TO_DEG;
-        *h = atan2(-d.y, -d.z) * CDL_RAD_TO_DEG;
+        *h = atan2(0.0 - d.y, 0.0 - d.z) * CDL_RAD_TO_DEG;
         return 1;
     }
     default: {

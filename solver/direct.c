@@ -1,0 +1,251 @@
+/* direct.c - direct illuminance: exact where possible, sampled where hidden. */
+#include "solver/direct.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+
+#include "radiometry/frame.h"
+#include "radiometry/rng.h"
+#include "radiometry/sampling.h"
+
+const char *cdl_light_strategy_name(cdl_light_strategy s)
+{
+    switch (s) {
+    case CDL_STRATEGY_DELTA_EXACT: return "exact, no shadow rays";
+    case CDL_STRATEGY_DELTA_SHADOWED: return "exact, one shadow ray per point";
+    case CDL_STRATEGY_EXTENDED_EXACT: return "closed form, nothing can hide it";
+    case CDL_STRATEGY_EXTENDED_TESTED: return "closed form where fully visible, sampled where partly hidden";
+    case CDL_STRATEGY_SAMPLED: return "sampled with shadow rays";
+    }
+    return "unknown";
+}
+
+/* Ray offsets. Embree stores positions as floats after recentring the
+ * scene on its bounding-box centre, so the triangle a point lies on is known
+ * to about 1.2e-7 x |p - centre|. An offset of 1e-6 x (|p - centre| + 1e-3 x
+ * the scene extent) clears that by an order of magnitude, stays far below
+ * any feature of a lighting scene, and scales with the scene, so the same
+ * room at 1e-3 or 1e3 times the size gives the same answers. */
+#define RAY_EPSILON_RELATIVE 1e-6
+
+double cdl_direct_ray_epsilon(const cdl_direct_context *ctx, cdl_vec3 p)
+{
+    cdl_vec3 d = cdl_vec3_sub(p, ctx->center);
+    double m = fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
+    return RAY_EPSILON_RELATIVE * (m + 1e-3 * ctx->extent) + DBL_MIN;
+}
+
+/* Geometric tolerance of region tests around p: a surface must reach ten
+ * ray epsilons into the region to count as an occluder, so surfaces that
+ * only touch it (the floor under a grid point, the ceiling around a
+ * recessed emitter) do not. */
+static double region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p)
+{
+    return 10.0 * cdl_direct_ray_epsilon(ctx, p);
+}
+
+static void grow(cdl_vec3 *lo, cdl_vec3 *hi, cdl_vec3 p)
+{
+    lo->x = fmin(lo->x, p.x);
+    lo->y = fmin(lo->y, p.y);
+    lo->z = fmin(lo->z, p.z);
+    hi->x = fmax(hi->x, p.x);
+    hi->y = fmax(hi->y, p.y);
+    hi->z = fmax(hi->z, p.z);
+}
+
+void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points, size_t count,
+                          cdl_light_strategy *strategies)
+{
+    cdl_vec3 glo = cdl_vec3_make(DBL_MAX, DBL_MAX, DBL_MAX), ghi = cdl_vec3_make(-DBL_MAX, -DBL_MAX, -DBL_MAX);
+    for (size_t i = 0; i < count; ++i) grow(&glo, &ghi, points[i]);
+
+    for (size_t l = 0; l < ctx->light_count; ++l) {
+        const cdl_direct_light *light = &ctx->lights[l];
+        int delta = cdl_emitter_is_delta(light->emitter);
+        /* Can any surface lie between this light and any point of the grid?
+         * Conservative test: the box around the grid and the light. Unbounded
+         * lights (directional, environment) can be occluded by anything. */
+        int may_occlude;
+        if (!ctx->occluders || count == 0) {
+            may_occlude = 0;
+        } else if (!light->bounded) {
+            may_occlude = cdl_occluder_index_primitive_count(ctx->occluders) > 0;
+        } else {
+            cdl_vec3 lo = glo, hi = ghi;
+            grow(&lo, &hi, light->bounds_lo);
+            grow(&lo, &hi, light->bounds_hi);
+            cdl_convex_region box;
+            cdl_region_box(&box, lo, hi);
+            double tol = fmin(region_tolerance(ctx, lo), region_tolerance(ctx, hi));
+            may_occlude = cdl_occluder_index_intersects(ctx->occluders, &box, tol, light->owner);
+        }
+        if (delta)
+            strategies[l] = may_occlude ? CDL_STRATEGY_DELTA_SHADOWED : CDL_STRATEGY_DELTA_EXACT;
+        else if (!light->has_closed_form)
+            strategies[l] = CDL_STRATEGY_SAMPLED;
+        else if (!may_occlude)
+            strategies[l] = CDL_STRATEGY_EXTENDED_EXACT;
+        else if (light->outline_count == 0 && !light->outline_is_sphere && !light->is_environment)
+            strategies[l] = CDL_STRATEGY_SAMPLED;
+        else
+            strategies[l] = CDL_STRATEGY_EXTENDED_TESTED;
+    }
+}
+
+/* Origin of a ray leaving p towards dir: nudged off the receiving plane on
+ * the side the ray goes, so a point lying on a surface does not see it. */
+static cdl_vec3 ray_origin(cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double eps)
+{
+    double side = cdl_vec3_dot(n, dir) >= 0.0 ? 1.0 : -1.0;
+    return cdl_vec3_madd(p, side * eps, n);
+}
+
+static int shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                    cdl_direct_sample_stats *stats)
+{
+    double eps = cdl_direct_ray_epsilon(ctx, p);
+    cdl_vec3 o = ray_origin(p, n, dir, eps);
+    double t_far = INFINITY;
+    if (isfinite(distance)) {
+        /* Stop short of the light's own surface: the origin moved by up to
+         * eps, and the far point is known to the float precision of its own
+         * coordinates, which 4 epsilons there cover 32 times over. */
+        double eps_far = cdl_direct_ray_epsilon(ctx, cdl_vec3_madd(p, distance, dir));
+        t_far = distance - eps - 4.0 * eps_far;
+    }
+    if (!(t_far > eps)) return 0;
+    stats->rays++;
+    return cdl_ray_scene_occluded(ctx->rays, o, dir, eps, t_far);
+}
+
+/* Is the region between p and the whole of the light clear of surfaces? */
+static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_vec3 p, cdl_vec3 n)
+{
+    cdl_convex_region region;
+    region.plane_count = 0;
+    if (light->is_environment) {
+        /* The open half-space above the receiving plane (and above the
+         * horizon for an upper-hemisphere sky): {x : -n.x <= -n.p}. */
+        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+        if (light->upper_only) cdl_region_add(&region, cdl_vec3_neg(light->up), -cdl_vec3_dot(light->up, p));
+    } else if (light->outline_is_sphere) {
+        cdl_region_sphere_view(&region, p, light->sphere_center, light->sphere_radius);
+        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+    } else {
+        if (!cdl_region_pyramid(&region, p, light->outline, light->outline_count)) return 0;
+        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+    }
+    return !cdl_occluder_index_intersects(ctx->occluders, &region, region_tolerance(ctx, p), light->owner);
+}
+
+/* Stratified Monte-Carlo over the light: returns the mean of f = L cos / pdf
+ * over visible samples (or, with `hidden_only`, of f over hidden samples)
+ * and the variance of that mean. */
+static void sample_light(const cdl_direct_context *ctx, const cdl_direct_light *light, uint64_t stream, cdl_vec3 p,
+                         cdl_vec3 n, int hidden_only, double *mean, double *variance, cdl_direct_sample_stats *stats)
+{
+    int k = (int)ceil(sqrt((double)(ctx->samples > 0 ? ctx->samples : 1)));
+    int count = k * k;
+    cdl_rng_key key = {ctx->seed, stream};
+    double sum = 0.0, sum2 = 0.0;
+    for (int j = 0; j < k; ++j)
+        for (int i = 0; i < k; ++i) {
+            double u[2];
+            cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
+            cdl_light_sample s;
+            double f = 0.0;
+            if (cdl_emitter_sample(light->emitter, p, n, (i + u[0]) / k, (j + u[1]) / k, &s) && s.pdf > 0.0) {
+                double c = cdl_vec3_dot(n, s.to_light);
+                if (c > 0.0) {
+                    double contribution = s.L.cd_m2 * c / s.pdf;
+                    int occluded = ctx->rays ? shadowed(ctx, p, n, s.to_light, s.distance, stats) : 0;
+                    if (hidden_only ? occluded : !occluded) f = contribution;
+                }
+            }
+            sum += f;
+            sum2 += f * f;
+        }
+    double m = sum / count;
+    double var = count > 1 ? fmax(0.0, (sum2 - count * m * m) / (count - 1)) / count : 0.0;
+    *mean = m;
+    *variance = var;
+}
+
+void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strategy *strategies, uint64_t stream,
+                            cdl_vec3 p, cdl_vec3 n, double *E_out, double *var_out, cdl_direct_sample_stats *stats)
+{
+    double E = 0.0, var = 0.0;
+    for (size_t l = 0; l < ctx->light_count; ++l) {
+        const cdl_direct_light *light = &ctx->lights[l];
+        uint64_t light_stream = cdl_rng_stream_id(stream, (uint64_t)l, 0x6c69676874ull /* "light" */);
+        switch (strategies[l]) {
+        case CDL_STRATEGY_DELTA_EXACT:
+        case CDL_STRATEGY_DELTA_SHADOWED: {
+            cdl_delta_light d;
+            if (!cdl_emitter_eval_delta(light->emitter, p, n, &d) || !(d.E.lx > 0.0)) break;
+            if (strategies[l] == CDL_STRATEGY_DELTA_SHADOWED && shadowed(ctx, p, n, d.to_light, d.distance, stats))
+                break;
+            E += d.E.lx;
+            break;
+        }
+        case CDL_STRATEGY_EXTENDED_EXACT:
+        case CDL_STRATEGY_EXTENDED_TESTED: {
+            cdl_illuminance exact;
+            if (cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) != CDL_OK) {
+                /* No closed form after all: sample. */
+                double m, v;
+                sample_light(ctx, light, light_stream, p, n, 0, &m, &v, stats);
+                E += m;
+                var += v;
+                stats->sampled_evaluations++;
+                break;
+            }
+            if (!(exact.lx > 0.0)) break; /* behind the emitter or below the horizon */
+            if (strategies[l] == CDL_STRATEGY_EXTENDED_EXACT || light_fully_visible(ctx, light, p, n)) {
+                E += exact.lx;
+                stats->exact_evaluations++;
+            } else {
+                /* E = E_exact - E_hidden: a control variate that is exact when
+                 * nothing is hidden and whose variance comes only from the
+                 * hidden part. */
+                double hidden, v;
+                sample_light(ctx, light, light_stream, p, n, 1, &hidden, &v, stats);
+                E += fmax(0.0, exact.lx - hidden);
+                var += v;
+                stats->sampled_evaluations++;
+            }
+            break;
+        }
+        case CDL_STRATEGY_SAMPLED: {
+            double m, v;
+            sample_light(ctx, light, light_stream, p, n, 0, &m, &v, stats);
+            E += m;
+            var += v;
+            stats->sampled_evaluations++;
+            break;
+        }
+        }
+    }
+    *E_out = E;
+    *var_out = var;
+}
+
+double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                                    cdl_direct_sample_stats *stats)
+{
+    if (!ctx->rays) return 1.0;
+    int k = (int)ceil(sqrt((double)(ctx->ao_samples > 0 ? ctx->ao_samples : 1)));
+    cdl_rng_key key = {ctx->seed, cdl_rng_stream_id(stream, 0x616f /* "ao" */, 0)};
+    cdl_frame frame = cdl_frame_from_normal(n);
+    int open = 0;
+    for (int j = 0; j < k; ++j)
+        for (int i = 0; i < k; ++i) {
+            double u[2];
+            cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
+            cdl_vec3 w = cdl_frame_to_world(&frame, cdl_sample_cosine_hemisphere_stratified(j, i, k, k, u[0], u[1]));
+            if (!shadowed(ctx, p, n, w, INFINITY, stats)) open++;
+        }
+    return (double)open / (double)(k * k);
+}

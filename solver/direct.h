@@ -1,0 +1,98 @@
+/* direct.h - direct illuminance at calculation points, exact where it can be.
+ *
+ * For each light and each grid a plan decides what the light needs:
+ *   delta lights (point, spot, goniometric, directional): the exact
+ *     I cos(theta) / d^2 (or E cos for directional) plus one shadow ray, and no
+ *     shadow ray at all when no surface can lie between the light and the
+ *     grid (nothing intersects the box around both);
+ *   area emitters and the uniform environment: the closed-form illuminance
+ *     (contour integral, disk and sphere formulas, pi L x visible fraction)
+ *     when no surface intersects the region between the receiver and the
+ *     emitter (tested exactly per point, see occluder_index.h); otherwise the
+ *     closed form minus a Monte-Carlo estimate of the hidden part
+ *     (E = E_exact - <f (1 - V)>, a control variate that is exact when
+ *     nothing is hidden), with its standard error;
+ *   image environments: Monte-Carlo sampling by luminance with shadow rays.
+ * Random numbers are keyed by (seed, grid, point, light, sample): results do
+ * not depend on threads or on the order points are computed in.
+ */
+#ifndef CANDELA_SOLVER_DIRECT_H
+#define CANDELA_SOLVER_DIRECT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "lights/emitter.h"
+#include "radiometry/error.h"
+#include "radiometry/vec3.h"
+#include "solver/occluder_index.h"
+#include "solver/ray_scene.h"
+
+/* How a light's contribution is obtained (per light, per grid). */
+typedef enum cdl_light_strategy {
+    CDL_STRATEGY_DELTA_EXACT,         /* delta light, nothing can occlude: no rays */
+    CDL_STRATEGY_DELTA_SHADOWED,      /* delta light, one shadow ray per point */
+    CDL_STRATEGY_EXTENDED_EXACT,      /* closed form, nothing can occlude for any point */
+    CDL_STRATEGY_EXTENDED_TESTED,     /* closed form where the per-point region is clear, else sampled */
+    CDL_STRATEGY_SAMPLED              /* always sampled (image environment, non-planar emitter) */
+} cdl_light_strategy;
+
+const char *cdl_light_strategy_name(cdl_light_strategy strategy);
+
+/* A light as the direct solver sees it. */
+typedef struct cdl_direct_light {
+    const cdl_emitter *emitter;
+    char label[160];                  /* "luminaires[3]" or "surfaces[2]" (+ face) for the plan */
+    uint32_t owner;                   /* geometry piece id of its own surface, UINT32_MAX if none */
+    int has_closed_form;              /* area or uniform environment */
+    int is_environment;
+    int upper_only;                   /* environment: sky above the horizon of `up` only */
+    cdl_vec3 up;
+    /* A convex outline bounding the emitter (area emitters), for the
+     * per-point visibility region; outline_count = 0 when there is none. */
+    cdl_vec3 outline[CDL_REGION_MAX_PLANES - 2];
+    int outline_count;
+    int outline_is_sphere;            /* use center/radius instead */
+    cdl_vec3 sphere_center;
+    double sphere_radius;
+    cdl_vec3 bounds_lo, bounds_hi;    /* world bounds of the emitter (delta: its position) */
+    int bounded;                      /* 0 for directional and environment */
+} cdl_direct_light;
+
+typedef struct cdl_direct_context {
+    const cdl_ray_scene *rays;        /* NULL when the scene has no geometry */
+    const cdl_occluder_index *occluders; /* NULL when the scene has no geometry */
+    double extent;                    /* scene size (bounding-box diagonal) for ray epsilons */
+    cdl_vec3 center;                  /* bounding-box centre of the scene */
+    const cdl_direct_light *lights;
+    size_t light_count;
+    int samples;                      /* per partly hidden extended light (rounded up to a square) */
+    int ao_samples;                   /* per point for ambient occlusion (rounded up to a square) */
+    uint64_t seed;
+} cdl_direct_context;
+
+/* Epsilon for rays leaving p: scale-invariant (a fraction of the scene
+ * extent) and at least several float ulps of |p| (Embree works in float). */
+double cdl_direct_ray_epsilon(const cdl_direct_context *ctx, cdl_vec3 p);
+
+/* Decide each light's strategy for a set of receiver points (a grid). */
+void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points, size_t count,
+                          cdl_light_strategy *strategies);
+
+typedef struct cdl_direct_sample_stats {
+    uint64_t rays;
+    uint64_t exact_evaluations;       /* closed forms used */
+    uint64_t sampled_evaluations;     /* Monte-Carlo estimates used */
+} cdl_direct_sample_stats;
+
+/* Direct illuminance (lux) at p on the plane with unit normal n, with the
+ * variance of its estimate (0 when exact). `stream` identifies the point
+ * (grid and index) for the random numbers. */
+void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strategy *strategies, uint64_t stream,
+                            cdl_vec3 p, cdl_vec3 n, double *E, double *variance, cdl_direct_sample_stats *stats);
+
+/* Cosine-weighted unoccluded fraction of the hemisphere about n at p. */
+double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                                    cdl_direct_sample_stats *stats);
+
+#endif

@@ -1,0 +1,553 @@
+/* End-to-end direct illuminance: scenes with closed-form answers, solved
+ * through the scene loader, geometry, emitters and the direct solver. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "radiometry/constants.h"
+#include "solver/solve.h"
+
+/* Solve a scene given as JSON text; returns 0 on failure (reported). */
+static int solve_json(const char *json, cdl_scene **scene, cdl_solution *sol, int threads)
+{
+    cdl_error err;
+    cdl_error_clear(&err);
+    *scene = NULL;
+    if (cdl_scene_load_string(json, CANDELA_TEST_TMPDIR "/inline.json", scene, &err) != CDL_OK) {
+        fprintf(stderr, "scene load failed: %s\n", err.message);
+        CHECK(0);
+        return 0;
+    }
+    cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+    o.threads = threads;
+    if (cdl_solve_scene(*scene, &o, sol, &err) != CDL_OK) {
+        fprintf(stderr, "solve failed: %s\n", err.message);
+        CHECK(0);
+        cdl_scene_release(*scene);
+        *scene = NULL;
+        return 0;
+    }
+    return 1;
+}
+
+static void done(cdl_scene *scene, cdl_solution *sol)
+{
+    cdl_solution_release(sol);
+    cdl_scene_release(scene);
+}
+
+/* Point light, no geometry: inverse-square and cosine law over angles
+ * 0..89.9 degrees and distances 1e-4..1e5 m, intensities 1e-6..1e9 cd.
+ * With nothing to occlude, the result is the closed form to a few ulps. */
+static void test_inverse_square_cosine(void)
+{
+    const double intensities[] = {1e-6, 1234.5, 1e9};
+    const double distances[] = {1e-4, 0.37, 1e5};
+    const double angles[] = {0.0, 30.0, 60.0, 85.0, 89.9};
+    for (int ii = 0; ii < 3; ++ii) {
+        char json[8192];
+        int n = snprintf(json, sizeof json,
+                         "{\"version\": 1, \"luminaires\": [{\"type\": \"point\", \"position\": [0, 0, 0], "
+                         "\"intensity_cd\": %.17g}], \"grids\": [{\"name\": \"probes\", \"type\": \"points\", "
+                         "\"points\": [",
+                         intensities[ii]);
+        for (int d = 0; d < 3; ++d)
+            for (int a = 0; a < 5; ++a) {
+                /* point at distance D straight below, normal tilted by the angle
+                 * towards +x: cos(theta) between normal and the light direction. */
+                double D = distances[d], t = angles[a] * CDL_DEG_TO_RAD;
+                n += snprintf(json + n, sizeof json - (size_t)n, "%s{\"p\": [0, 0, %.17g], \"n\": [%.17g, 0, %.17g]}",
+                              (d || a) ? ", " : "", -D, sin(t), cos(t));
+            }
+        snprintf(json + n, sizeof json - (size_t)n, "]}], \"solver\": {\"method\": \"direct\"}}");
+        cdl_scene *scene;
+        cdl_solution sol;
+        if (!solve_json(json, &scene, &sol, 1)) continue;
+        const cdl_grid_solution *g = &sol.grids[0];
+        int k = 0;
+        for (int d = 0; d < 3; ++d)
+            for (int a = 0; a < 5; ++a, ++k) {
+                double D = distances[d], t = angles[a] * CDL_DEG_TO_RAD;
+                /* the normal as the solver sees it is normalised from (sin t, 0, cos t) */
+                double expected = intensities[ii] * cos(t) / (D * D);
+                CHECK_REL(g->E[k], expected, 1e-13);
+                CHECK(g->E_stderr[k] == 0.0);
+            }
+        CHECK(sol.rays == 0); /* nothing in the scene: no rays */
+        done(scene, &sol);
+    }
+}
+
+
+/* Write a text file into the test folder; returns its path (static storage per name). */
+static const char *write_file(const char *name, const char *text)
+{
+    static char path[4][512];
+    static int next;
+    char *p = path[next++ % 4];
+    snprintf(p, 512, "%s/%s", CANDELA_TEST_TMPDIR, name);
+    FILE *f = fopen(p, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+    return p;
+}
+
+/* Spot with a smoothstep edge: full inside falloff_start, the smoothstep
+ * 3t^2 - 2t^3 of t = (cos a - cos half)/(cos falloff - cos half) between,
+ * nothing beyond half_angle (DESIGN.md). Probes on a sphere of radius 2 m
+ * about the spot, facing it. */
+static void test_spot_falloff(void)
+{
+    const double I0 = 5000.0, half = 30.0, falloff = 25.0, R = 2.0;
+    const double angles[] = {0.0, 10.0, 24.9, 26.0, 27.5, 29.0, 29.9, 30.5, 45.0, 120.0};
+    const int n = (int)(sizeof angles / sizeof angles[0]);
+    char json[8192];
+    int k = snprintf(json, sizeof json,
+                     "{\"version\": 1, \"luminaires\": [{\"type\": \"spot\", \"position\": [0, 0, 3], \"direction\": "
+                     "[0, 0, -1], \"intensity_cd\": %g, \"half_angle\": %g, \"falloff_start\": %g}], \"grids\": "
+                     "[{\"name\": \"arc\", \"type\": \"points\", \"points\": [",
+                     I0, half, falloff);
+    for (int i = 0; i < n; ++i) {
+        double a = angles[i] * CDL_DEG_TO_RAD;
+        k += snprintf(json + k, sizeof json - (size_t)k, "%s{\"p\": [%.17g, 0, %.17g], \"n\": [%.17g, 0, %.17g]}",
+                      i ? ", " : "", R * sin(a), 3.0 - R * cos(a), -sin(a), cos(a));
+    }
+    snprintf(json + k, sizeof json - (size_t)k, "]}], \"solver\": {\"method\": \"direct\"}}");
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    for (int i = 0; i < n; ++i) {
+        double ca = cos(angles[i] * CDL_DEG_TO_RAD), ch = cos(half * CDL_DEG_TO_RAD), cf = cos(falloff * CDL_DEG_TO_RAD);
+        double f;
+        if (ca >= cf) f = 1.0;
+        else if (ca <= ch) f = 0.0;
+        else {
+            double t = (ca - ch) / (cf - ch);
+            f = t * t * (3.0 - 2.0 * t);
+        }
+        double expected = I0 * f / (R * R); /* receiver faces the spot: cos = 1 */
+        if (expected == 0.0)
+            CHECK_MSG(sol.grids[0].E[i] == 0.0, "angle %g: E = %g, expected 0", angles[i], sol.grids[0].E[i]);
+        else
+            CHECK_REL(sol.grids[0].E[i], expected, 1e-12);
+    }
+    done(scene, &sol);
+}
+
+/* Rotation matrix world_from_luminaire = Rz Ry Rx (fixed axes, x first). */
+static cdl_vec3 rotate_xyz(const double deg[3], cdl_vec3 v)
+{
+    double a = deg[0] * CDL_DEG_TO_RAD, b = deg[1] * CDL_DEG_TO_RAD, c = deg[2] * CDL_DEG_TO_RAD;
+    cdl_vec3 x = cdl_vec3_make(v.x, cos(a) * v.y - sin(a) * v.z, sin(a) * v.y + cos(a) * v.z);
+    cdl_vec3 y = cdl_vec3_make(cos(b) * x.x + sin(b) * x.z, x.y, -sin(b) * x.x + cos(b) * x.z);
+    return cdl_vec3_make(cos(c) * y.x - sin(c) * y.y, sin(c) * y.x + cos(c) * y.y, y.z);
+}
+
+/* Goniometric luminaire, rotated: probes along directions that fall on
+ * table nodes (C, gamma), so the expected value is the tabulated candela
+ * times maintenance factor and multiplier, times cos(theta) / d^2. The table
+ * is IES type C, H = 0..350 by 10 degrees, V = 0..180 by 10, with
+ * I(H, V) = 100 + 3 V + 2 (H mod 180) + (H >= 180 ? 50 : 0) cd off the poles
+ * and 100 + 3 V at the poles (one value each): no symmetry. IES horizontal
+ * angles run clockwise seen from above, so the frame's C-plane C holds the
+ * file's H = (360 - C) mod 360 (lights/photometry.h). */
+static double gonio_table(int H, int V)
+{
+    if (V == 0 || V == 180) return 100 + 3 * V;
+    return 100 + 3 * V + 2 * (H % 180) + (H >= 180 ? 50 : 0);
+}
+
+static void test_goniometric_rotated(void)
+{
+    char ies[16384];
+    int k = snprintf(ies, sizeof ies,
+                     "IES:LM-63-2019\n[TEST] candela test\n[TESTLAB] test\n[ISSUEDATE] 2026-11-21\n[MANUFAC] test\n"
+                     "TILT=NONE\n1 -1 1 19 36 1 2 0 0 0\n1 1 10\n");
+    for (int g = 0; g <= 180; g += 10) k += snprintf(ies + k, sizeof ies - (size_t)k, "%d ", g);
+    k += snprintf(ies + k, sizeof ies - (size_t)k, "\n");
+    for (int c = 0; c < 360; c += 10) k += snprintf(ies + k, sizeof ies - (size_t)k, "%d ", c);
+    k += snprintf(ies + k, sizeof ies - (size_t)k, "\n");
+    for (int c = 0; c < 360; c += 10) {
+        for (int g = 0; g <= 180; g += 10)
+            k += snprintf(ies + k, sizeof ies - (size_t)k, "%g ", gonio_table(c, g));
+        k += snprintf(ies + k, sizeof ies - (size_t)k, "\n");
+    }
+    write_file("gonio_test.ies", ies);
+
+    const double rot[3] = {20.0, -30.0, 45.0};
+    const cdl_vec3 pos = cdl_vec3_make(1.0, 2.0, 3.0);
+    const int nodes[][2] = {{0, 0}, {30, 40}, {90, 90}, {200, 60}, {270, 130}, {350, 10}, {180, 180}};
+    const int n = (int)(sizeof nodes / sizeof nodes[0]);
+    const double dist[] = {1.5, 2.0, 3.0, 0.7, 4.0, 2.5, 1.0};
+    char json[8192];
+    int j = snprintf(json, sizeof json,
+                     "{\"version\": 1, \"luminaires\": [{\"type\": \"goniometric\", \"file\": \"gonio_test.ies\", "
+                     "\"position\": [1, 2, 3], \"rotation\": [20, -30, 45], \"maintenance_factor\": 0.8, "
+                     "\"multiplier\": 1.25}], \"grids\": [{\"name\": \"probes\", \"type\": \"points\", \"points\": [");
+    cdl_vec3 normals[16];
+    for (int i = 0; i < n; ++i) {
+        double C = nodes[i][0] * CDL_DEG_TO_RAD, g = nodes[i][1] * CDL_DEG_TO_RAD;
+        cdl_vec3 local = cdl_vec3_make(sin(g) * cos(C), sin(g) * sin(C), -cos(g));
+        cdl_vec3 w = rotate_xyz(rot, local);
+        cdl_vec3 p = cdl_vec3_madd(pos, dist[i], w);
+        /* a receiver tilted away from the light direction by ~35 degrees */
+        cdl_vec3 nrm = cdl_vec3_normalize(cdl_vec3_add(cdl_vec3_neg(w), cdl_vec3_make(0.3, -0.5, 0.2)));
+        normals[i] = nrm;
+        j += snprintf(json + j, sizeof json - (size_t)j, "%s{\"p\": [%.17g, %.17g, %.17g], \"n\": [%.17g, %.17g, %.17g]}",
+                      i ? ", " : "", p.x, p.y, p.z, nrm.x, nrm.y, nrm.z);
+    }
+    snprintf(json + j, sizeof json - (size_t)j, "]}], \"solver\": {\"method\": \"direct\"}}");
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    for (int i = 0; i < n; ++i) {
+        int C = nodes[i][0], g = nodes[i][1];
+        double table = gonio_table((360 - C) % 360, g);
+        double C_rad = C * CDL_DEG_TO_RAD, g_rad = g * CDL_DEG_TO_RAD;
+        cdl_vec3 w = rotate_xyz(rot, cdl_vec3_make(sin(g_rad) * cos(C_rad), sin(g_rad) * sin(C_rad), -cos(g_rad)));
+        double cos_theta = cdl_vec3_dot(normals[i], cdl_vec3_neg(w));
+        double expected = table * 0.8 * 1.25 * cos_theta / (dist[i] * dist[i]);
+        CHECK_MSG(fabs(sol.grids[0].E[i] - expected) <= 1e-9 * expected, "node C=%d g=%d: E = %.12g, expected %.12g",
+                  C, g, sol.grids[0].E[i], expected);
+    }
+    /* The DESIGN.md example: rotation [0, -30, 0] tilts the nadir from -z towards +x. */
+    const double tilt[3] = {0.0, -30.0, 0.0};
+    cdl_vec3 nadir = rotate_xyz(tilt, cdl_vec3_make(0, 0, -1));
+    CHECK(nadir.x > 0.49 && nadir.z < -0.86);
+    done(scene, &sol);
+}
+
+/* Configuration factor, differential element to a parallel rectangle a x b
+ * with the normal through one corner, at distance h (Howell's catalogue,
+ * C-11; Modest, Radiative Heat Transfer, appendix D). */
+static double cf_parallel_corner(double a, double b, double h)
+{
+    double X = a / h, Y = b / h;
+    return (X / sqrt(1 + X * X) * atan(Y / sqrt(1 + X * X)) + Y / sqrt(1 + Y * Y) * atan(X / sqrt(1 + Y * Y))) /
+           (2.0 * CDL_PI);
+}
+
+/* E = L integral of cos(theta_r) cos(theta_e) / d^2 dA over a rectangle, by
+ * Gauss-Legendre (16 nodes) on 64 x 64 panels: an independent reference for
+ * configurations without a tabulated formula. */
+static double rect_quadrature(cdl_vec3 origin, cdl_vec3 u, cdl_vec3 v, double L, cdl_vec3 p, cdl_vec3 n)
+{
+    static const double x16[8] = {0.0950125098376374, 0.2816035507792589, 0.4580167776572274, 0.6178762444026438,
+                                  0.7554044083550030, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499};
+    static const double w16[8] = {0.1894506104550685, 0.1826034150449236, 0.1691565193950025, 0.1495959888165767,
+                                  0.1246289712555339, 0.0951585116824928, 0.0622535239386479, 0.0271524594117541};
+    cdl_vec3 en = cdl_vec3_normalize(cdl_vec3_cross(u, v));
+    double area = cdl_vec3_length(cdl_vec3_cross(u, v));
+    const int panels = 64;
+    double sum = 0.0;
+    for (int pi = 0; pi < panels; ++pi)
+        for (int pj = 0; pj < panels; ++pj)
+            for (int a = 0; a < 16; ++a)
+                for (int b = 0; b < 16; ++b) {
+                    double xa = a < 8 ? -x16[7 - a] : x16[a - 8], wa = a < 8 ? w16[7 - a] : w16[a - 8];
+                    double xb = b < 8 ? -x16[7 - b] : x16[b - 8], wb = b < 8 ? w16[7 - b] : w16[b - 8];
+                    double s = (pi + 0.5 + 0.5 * xa) / panels, t = (pj + 0.5 + 0.5 * xb) / panels;
+                    cdl_vec3 q = cdl_vec3_add(origin, cdl_vec3_add(cdl_vec3_scale(u, s), cdl_vec3_scale(v, t)));
+                    cdl_vec3 d = cdl_vec3_sub(q, p);
+                    double r2 = cdl_vec3_dot(d, d), r = sqrt(r2);
+                    double cr = cdl_vec3_dot(n, d) / r, ce = -cdl_vec3_dot(en, d) / r;
+                    if (cr > 0 && ce > 0) sum += wa * wb * 0.25 * cr * ce / r2;
+                }
+    return L * sum * area / (panels * panels);
+}
+
+/* Lambertian area luminaires: rectangle (parallel and perpendicular
+ * receivers) and disk on axis; closed forms with no occluders. */
+static void test_lambertian_emitters(void)
+{
+    const double L = 2000.0, a = 1.2, b = 0.6, h = 1.7;
+    const char *json =
+        "{\"version\": 1, \"luminaires\": ["
+        " {\"type\": \"area\", \"shape\": {\"type\": \"rect\", \"origin\": [0, 0, 1.7], \"u\": [0, 0.6, 0], "
+        "\"v\": [1.2, 0, 0]}, \"luminance_cd_m2\": 2000}],"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": ["
+        "  {\"p\": [0, 0, 0], \"n\": [0, 0, 1]}, {\"p\": [0.6, 0.3, 0], \"n\": [0, 0, 1]},"
+        "  {\"p\": [-0.5, 0.3, 1.0], \"n\": [1, 0, 0]}, {\"p\": [0.6, 0.3, 1.69999], \"n\": [0, 0, 1]},"
+        "  {\"p\": [0.6, 0.3, -10000], \"n\": [0, 0, 1]}]}], \"solver\": {\"method\": \"direct\"}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    const double *E = sol.grids[0].E;
+    /* corner: one rectangle; centre: four quarter rectangles. */
+    CHECK_REL(E[0], CDL_PI * L * cf_parallel_corner(a, b, h), 1e-10);
+    CHECK_REL(E[1], 4.0 * CDL_PI * L * cf_parallel_corner(a / 2, b / 2, h), 1e-10);
+    /* perpendicular receiver beside the luminaire, facing +x: quadrature
+     * reference (converged to ~1e-12 for this smooth integrand). */
+    double ref = rect_quadrature(cdl_vec3_make(0, 0, 1.7), cdl_vec3_make(0, 0.6, 0), cdl_vec3_make(1.2, 0, 0), L,
+                                 cdl_vec3_make(-0.5, 0.3, 1.0), cdl_vec3_make(1, 0, 0));
+    CHECK_REL(E[2], ref, 1e-8);
+    /* right under the emitter (10 um away): the near field is pi L. */
+    CHECK_REL(E[3], CDL_PI * L, 1e-4);
+    /* 10 km below: the far field is I cos / d^2 with I = L A. */
+    CHECK_REL(E[4], L * a * b / (10001.7 * 10001.7), 1e-6);
+    for (int i = 0; i < 5; ++i) CHECK(sol.grids[0].E_stderr[i] == 0.0);
+    done(scene, &sol);
+
+    /* Disk on axis: E = pi L r^2 / (r^2 + h^2). */
+    const char *disk =
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"area\", \"shape\": {\"type\": \"disk\", \"center\": [0, 0, 2], "
+        "\"normal\": [0, 0, -1], \"radius\": 0.3}, \"luminance_cd_m2\": 1000}], \"grids\": [{\"name\": \"p\", "
+        "\"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}, {\"p\": [0, 0, 1.5], \"n\": [0, 0, 1]}]}],"
+        " \"solver\": {\"method\": \"direct\"}}";
+    if (!solve_json(disk, &scene, &sol, 1)) return;
+    CHECK_REL(sol.grids[0].E[0], CDL_PI * 1000.0 * 0.09 / (0.09 + 4.0), 1e-10);
+    CHECK_REL(sol.grids[0].E[1], CDL_PI * 1000.0 * 0.09 / (0.09 + 0.25), 1e-10);
+    done(scene, &sol);
+}
+
+/* Uniform sky: pi L on a horizontal plane, pi L / 2 on a vertical one
+ * (upper hemisphere only); a full sphere gives pi L on any plane. */
+static void test_uniform_sky(void)
+{
+    const char *json =
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 5000, "
+        "\"hemisphere\": \"upper\", \"up\": [0, 0, 1]}], \"grids\": [{\"name\": \"p\", \"type\": \"points\", "
+        "\"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}, {\"p\": [3, 0, 0], \"n\": [1, 0, 0]},"
+        " {\"p\": [0, 0, 7], \"n\": [0, 0.6, 0.8]}, {\"p\": [0, 1, 0], \"n\": [0, 0, -1]}]}],"
+        " \"solver\": {\"method\": \"direct\"}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    const double *E = sol.grids[0].E;
+    CHECK_REL(E[0], CDL_PI * 5000.0, 1e-12);
+    CHECK_REL(E[1], CDL_PI * 5000.0 / 2.0, 1e-12);
+    /* tilted by beta (cos 0.8): sky view factor (1 + cos beta) / 2 */
+    CHECK_REL(E[2], CDL_PI * 5000.0 * (1.0 + 0.8) / 2.0, 1e-12);
+    CHECK(E[3] == 0.0);
+    CHECK(sol.rays == 0);
+    done(scene, &sol);
+    const char *full =
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 300}], \"grids\": "
+        "[{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, -1]}, "
+        "{\"p\": [0, 0, 0], \"n\": [0.6, 0, 0.8]}]}], \"solver\": {\"method\": \"direct\"}}";
+    if (!solve_json(full, &scene, &sol, 1)) return;
+    CHECK_REL(sol.grids[0].E[0], CDL_PI * 300.0, 1e-12);
+    CHECK_REL(sol.grids[0].E[1], CDL_PI * 300.0, 1e-12);
+    done(scene, &sol);
+}
+
+/* Shadows from a box: a point light at (0, 0, 4) over a 1 x 1 x 1 box on the
+ * floor centred at the origin. The box top (z = 1, |x|,|y| <= 0.5) casts the
+ * shadow |x|, |y| <= 0.5 * 4 / 3 on the floor; points inside get nothing,
+ * points outside the closed form (nothing else in the way). */
+static void test_box_shadow(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [-5, -5, 0], \"u\": [10, 0, 0], "
+        "\"v\": [0, 10, 0], \"reflectance\": 0.2},"
+        " {\"type\": \"box\", \"min\": [-0.5, -0.5, 0], \"max\": [0.5, 0.5, 1], \"reflectance\": 0.5}],"
+        " \"luminaires\": [{\"type\": \"point\", \"position\": [0, 0, 4], \"intensity_cd\": 1000}],"
+        " \"grids\": [{\"name\": \"floor\", \"type\": \"rect\", \"origin\": [-2, -2, 0], \"u\": [4, 0, 0], "
+        "\"v\": [0, 4, 0], \"nu\": 40, \"nv\": 40}], \"solver\": {\"method\": \"direct\"}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 2)) return;
+    const cdl_grid_solution *g = &sol.grids[0];
+    int shadowed = 0, lit = 0;
+    for (size_t i = 0; i < g->grid.count; ++i) {
+        cdl_vec3 p = g->grid.points[i];
+        double half = 0.5 * 4.0 / 3.0;
+        int in_shadow = fabs(p.x) < half && fabs(p.y) < half;
+        int under_box = fabs(p.x) < 0.5 && fabs(p.y) < 0.5;
+        double d2 = p.x * p.x + p.y * p.y + 16.0;
+        double expected = (in_shadow || under_box) ? 0.0 : 1000.0 * (4.0 / sqrt(d2)) / d2;
+        if (expected == 0.0) {
+            CHECK_MSG(g->E[i] == 0.0, "(%g, %g) in shadow: E = %g", p.x, p.y, g->E[i]);
+            shadowed++;
+        } else {
+            CHECK_REL(g->E[i], expected, 1e-12);
+            lit++;
+        }
+    }
+    /* cell centres at -1.95 .. 1.95 by 0.1: 14 of them have |x| < 2/3 */
+    CHECK(shadowed == 14 * 14 && lit == 1600 - 14 * 14);
+    done(scene, &sol);
+}
+
+/* A rectangular emitter half hidden: an opaque plate at half height covers
+ * x < 0, so from a receiver on the axis exactly the x < 0 half of the
+ * emitter is hidden and E is half the unoccluded closed form. The solver
+ * must sample here, and its estimate must agree within its standard error. */
+static void test_half_hidden_emitter(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [-10, -10, 1], \"u\": [10, 0, 0], "
+        "\"v\": [0, 20, 0], \"reflectance\": 0}],"
+        " \"luminaires\": [{\"type\": \"area\", \"shape\": {\"type\": \"rect\", \"origin\": [-0.5, -0.5, 2], "
+        "\"u\": [0, 1, 0], \"v\": [1, 0, 0]}, \"luminance_cd_m2\": 1000}],"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}]}],"
+        " \"solver\": {\"method\": \"direct\", \"direct_samples\": 4096}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    double full = 4.0 * CDL_PI * 1000.0 * cf_parallel_corner(0.5, 0.5, 2.0);
+    double E = sol.grids[0].E[0], se = sol.grids[0].E_stderr[0];
+    CHECK_MSG(se > 0.0 && se < 0.01 * full, "stderr %g", se);
+    /* within 4 standard errors (the stderr is an i.i.d. estimate, an upper
+     * bound for the stratified estimator) */
+    CHECK_MSG(fabs(E - 0.5 * full) <= 4.0 * se, "E = %g, expected %g +- %g", E, 0.5 * full, 4.0 * se);
+    done(scene, &sol);
+}
+
+/* The same room at 1e-3, 1 and 1e3 times the size: for fixed intensities
+ * the illuminance scales as 1/s^2 and the shadow pattern is identical; grid
+ * points lie exactly on the floor. */
+static void solve_scaled_room(double s, cdl_solution *sol, cdl_scene **scene)
+{
+    char json[4096];
+    snprintf(json, sizeof json,
+             "{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [0, 0, 0], \"max\": [%.17g, %.17g, %.17g], "
+             "\"inward\": true, \"reflectance\": 0.5},"
+             " {\"type\": \"box\", \"min\": [%.17g, %.17g, 0], \"max\": [%.17g, %.17g, %.17g], \"reflectance\": 0.3},"
+             " {\"type\": \"rect\", \"origin\": [%.17g, %.17g, %.17g], \"u\": [%.17g, 0, 0], \"v\": [0, %.17g, 0], "
+             "\"reflectance\": 0.3}],"
+             " \"luminaires\": [{\"type\": \"point\", \"position\": [%.17g, %.17g, %.17g], \"intensity_cd\": 1000},"
+             " {\"type\": \"spot\", \"position\": [%.17g, %.17g, %.17g], \"direction\": [-1, -1, -2], "
+             "\"intensity_cd\": 3000, \"half_angle\": 40, \"falloff_start\": 30}],"
+             " \"grids\": [{\"name\": \"floor\", \"type\": \"rect\", \"origin\": [0, 0, 0], \"u\": [%.17g, 0, 0], "
+             "\"v\": [0, %.17g, 0], \"nu\": 32, \"nv\": 32}], \"solver\": {\"method\": \"direct\"}}",
+             4 * s, 4 * s, 3 * s, 1.5 * s, 1.5 * s, 2.2 * s, 2.5 * s, 0.8 * s, 0.6 * s, 1.0 * s, 1.2 * s, 2.0 * s,
+             0.4 * s, 1.0 * s, 1.3 * s, 2.9 * s, 3.5 * s, 3.5 * s, 2.8 * s, 4 * s, 4 * s);
+    solve_json(json, scene, sol, 1);
+}
+
+static void test_scale_invariance(void)
+{
+    cdl_scene *s1, *sa, *sb;
+    cdl_solution r1, ra, rb;
+    solve_scaled_room(1.0, &r1, &s1);
+    solve_scaled_room(1e-3, &ra, &sa);
+    solve_scaled_room(1e3, &rb, &sb);
+    if (!s1 || !sa || !sb) return;
+    size_t n = r1.grids[0].grid.count, zeros = 0, mismatched = 0;
+    for (size_t i = 0; i < n; ++i) {
+        double e1 = r1.grids[0].E[i], ea = ra.grids[0].E[i] * 1e-6, eb = rb.grids[0].E[i] * 1e6;
+        if (e1 == 0.0) zeros++;
+        /* identical visibility, values equal to rounding */
+        if ((e1 == 0.0) != (ea == 0.0) || (e1 == 0.0) != (eb == 0.0) || fabs(ea - e1) > 1e-9 * e1 ||
+            fabs(eb - e1) > 1e-9 * e1)
+            mismatched++;
+    }
+    CHECK_MSG(mismatched == 0, "%zu of %zu points differ between scales", mismatched, n);
+    CHECK_MSG(zeros > 20 && zeros < n / 2, "%zu shadowed points", zeros); /* the obstacles do cast shadows */
+    done(s1, &r1);
+    done(sa, &ra);
+    done(sb, &rb);
+}
+
+/* Results do not depend on the number of threads: bit-identical. */
+static void test_thread_determinism(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [0, 0, 0], \"max\": [4, 3, 2.5], \"inward\": true,"
+        " \"reflectance\": 0}, {\"type\": \"sphere\", \"center\": [2, 1.5, 1.2], \"radius\": 0.4, \"reflectance\": 0}],"
+        " \"luminaires\": [{\"type\": \"area\", \"shape\": {\"type\": \"rect\", \"origin\": [1.5, 1, 2.49], "
+        "\"u\": [0, 1, 0], \"v\": [1, 0, 0]}, \"luminance_cd_m2\": 3000}, {\"type\": \"point\", \"position\": [1, 1, 2], "
+        "\"intensity_cd\": 500}],"
+        " \"grids\": [{\"name\": \"floor\", \"type\": \"rect\", \"origin\": [0, 0, 0], \"u\": [4, 0, 0], \"v\": [0, 3, 0],"
+        " \"nu\": 24, \"nv\": 18, \"outputs\": [\"ao\"]}], \"solver\": {\"method\": \"direct\", \"quality\": \"draft\"}}";
+    cdl_scene *s[3];
+    cdl_solution r[3];
+    const int threads[3] = {1, 2, 3};
+    for (int t = 0; t < 3; ++t) solve_json(json, &s[t], &r[t], threads[t]);
+    if (!s[0] || !s[1] || !s[2]) return;
+    size_t n = r[0].grids[0].grid.count;
+    for (int t = 1; t < 3; ++t) {
+        CHECK(memcmp(r[0].grids[0].E, r[t].grids[0].E, n * sizeof(double)) == 0);
+        CHECK(memcmp(r[0].grids[0].E_stderr, r[t].grids[0].E_stderr, n * sizeof(double)) == 0);
+        CHECK(memcmp(r[0].grids[0].ao, r[t].grids[0].ao, n * sizeof(double)) == 0);
+        CHECK(r[0].rays == r[t].rays);
+    }
+    /* the sphere hides part of the panel from some points: sampling happened */
+    int sampled = 0;
+    for (size_t i = 0; i < n; ++i) sampled += r[0].grids[0].E_stderr[i] > 0.0;
+    CHECK(sampled > 0);
+    for (int t = 0; t < 3; ++t) done(s[t], &r[t]);
+}
+
+/* Ambient occlusion: an open plane sees the whole sky (1); a point on the
+ * floor of a closed box sees nothing (0); a point at the bottom of a tall
+ * open-topped shaft sees the cosine-weighted fraction of its opening. */
+static void test_ambient_occlusion(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [-50, -50, 0], \"u\": [100, 0, 0], "
+        "\"v\": [0, 100, 0], \"reflectance\": 0},"
+        " {\"type\": \"box\", \"min\": [10, 10, 0], \"max\": [12, 12, 2], \"inward\": true, \"reflectance\": 0}],"
+        " \"luminaires\": [{\"type\": \"point\", \"position\": [0, 0, 5], \"intensity_cd\": 1}],"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]},"
+        " {\"p\": [11, 11, 0], \"n\": [0, 0, 1]}], \"outputs\": [\"ao\"]}], \"solver\": {\"method\": \"direct\"}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    CHECK(sol.grids[0].ao[0] == 1.0);
+    CHECK(sol.grids[0].ao[1] == 0.0);
+    done(scene, &sol);
+}
+
+/* Methods: a scene with reflecting surfaces needs interreflection, which
+ * "auto" cannot give yet: refused, never solved with less. */
+static void test_method_refusals(void)
+{
+    const char *reflecting =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [0, 0, 0], \"u\": [1, 0, 0], \"v\": [0, 1, 0], "
+        "\"reflectance\": 0.5}], \"luminaires\": [{\"type\": \"point\", \"position\": [0, 0, 1], \"intensity_cd\": 1}],"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0.5, 0.5, 0], \"n\": [0, 0, 1]}]}]}";
+    cdl_error err;
+    cdl_scene *scene = NULL;
+    CHECK_OK(cdl_scene_load_string(reflecting, "refl.json", &scene, &err), &err);
+    if (scene) {
+        cdl_solution sol;
+        CHECK(cdl_solve_scene(scene, NULL, &sol, &err) == CDL_ERR_INPUT);
+        CHECK(strstr(err.message, "surfaces[0]") != NULL && strstr(err.message, "\"direct\"") != NULL);
+        cdl_scene_release(scene);
+    }
+    const char *icache =
+        "{\"version\": 1, \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], "
+        "\"n\": [0, 0, 1]}]}], \"solver\": {\"method\": \"icache\"}}";
+    CHECK_OK(cdl_scene_load_string(icache, "ic.json", &scene, &err), &err);
+    if (scene) {
+        cdl_solution sol;
+        CHECK(cdl_solve_scene(scene, NULL, &sol, &err) == CDL_ERR_INPUT);
+        CHECK(strstr(err.message, "not built") != NULL);
+        cdl_scene_release(scene);
+    }
+    /* auto without reflecting surfaces is the direct method */
+    const char *dark =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [0, 0, 0], \"u\": [1, 0, 0], \"v\": [0, 1, 0], "
+        "\"reflectance\": 0}], \"luminaires\": [{\"type\": \"point\", \"position\": [0.5, 0.5, 1], \"intensity_cd\": 100}],"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0.5, 0.5, 0], \"n\": [0, 0, 1]}]}]}";
+    cdl_solution sol;
+    if (solve_json(dark, &scene, &sol, 1)) {
+        CHECK(sol.method == CDL_METHOD_DIRECT);
+        CHECK_REL(sol.grids[0].E[0], 100.0, 1e-12);
+        CHECK(strstr(sol.plan_json, "no surface reflects light") != NULL);
+        done(scene, &sol);
+    }
+}
+
+int main(void)
+{
+    test_inverse_square_cosine();
+    test_spot_falloff();
+    test_goniometric_rotated();
+    test_lambertian_emitters();
+    test_uniform_sky();
+    test_box_shadow();
+    test_half_hidden_emitter();
+    test_scale_invariance();
+    test_thread_determinism();
+    test_ambient_occlusion();
+    test_method_refusals();
+    return check_finish();
+}

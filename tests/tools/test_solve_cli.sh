@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# candela solve through the command line: the example office end to end,
+# the files DESIGN.md promises, relative paths, errors, atomic outputs, and
+# identical results for any thread count.
+# ctest-timeout: 300
+set -u
+: "${CANDELA:?}" "${CANDELA_SOURCE_DIR:?}"
+fail=0
+check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+office="$CANDELA_SOURCE_DIR/data/office/office.json"
+
+# Run from another folder: paths in the scene resolve against the scene file.
+(cd "$tmp" && "$CANDELA" solve "$office" -o out --quiet > stdout.txt 2> stderr.txt); st=$?
+check "office solves (exit 0)" '[ $st -eq 0 ]'
+[ $st -eq 0 ] || cat "$tmp/stderr.txt"
+out="$tmp/out"
+for g in workplane floor north_wall; do
+  for ext in csv exr png; do check "$g.$ext written" '[ -s "$out/$g.$ext" ]'; done
+done
+check "points grid gets a CSV" '[ -s "$out/desk_probes.csv" ]'
+check "points grid gets no EXR" '[ ! -e "$out/desk_probes.exr" ]'
+check "summary.json written" '[ -s "$out/summary.json" ]'
+check "no temporary files left" '[ -z "$(ls "$out" | grep -F .tmp.)" ]'
+
+header=$(head -n 1 "$out/workplane.csv")
+check "CSV header as DESIGN.md" '[ "$header" = "x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx" ]'
+check "AO column when asked" '[ "$(head -n 1 "$out/north_wall.csv")" = "x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx,AO" ]'
+rows=$(($(wc -l < "$out/workplane.csv") - 1))
+check "one row per point (20 x 12)" '[ $rows -eq 240 ]'
+check "PNG signature" '[ "$(head -c 8 "$out/workplane.png" | od -An -tx1 | tr -d " \n")" = "89504e470d0a1a0a" ]'
+check "EXR magic" '[ "$(head -c 4 "$out/workplane.exr" | od -An -tx1 | tr -d " \n")" = "762f3101" ]'
+for key in '"grids"' '"workplane"' '"count"' '"E_avg_lx"' '"E_min_lx"' '"E_max_lx"' '"U0"' '"Ud"' \
+           '"method"' '"quality"' '"settings"' '"seconds"' '"rays"' '"plan"' '"interreflection"'; do
+  check "summary.json has $key" 'grep -q "$key" "$out/summary.json"'
+done
+check "no NaN anywhere" '! grep -qi "nan\|inf" "$out/workplane.csv" "$out/summary.json"'
+check "stdout names the results folder" 'grep -q "results in out" "$tmp/stdout.txt"'
+
+# Same scene, 1 and 3 threads: the same bytes.
+"$CANDELA" solve "$office" -o "$tmp/t1" --quiet --threads 1 >/dev/null 2>&1
+"$CANDELA" solve "$office" -o "$tmp/t3" --quiet --threads 3 >/dev/null 2>&1
+for g in workplane floor north_wall desk_probes; do
+  check "$g.csv identical for 1 and 3 threads" 'cmp -s "$tmp/t1/$g.csv" "$tmp/t3/$g.csv"'
+done
+
+# Bad input: exit 1, message with the JSON path; earlier results untouched.
+cp "$out/workplane.csv" "$tmp/before.csv"
+mkdir -p "$tmp/office" && cp "$CANDELA_SOURCE_DIR"/data/office/* "$tmp/office/"
+sed 's/"position": \[1.5, 0.9, 2.78\]/"position": [1.5, 0.9]/' "$office" > "$tmp/office/bad.json"
+"$CANDELA" solve "$tmp/office/bad.json" -o "$out" --quiet > /dev/null 2> "$tmp/err.txt"; st=$?
+check "bad scene exits 1" '[ $st -eq 1 ]'
+check "error names the JSON path" 'grep -q "luminaires\[0\].position" "$tmp/err.txt"'
+check "earlier results intact after a failed run" 'cmp -s "$out/workplane.csv" "$tmp/before.csv"'
+"$CANDELA" solve "$tmp/does-not-exist.json" -o "$out" --quiet >/dev/null 2>"$tmp/err.txt"; st=$?
+check "missing scene exits 1" '[ $st -eq 1 ]'
+check "missing scene is named" 'grep -q "does-not-exist.json" "$tmp/err.txt"'
+"$CANDELA" solve "$office" --quiet >/dev/null 2>&1; st=$?
+check "missing -o is a usage error" '[ $st -eq 2 ]'
+"$CANDELA" solve "$office" -o "$out" --threads lots >/dev/null 2>&1; st=$?
+check "bad --threads is a usage error" '[ $st -eq 2 ]'
+
+# An interrupted run: kill a solve part-way; every file is either the old
+# complete one or a new complete one (CSV rows intact, summary parses to its end).
+for i in 1 2 3; do
+  "$CANDELA" solve "$office" -o "$out" --quiet --threads 1 >/dev/null 2>&1 &
+  pid=$!
+  sleep 0.0$((i * 3))
+  kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
+  check "after kill $i: workplane.csv complete" '[ $(($(wc -l < "$out/workplane.csv") - 1)) -eq 240 ]'
+  check "after kill $i: summary.json complete" '[ "$(tail -c 2 "$out/summary.json" | head -c 1)" = "}" ]'
+done
+exit $fail
