@@ -193,31 +193,26 @@ void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strat
         case CDL_STRATEGY_EXTENDED_EXACT:
         case CDL_STRATEGY_EXTENDED_TESTED: {
             cdl_illuminance exact;
-            if (cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) != CDL_OK) {
-                /* No closed form after all: sample. */
-                double m, v;
-                sample_light(ctx, light, light_stream, p, n, 0, &m, &v, stats);
-                E += m;
-                var += v;
-                stats->sampled_evaluations++;
+            if (cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK) {
+                if (!(exact.lx > 0.0)) break; /* behind the emitter or below the horizon */
+                if (strategies[l] == CDL_STRATEGY_EXTENDED_EXACT || light_fully_visible(ctx, light, p, n)) {
+                    E += exact.lx;
+                    stats->exact_evaluations++;
+                } else {
+                    /* E = E_exact - E_hidden: a control variate that is exact
+                     * when nothing is hidden and whose variance comes only
+                     * from the hidden part. */
+                    double hidden, v;
+                    sample_light(ctx, light, light_stream, p, n, 1, &hidden, &v, stats);
+                    E += fmax(0.0, exact.lx - hidden);
+                    var += v;
+                    stats->sampled_evaluations++;
+                }
                 break;
             }
-            if (!(exact.lx > 0.0)) break; /* behind the emitter or below the horizon */
-            if (strategies[l] == CDL_STRATEGY_EXTENDED_EXACT || light_fully_visible(ctx, light, p, n)) {
-                E += exact.lx;
-                stats->exact_evaluations++;
-            } else {
-                /* E = E_exact - E_hidden: a control variate that is exact when
-                 * nothing is hidden and whose variance comes only from the
-                 * hidden part. */
-                double hidden, v;
-                sample_light(ctx, light, light_stream, p, n, 1, &hidden, &v, stats);
-                E += fmax(0.0, exact.lx - hidden);
-                var += v;
-                stats->sampled_evaluations++;
-            }
-            break;
         }
+            /* no closed form after all: sample */
+            /* fall through */
         case CDL_STRATEGY_SAMPLED: {
             double m, v;
             sample_light(ctx, light, light_stream, p, n, 0, &m, &v, stats);
