@@ -19,8 +19,12 @@
  * Sampling (pdf exact, with respect to solid angle at p):
  *  - triangles: a triangle with probability proportional to its area, a
  *    uniform point on it; pdf = d^2 / (A cos theta_e);
- *  - rect: a uniform point (s, t) = (u1, u2); disk: a uniform point by the
- *    concentric map (stratification-preserving); same pdf;
+ *  - rect with orthogonal sides, subtending at least RECT_SOLID_ANGLE_MIN:
+ *    uniform in solid angle (spherical_rectangle.h), pdf = 1 / Omega, so
+ *    near a large panel the variance stays that of the cosine alone;
+ *    otherwise (far, or a slanted parallelogram) a uniform point (s, t) =
+ *    (u1, u2); disk: a uniform point by the concentric map
+ *    (stratification-preserving); pdf = d^2 / (A cos theta_e);
  *  - sphere seen from outside: a uniform direction in the cone it
  *    subtends, pdf = 1 / (2 pi (1 - cos sigma)), sin sigma = R/d;
  *  - inside an inward sphere: cosine-weighted about n, pdf = cos / pi.
@@ -34,6 +38,7 @@
 #include "lights/emitter.h"
 #include "lights/emitter_internal.h"
 #include "lights/projected_solid_angle.h"
+#include "lights/spherical_rectangle.h"
 #include "radiometry/constants.h"
 #include "radiometry/conversions.h"
 #include "radiometry/frame.h"
@@ -56,6 +61,7 @@ typedef struct area_emitter {
     size_t tri_count;
     /* rect */
     cdl_vec3 origin, u, v;
+    int rect_is_rectangle;   /* u orthogonal to v: solid-angle sampling applies */
     /* disk and sphere */
     cdl_vec3 center;
     double radius;
@@ -157,6 +163,19 @@ static int area_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_illumina
 }
 
 /* ---- sampling --------------------------------------------------------------- */
+
+/* Below this solid angle a rect is sampled by area: it is then far enough
+ * for area sampling to be nearly uniform in solid angle too, and the angle
+ * excess that gives Omega (~1e-15 sr absolute) would lose relative digits. */
+#define RECT_SOLID_ANGLE_MIN 1e-3
+
+/* Whether p samples the rect by solid angle (the same decision, from the
+ * same arithmetic, in sample and radiance, so their pdfs agree). */
+static int rect_uses_solid_angle(const area_emitter *a, cdl_vec3 p, cdl_spherical_rectangle *sr)
+{
+    if (!a->rect_is_rectangle) return 0;
+    return cdl_spherical_rectangle_init(sr, p, a->origin, a->u, a->v) >= RECT_SOLID_ANGLE_MIN;
+}
 
 /* Fills `out` for a sampled point at w = x - p on a surface of unit normal m
  * chosen with area density 1/area_total. pdf in solid angle:
@@ -273,6 +292,14 @@ static int area_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1, 
         return finish_point_sample(a, w, t->normal, n, out);
     }
     case CDL_SHAPE_RECT: {
+        if (!(cdl_vec3_dot(a->frame.n, cdl_vec3_sub(p, a->origin)) > 0.0)) return 0; /* behind: dark */
+        cdl_spherical_rectangle sr;
+        if (rect_uses_solid_angle(a, p, &sr)) {
+            cdl_vec3 w = cdl_spherical_rectangle_sample(&sr, u1, u2);
+            if (!finish_point_sample(a, w, a->frame.n, n, out)) return 0;
+            out->pdf = 1.0 / sr.S;
+            return 1;
+        }
         cdl_vec3 w = cdl_vec3_madd(cdl_vec3_madd(cdl_vec3_sub(a->origin, p), u1, a->u), u2, a->v);
         return finish_point_sample(a, w, a->frame.n, n, out);
     }
@@ -372,7 +399,11 @@ static cdl_luminance area_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n,
     double cos_e = -cdl_vec3_dot(m, w);
     if (!(cos_e > 0.0)) return cdl_nits(0.0); /* the back of the emitter: dark */
     /* The density sample() gives this point, in solid angle. */
-    *pdf = t / cos_e * t / a->area;
+    cdl_spherical_rectangle sr;
+    if (a->shape == CDL_SHAPE_RECT && rect_uses_solid_angle(a, p, &sr))
+        *pdf = 1.0 / sr.S;
+    else
+        *pdf = t / cos_e * t / a->area;
     return cdl_nits(a->L);
 }
 
@@ -457,6 +488,9 @@ static cdl_status build_shape(area_emitter *a, const cdl_shape *s, cdl_error *er
         a->origin = s->origin;
         a->u = s->u;
         a->v = s->v;
+        /* Orthogonal to rounding: |cos(u, v)| below 1e-12. */
+        a->rect_is_rectangle =
+            fabs(cdl_vec3_dot(s->u, s->v)) <= 1e-12 * cdl_vec3_length(s->u) * cdl_vec3_length(s->v);
         a->frame.n = cdl_vec3_normalize(cr);
         return CDL_OK;
     }

@@ -293,6 +293,9 @@ static void test_sampling(void)
     check_sampled_E(rect, cdl_vec3_make(0.3, 0.2, 0), cdl_vec3_make(0, 0, 1), "rect above");
     check_sampled_E(rect, cdl_vec3_make(1.5, 0.2, 2.0), cdl_vec3_normalize(cdl_vec3_make(-1, 0, 0.2)), "rect, plane cuts it");
     check_sampled_E(rect, cdl_vec3_make(0, 0, 2.3), cdl_vec3_make(0, 0, 1), "rect, 0.2 m below");
+    check_sampled_E(rect, cdl_vec3_make(0.4, -0.3, 2.49), cdl_vec3_make(0, 0, 1), "rect, 1 cm below");
+    check_sampled_E(rect, cdl_vec3_make(0.4, -0.3, 2.49), cdl_vec3_normalize(cdl_vec3_make(1, 0, 0.05)), "rect, 1 cm, grazing");
+    check_sampled_E(rect, cdl_vec3_make(-20, 3, -60), cdl_vec3_normalize(cdl_vec3_make(0.3, 0, 1)), "rect, far (area sampling)");
     cdl_emitter *disk = make_area(disk_shape(cdl_vec3_make(0, 0, 2), cdl_vec3_make(0.3, 0, -1), 0.6), L);
     check_sampled_E(disk, cdl_vec3_make(0.5, 0.3, 0), cdl_vec3_make(0, 0, 1), "disk");
     check_sampled_E(disk, cdl_vec3_make(0.9, 0.0, 1.9), cdl_vec3_normalize(cdl_vec3_make(-1, 0.2, 0.3)), "disk, cut");
@@ -321,8 +324,21 @@ static void test_sampling(void)
     CHECK(pdf == 0.0);
     CHECK(cdl_emitter_radiance(rect, cdl_vec3_make(0, 0, 0), cdl_vec3_make(0, 0, 1), cdl_vec3_make(1, 0, 0), &pdf).cd_m2 == 0.0);
     CHECK(cdl_emitter_radiance(rect, cdl_vec3_make(0, 0, 0), cdl_vec3_make(0, 0, 1), cdl_vec3_make(0, 0, 1), &pdf).cd_m2 == L);
-    /* pdf of the centre point: d^2 / (A cos) = 2.5^2 / 2.4. */
+    /* This rect (x in [-1, 1], y in [-0.5, 0.7] at 2.5 m) subtends more
+     * than 1e-3 sr: it is sampled uniformly in solid angle, pdf = 1 / Omega,
+     * Omega the sum over the four corner rectangles of
+     * atan(x y / (h sqrt(x^2 + y^2 + h^2))). */
+    double h = 2.5, omega = 2.0 * atan(0.7 / (h * sqrt(1.0 + 0.49 + h * h))) + 2.0 * atan(0.5 / (h * sqrt(1.0 + 0.25 + h * h)));
+    CHECK_REL(pdf, 1.0 / omega, 1e-12);
+    /* Far away (Omega < 1e-3 sr) it is sampled by area: pdf = d^2 / (A cos). */
+    CHECK(cdl_emitter_radiance(rect, cdl_vec3_make(0, 0, -97.5), cdl_vec3_make(0, 0, 1), cdl_vec3_make(0, 0, 1), &pdf).cd_m2 == L);
+    CHECK_REL(pdf, 100.0 * 100.0 / 2.4, 1e-14);
+    /* A slanted parallelogram is always sampled by area. */
+    cdl_emitter *slanted = make_area(rect_shape(cdl_vec3_make(-1, -0.5, 2.5), cdl_vec3_make(0.5, 1.2, 0), cdl_vec3_make(2, 0, 0)), L);
+    CHECK(cdl_emitter_radiance(slanted, cdl_vec3_make(0.5, 0.3, 0), cdl_vec3_make(0, 0, 1), cdl_vec3_make(0, 0, 1), &pdf).cd_m2 == L);
     CHECK_REL(pdf, 2.5 * 2.5 / 2.4, 1e-14);
+    check_sampled_E(slanted, cdl_vec3_make(0.3, 0.2, 0.5), cdl_vec3_make(0, 0, 1), "parallelogram");
+    cdl_emitter_release(slanted);
     /* Samples behind the receiver are refused. */
     CHECK(!cdl_emitter_sample(rect, cdl_vec3_make(0, 0, 0), cdl_vec3_make(0, 0, -1), 0.5, 0.5, &s));
     CHECK(!cdl_emitter_is_delta(rect) && cdl_emitter_has_exact_illuminance(rect));
