@@ -4,6 +4,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 
 #include "radiometry/frame.h"
 #include "radiometry/rng.h"
@@ -102,6 +103,22 @@ static cdl_vec3 ray_origin(cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double eps)
     return cdl_vec3_madd(p, side * eps, n);
 }
 
+static void record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_near, double t_far)
+{
+    if (log->count == log->capacity) {
+        size_t cap = log->capacity ? 2 * log->capacity : 4096;
+        cdl_ray_record *r = realloc(log->rays, cap * sizeof *r);
+        if (!r) {
+            log->overflow = 1;
+            return;
+        }
+        log->rays = r;
+        log->capacity = cap;
+    }
+    cdl_ray_record rec = {o, dir, t_near, t_far};
+    log->rays[log->count++] = rec;
+}
+
 static int shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
                     cdl_direct_sample_stats *stats)
 {
@@ -117,6 +134,7 @@ static int shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_v
     }
     if (!(t_far > eps)) return 0;
     stats->rays++;
+    if (ctx->log) record_ray(ctx->log, o, dir, eps, t_far);
     return cdl_ray_scene_occluded(ctx->rays, o, dir, eps, t_far);
 }
 

@@ -39,6 +39,18 @@ typedef enum cdl_light_strategy {
 
 const char *cdl_light_strategy_name(cdl_light_strategy strategy);
 
+/* Shadow rays as cast, for benchmarks that replay them (single-threaded use). */
+typedef struct cdl_ray_record {
+    cdl_vec3 origin, dir;
+    double t_near, t_far;
+} cdl_ray_record;
+
+typedef struct cdl_ray_log {
+    cdl_ray_record *rays;
+    size_t count, capacity;
+    int overflow;                     /* 1 if a ray could not be recorded (out of memory) */
+} cdl_ray_log;
+
 /* A light as the direct solver sees it. */
 typedef struct cdl_direct_light {
     const cdl_emitter *emitter;
@@ -69,6 +81,7 @@ typedef struct cdl_direct_context {
     int samples;                      /* per partly hidden extended light (rounded up to a square) */
     int ao_samples;                   /* per point for ambient occlusion (rounded up to a square) */
     uint64_t seed;
+    cdl_ray_log *log;                 /* NULL, or records every shadow ray (one thread only) */
 } cdl_direct_context;
 
 /* Epsilon for rays leaving p: scale-invariant (a fraction of the scene

@@ -52,23 +52,37 @@ static void box_grow(box3 *b, const box3 *o)
     }
 }
 
-/* qsort has no context argument in C11, and the axis must not live in a
- * global: a small merge sort by centroid along `axis`. */
-static void sort_prims(prim *p, size_t n, int axis, prim *tmp)
+/* Reorder p[0..n) so that p[k] has the k-th smallest centroid along `axis`,
+ * smaller ones before it and larger ones after (quickselect, Hoare
+ * partition, median-of-three pivot: deterministic, O(n) on average). */
+static void select_kth(prim *p, size_t n, size_t k, int axis)
 {
-    if (n < 2) return;
-    size_t h = n / 2;
-    sort_prims(p, h, axis, tmp);
-    sort_prims(p + h, n - h, axis, tmp);
-    size_t i = 0, j = h, k = 0;
-    while (i < h && j < n) tmp[k++] = (p[j].centroid[axis] < p[i].centroid[axis]) ? p[j++] : p[i++];
-    while (i < h) tmp[k++] = p[i++];
-    while (j < n) tmp[k++] = p[j++];
-    memcpy(p, tmp, n * sizeof *p);
+    size_t lo = 0, hi = n - 1;
+    while (hi > lo) {
+        size_t mid = lo + (hi - lo) / 2;
+        double a = p[lo].centroid[axis], b = p[mid].centroid[axis], c = p[hi].centroid[axis];
+        double pivot = (a < b) ? ((b < c) ? b : (a < c ? c : a)) : ((a < c) ? a : (b < c ? c : b));
+        size_t i = lo, j = hi;
+        while (i <= j) {
+            while (p[i].centroid[axis] < pivot) ++i;
+            while (p[j].centroid[axis] > pivot) --j;
+            if (i <= j) {
+                prim t = p[i];
+                p[i] = p[j];
+                p[j] = t;
+                ++i;
+                if (j == 0) break;
+                --j;
+            }
+        }
+        if (k <= j) hi = j;
+        else if (k >= i) lo = i;
+        else return;
+    }
 }
 
 /* Recursive median split; returns the node index. */
-static uint32_t build_node(cdl_occluder_index *ix, size_t first, size_t count, prim *tmp)
+static uint32_t build_node(cdl_occluder_index *ix, size_t first, size_t count)
 {
     uint32_t id = (uint32_t)ix->node_count++;
     node *nd = &ix->nodes[id];
@@ -93,11 +107,11 @@ static uint32_t build_node(cdl_occluder_index *ix, size_t first, size_t count, p
             ext = cbox.hi[k] - cbox.lo[k];
             axis = k;
         }
-    sort_prims(ix->prims + first, count, axis, tmp);
     size_t half = count / 2;
+    select_kth(ix->prims + first, count, half, axis);
     nd->count = 0;
-    build_node(ix, first, half, tmp);                   /* left child is id + 1 */
-    uint32_t right = build_node(ix, first + half, count - half, tmp);
+    build_node(ix, first, half);                        /* left child is id + 1 */
+    uint32_t right = build_node(ix, first + half, count - half);
     ix->nodes[id].first = right;
     return id;
 }
@@ -114,9 +128,7 @@ cdl_status cdl_occluder_index_build(const cdl_occluder_input *in, cdl_occluder_i
     ix->spheres = malloc((in->sphere_count ? in->sphere_count : 1) * 4 * sizeof(double));
     ix->prims = malloc((ix->prim_count ? ix->prim_count : 1) * sizeof(prim));
     ix->nodes = malloc((2 * ix->prim_count + 1) * sizeof(node));
-    prim *tmp = malloc((ix->prim_count ? ix->prim_count : 1) * sizeof(prim));
-    if (!ix->vertices || !ix->spheres || !ix->prims || !ix->nodes || !tmp) {
-        free(tmp);
+    if (!ix->vertices || !ix->spheres || !ix->prims || !ix->nodes) {
         cdl_occluder_index_release(ix);
         return cdl_error_out_of_memory(err);
     }
@@ -149,8 +161,7 @@ cdl_status cdl_occluder_index_build(const cdl_occluder_input *in, cdl_occluder_i
         p->index = (uint32_t)(in->triangle_count + s);
         p->owner = in->sphere_owner ? in->sphere_owner[s] : 0;
     }
-    if (ix->prim_count) build_node(ix, 0, ix->prim_count, tmp);
-    free(tmp);
+    if (ix->prim_count) build_node(ix, 0, ix->prim_count);
     *out = ix;
     return CDL_OK;
 }

@@ -319,6 +319,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     if (out->settings.ao_samples <= 0) out->settings.ao_samples = as;
     int threads = opts.threads >= 0 ? opts.threads : scene->settings.threads;
     if (threads <= 0) threads = cpu_count();
+    if (opts.ray_log) threads = 1;
     out->threads_used = threads;
 
     cdl_scene_geometry *geometry = NULL;
@@ -351,6 +352,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     ctx.samples = out->settings.direct_samples;
     ctx.ao_samples = out->settings.ao_samples;
     ctx.seed = scene->settings.seed;
+    ctx.log = opts.ray_log;
 
     cJSON *direct = cJSON_AddArrayToObject(plan, "direct");
     for (size_t l = 0; l < lights.count; ++l) {
@@ -397,7 +399,9 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         job.want_ao = spec->want_ao;
         atomic_init(&job.next, 0);
         job.chunk = 16;
+        double tc = now_seconds();
         st = run_grid(&job, threads, &total, err);
+        out->compute_seconds += now_seconds() - tc;
         if (st != CDL_OK) goto fail;
         if (opts.progress) opts.progress(opts.progress_user, spec->name, gs->grid.count, gs->grid.count);
     }

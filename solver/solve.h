@@ -21,12 +21,15 @@
 
 typedef void (*cdl_solve_progress_fn)(void *user, const char *stage, size_t done, size_t total);
 
+struct cdl_ray_log;
+
 typedef struct cdl_solve_options {
     int threads;                      /* < 0: as the scene says (0 there = all cores) */
     cdl_solve_progress_fn progress;   /* may be NULL; called from the calling thread */
     void *progress_user;
+    struct cdl_ray_log *ray_log;      /* benchmarks: record every shadow ray (forces one thread) */
 } cdl_solve_options;
-#define CDL_SOLVE_OPTIONS_DEFAULT {-1, NULL, NULL}
+#define CDL_SOLVE_OPTIONS_DEFAULT {-1, NULL, NULL, NULL}
 
 typedef struct cdl_grid_solution {
     cdl_grid grid;
@@ -41,7 +44,8 @@ typedef struct cdl_solution {
     cdl_grid_solution *grids;         /* scene->grid_count */
     size_t grid_count;
     char *plan_json;                  /* the "plan" object, JSON text */
-    double seconds;
+    double seconds;                   /* the whole solve */
+    double compute_seconds;           /* the grids' points only (setup excluded) */
     uint64_t rays;
 } cdl_solution;
 
