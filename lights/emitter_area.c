@@ -17,8 +17,14 @@
  * are occluders like any other surface).
  *
  * Sampling (pdf exact, with respect to solid angle at p):
- *  - triangles: a triangle with probability proportional to its area, a
- *    uniform point on it; pdf = d^2 / (A cos theta_e);
+ *  - triangles, meshes of up to SOLID_ANGLE_MAX_TRIANGLES: a triangle facing
+ *    p with probability Omega_i / Omega (its share of the solid angle of the
+ *    facing triangles), then a direction uniform in its solid angle (Arvo's
+ *    map, spherical_triangle.h): pdf = 1 / Omega; a triangle under
+ *    TRIANGLE_SOLID_ANGLE_MIN gets a uniform point instead:
+ *    pdf = (Omega_i / Omega) d^2 / (A_i cos theta_e);
+ *  - larger meshes: a triangle with probability proportional to its area,
+ *    a uniform point on it; pdf = d^2 / (A cos theta_e);
  *  - rect with orthogonal sides, subtending at least RECT_SOLID_ANGLE_MIN:
  *    uniform in solid angle (spherical_rectangle.h), pdf = 1 / Omega, so
  *    near a large panel the variance stays that of the cosine alone;
@@ -39,6 +45,7 @@
 #include "lights/emitter_internal.h"
 #include "lights/projected_solid_angle.h"
 #include "lights/spherical_rectangle.h"
+#include "lights/spherical_triangle.h"
 #include "radiometry/constants.h"
 #include "radiometry/conversions.h"
 #include "radiometry/frame.h"
@@ -164,6 +171,92 @@ static int area_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_illumina
 
 /* ---- sampling --------------------------------------------------------------- */
 
+/* Fills `out` for a sampled point at w = x - p on a surface of unit normal m
+ * chosen with area density p_A. pdf in solid angle:
+ * p_w = p_A d^2 / cos(theta_e) (change of measure dA = d^2 dw / cos theta_e). */
+static int finish_point_sample(const area_emitter *a, cdl_vec3 w, cdl_vec3 m, double p_A, cdl_vec3 n,
+                               cdl_light_sample *out)
+{
+    double d = cdl_vec3_length(w);
+    if (!(d > 0.0)) return 0;
+    cdl_vec3 dir = cdl_vec3_scale(w, 1.0 / d);
+    double cos_e = -cdl_vec3_dot(m, dir);
+    if (!(cos_e > 0.0) || !(cdl_vec3_dot(n, dir) > 0.0)) return 0;
+    out->to_light = dir;
+    out->distance = d;
+    out->L = cdl_nits(a->L);
+    out->pdf = d / cos_e * d * p_A;
+    return out->L.cd_m2 > 0.0 && isfinite(out->pdf);
+}
+
+/* Meshes of at most this many triangles are sampled by solid angle (the
+ * triangles' solid angles are computed for every sample: O(triangles)). */
+#define SOLID_ANGLE_MAX_TRIANGLES 64
+/* Triangles under this solid angle get area sampling within their share
+ * (Arvo's map loses relative precision for tiny spherical triangles). */
+#define TRIANGLE_SOLID_ANGLE_MIN 1e-3
+
+/* Solid angle of each triangle facing p (0 for the others); returns the sum. */
+static double facing_solid_angles(const area_emitter *a, cdl_vec3 p, double *omega)
+{
+    double total = 0.0;
+    for (size_t i = 0; i < a->tri_count; ++i) {
+        const area_triangle *t = &a->tris[i];
+        cdl_vec3 r0 = cdl_vec3_sub(t->v0, p);
+        omega[i] = cdl_vec3_dot(t->normal, r0) < 0.0
+                       ? cdl_triangle_solid_angle(r0, cdl_vec3_add(r0, t->e1), cdl_vec3_add(r0, t->e2))
+                       : 0.0;
+        total += omega[i];
+    }
+    return total;
+}
+
+/* The solid-angle sampler's density at a point of triangle i seen at
+ * distance d with emission cosine cos_e (the mixture described on top). */
+static double triangle_solid_angle_pdf(const area_triangle *t, double omega_i, double total, double d, double cos_e)
+{
+    if (omega_i >= TRIANGLE_SOLID_ANGLE_MIN) return 1.0 / total;
+    return omega_i / total * (d / cos_e * d / t->area);
+}
+
+static int sample_triangles_by_solid_angle(const area_emitter *a, cdl_vec3 p, cdl_vec3 n, double u1, double u2,
+                                           cdl_light_sample *out)
+{
+    double omega[SOLID_ANGLE_MAX_TRIANGLES];
+    double total = facing_solid_angles(a, p, omega);
+    if (!(total > 0.0)) return 0;
+    /* Triangle i with probability omega_i / total; u1 rescaled within its share. */
+    double target = u1 * total, start = 0.0;
+    size_t i = 0, last = 0;
+    for (; i < a->tri_count; ++i) {
+        if (!(omega[i] > 0.0)) continue;
+        last = i;
+        if (start + omega[i] > target) break;
+        start += omega[i];
+    }
+    if (i == a->tri_count) i = last;
+    double ur = fmin(1.0, fmax(0.0, (target - start) / omega[i]));
+    const area_triangle *t = &a->tris[i];
+    cdl_vec3 r0 = cdl_vec3_sub(t->v0, p);
+    cdl_vec3 w;
+    if (omega[i] >= TRIANGLE_SOLID_ANGLE_MIN) {
+        cdl_spherical_triangle st;
+        cdl_spherical_triangle_init(&st, r0, cdl_vec3_add(r0, t->e1), cdl_vec3_add(r0, t->e2));
+        cdl_vec3 dir = cdl_spherical_triangle_sample(&st, ur, u2);
+        /* Along dir to the triangle's plane. */
+        double den = cdl_vec3_dot(t->normal, dir);
+        if (!(den < 0.0)) return 0;
+        w = cdl_vec3_scale(dir, cdl_vec3_dot(t->normal, r0) / den);
+    } else {
+        double b0, b1;
+        cdl_sample_uniform_triangle(ur, u2, &b0, &b1);
+        w = cdl_vec3_madd(cdl_vec3_madd(r0, b1, t->e1), 1.0 - b0 - b1, t->e2);
+    }
+    if (!finish_point_sample(a, w, t->normal, 1.0 / t->area, n, out)) return 0;
+    out->pdf = triangle_solid_angle_pdf(t, omega[i], total, out->distance, -cdl_vec3_dot(t->normal, out->to_light));
+    return isfinite(out->pdf) && out->pdf > 0.0;
+}
+
 /* Below this solid angle a rect is sampled by area: it is then far enough
  * for area sampling to be nearly uniform in solid angle too, and the angle
  * excess that gives Omega (~1e-15 sr absolute) would lose relative digits. */
@@ -177,22 +270,6 @@ static int rect_uses_solid_angle(const area_emitter *a, cdl_vec3 p, cdl_spherica
     return cdl_spherical_rectangle_init(sr, p, a->origin, a->u, a->v) >= RECT_SOLID_ANGLE_MIN;
 }
 
-/* Fills `out` for a sampled point at w = x - p on a surface of unit normal m
- * chosen with area density 1/area_total. pdf in solid angle:
- * p_w = p_A d^2 / cos(theta_e) (change of measure dA = d^2 dw / cos theta_e). */
-static int finish_point_sample(const area_emitter *a, cdl_vec3 w, cdl_vec3 m, cdl_vec3 n, cdl_light_sample *out)
-{
-    double d = cdl_vec3_length(w);
-    if (!(d > 0.0)) return 0;
-    cdl_vec3 dir = cdl_vec3_scale(w, 1.0 / d);
-    double cos_e = -cdl_vec3_dot(m, dir);
-    if (!(cos_e > 0.0) || !(cdl_vec3_dot(n, dir) > 0.0)) return 0;
-    out->to_light = dir;
-    out->distance = d;
-    out->L = cdl_nits(a->L);
-    out->pdf = d / cos_e * d / a->area;
-    return out->L.cd_m2 > 0.0 && isfinite(out->pdf);
-}
 
 /* Shirley and Chiu's concentric map of the square onto the unit disk
  * ("A low distortion map between disk and square", JGT 2(3), 1997). */
@@ -281,6 +358,7 @@ static int area_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1, 
     const area_emitter *a = as_area(e);
     switch (a->shape) {
     case CDL_SHAPE_TRIANGLES: {
+        if (a->tri_count <= SOLID_ANGLE_MAX_TRIANGLES) return sample_triangles_by_solid_angle(a, p, n, u1, u2, out);
         /* A triangle by area; u1 rescaled within its share keeps (u1, u2) stratified. */
         double ur;
         const area_triangle *t = &a->tris[cdl_distribution_invert_cdf(a->cdf, a->tri_count, u1, &ur)];
@@ -289,26 +367,26 @@ static int area_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1, 
         double b2 = 1.0 - b0 - b1;
         /* x - p = (v0 - p) + b1 e1 + b2 e2 */
         cdl_vec3 w = cdl_vec3_madd(cdl_vec3_madd(cdl_vec3_sub(t->v0, p), b1, t->e1), b2, t->e2);
-        return finish_point_sample(a, w, t->normal, n, out);
+        return finish_point_sample(a, w, t->normal, 1.0 / a->area, n, out);
     }
     case CDL_SHAPE_RECT: {
         if (!(cdl_vec3_dot(a->frame.n, cdl_vec3_sub(p, a->origin)) > 0.0)) return 0; /* behind: dark */
         cdl_spherical_rectangle sr;
         if (rect_uses_solid_angle(a, p, &sr)) {
             cdl_vec3 w = cdl_spherical_rectangle_sample(&sr, u1, u2);
-            if (!finish_point_sample(a, w, a->frame.n, n, out)) return 0;
+            if (!finish_point_sample(a, w, a->frame.n, 1.0 / a->area, n, out)) return 0;
             out->pdf = 1.0 / sr.S;
             return 1;
         }
         cdl_vec3 w = cdl_vec3_madd(cdl_vec3_madd(cdl_vec3_sub(a->origin, p), u1, a->u), u2, a->v);
-        return finish_point_sample(a, w, a->frame.n, n, out);
+        return finish_point_sample(a, w, a->frame.n, 1.0 / a->area, n, out);
     }
     case CDL_SHAPE_DISK: {
         double x, y;
         concentric_disk(u1, u2, &x, &y);
         cdl_vec3 w = cdl_vec3_madd(cdl_vec3_madd(cdl_vec3_sub(a->center, p), a->radius * x, a->frame.s),
                                    a->radius * y, a->frame.t);
-        return finish_point_sample(a, w, a->frame.n, n, out);
+        return finish_point_sample(a, w, a->frame.n, 1.0 / a->area, n, out);
     }
     case CDL_SHAPE_SPHERE:
         return sample_sphere(a, p, n, u1, u2, out);
@@ -351,6 +429,7 @@ static cdl_luminance area_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n,
     const area_emitter *a = as_area(e);
     double t = -1.0;
     cdl_vec3 m = a->frame.n;
+    size_t hit = 0;
     switch (a->shape) {
     case CDL_SHAPE_TRIANGLES:
         /* The nearest triangle along the ray is the point seen. */
@@ -358,6 +437,7 @@ static cdl_luminance area_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n,
             double ti = ray_triangle(&a->tris[i], p, w);
             if (ti > 0.0 && (t < 0.0 || ti < t)) {
                 t = ti;
+                hit = i;
                 m = a->tris[i].normal;
             }
         }
@@ -400,10 +480,15 @@ static cdl_luminance area_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n,
     if (!(cos_e > 0.0)) return cdl_nits(0.0); /* the back of the emitter: dark */
     /* The density sample() gives this point, in solid angle. */
     cdl_spherical_rectangle sr;
-    if (a->shape == CDL_SHAPE_RECT && rect_uses_solid_angle(a, p, &sr))
+    if (a->shape == CDL_SHAPE_TRIANGLES && a->tri_count <= SOLID_ANGLE_MAX_TRIANGLES) {
+        double omega[SOLID_ANGLE_MAX_TRIANGLES];
+        double total = facing_solid_angles(a, p, omega);
+        *pdf = total > 0.0 ? triangle_solid_angle_pdf(&a->tris[hit], omega[hit], total, t, cos_e) : 0.0;
+    } else if (a->shape == CDL_SHAPE_RECT && rect_uses_solid_angle(a, p, &sr)) {
         *pdf = 1.0 / sr.S;
-    else
+    } else {
         *pdf = t / cos_e * t / a->area;
+    }
     return cdl_nits(a->L);
 }
 

@@ -305,6 +305,40 @@ static void test_sampling(void)
     cdl_emitter *octa = make_area(triangles_shape(octa_v, 6, octa_t, 8), L);
     check_sampled_E(octa, cdl_vec3_make(0.3, -0.2, 2.0), cdl_vec3_make(0, 0, 1), "octahedron");
     check_sampled_E(octa, cdl_vec3_make(2.0, 0.5, 5.2), cdl_vec3_normalize(cdl_vec3_make(-1, 0, 0.9)), "octahedron, cut");
+    /* From 40 m every face subtends < 1e-3 sr: faces chosen by solid angle,
+     * points by area within them. */
+    check_sampled_E(octa, cdl_vec3_make(30.0, -20.0, -15.0), cdl_vec3_normalize(cdl_vec3_make(-1, 0.5, 1)), "octahedron, far");
+    /* A unit square as two triangles, 1 cm below: solid-angle sampling keeps
+     * the standard error under 2% with these samples (area sampling's
+     * relative spread per sample would be ~50 here, i.e. ~20%). */
+    cdl_emitter *sq = make_area(triangles_shape(square_v, 4, square_t, 2), L);
+    check_sampled_E(sq, cdl_vec3_make(0.4, 0.3, 1.99), cdl_vec3_make(0, 0, 1), "square mesh, 1 cm below");
+    cdl_emitter_release(sq);
+    /* The same square as a 10 x 10 grid of 200 triangles (above the
+     * solid-angle limit of 64: area sampling) gives the same exact E as the
+     * two-triangle mesh, and its samples reproduce it. */
+    double gv[121 * 3];
+    uint32_t gt[200 * 3];
+    for (int j = 0; j <= 10; ++j)
+        for (int i = 0; i <= 10; ++i) {
+            gv[3 * (j * 11 + i)] = i / 10.0;
+            gv[3 * (j * 11 + i) + 1] = j / 10.0;
+            gv[3 * (j * 11 + i) + 2] = 2.0;
+        }
+    for (int j = 0, k = 0; j < 10; ++j)
+        for (int i = 0; i < 10; ++i) {
+            uint32_t v00 = (uint32_t)(j * 11 + i), v10 = v00 + 1, v01 = v00 + 11, v11 = v01 + 1;
+            /* Counter-clockwise seen from below (emitting down): (v00, v01, v11), (v00, v11, v10). */
+            uint32_t tri[6] = {v00, v01, v11, v00, v11, v10};
+            for (int q = 0; q < 6; ++q) gt[k++] = tri[q];
+        }
+    cdl_emitter *grid = make_area(triangles_shape(gv, 121, gt, 200), L);
+    sq = make_area(triangles_shape(square_v, 4, square_t, 2), L);
+    CHECK_REL(exact_E(grid, cdl_vec3_make(0.3, 0.6, 0.5), cdl_vec3_make(0, 0, 1)),
+              exact_E(sq, cdl_vec3_make(0.3, 0.6, 0.5), cdl_vec3_make(0, 0, 1)), 1e-12);
+    check_sampled_E(grid, cdl_vec3_make(0.3, 0.6, 0.5), cdl_vec3_make(0, 0, 1), "200-triangle grid");
+    cdl_emitter_release(grid);
+    cdl_emitter_release(sq);
 
     /* Inside an inward sphere the cosine-weighted sampler is exact: every
      * sample gives L cos / (cos / pi) = pi L. */
