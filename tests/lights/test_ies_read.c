@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "photometry_checks.h"
 #include "lights/photometry.h"
 #include "radiometry/constants.h"
 
@@ -16,28 +17,12 @@ static cdl_photometry *read_fixture(const char *name, int strict, cdl_error *err
 {
     char path[1024];
     snprintf(path, sizeof path, "%s%s", FIXTURES, name);
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
-    o.strict = strict;
-    cdl_photometry *p = NULL;
-    cdl_error_clear(err);
-    cdl_photometry_read_file(path, &o, &p, err);
-    return p;
+    return pc_read_file(path, strict, err);
 }
 
 static cdl_photometry *read_text(const char *text, cdl_error *err)
 {
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
-    cdl_photometry *p = NULL;
-    cdl_error_clear(err);
-    cdl_photometry_read_memory(text, strlen(text), "mem.ies", &o, &p, err);
-    return p;
-}
-
-static int has_warning(const cdl_photometry *p, const char *needle)
-{
-    for (size_t i = 0; i < cdl_photometry_warning_count(p); ++i)
-        if (strstr(cdl_photometry_warning(p, i), needle)) return 1;
-    return 0;
+    return pc_read_text("mem.ies", text, strlen(text), 0, err);
 }
 
 static double I(const cdl_photometry *p, double c, double g) { return cdl_photometry_intensity_c_gamma(p, c, g).cd; }
@@ -199,7 +184,7 @@ static int version_of(const char *tag, int *warned)
     cdl_photometry *p = read_text(text, &err);
     if (!p) return -1;
     int v = cdl_photometry_get_metadata(p)->ies_version;
-    *warned = has_warning(p, "non-standard version tag");
+    *warned = pc_has_warning(p, "non-standard version tag");
     cdl_photometry_release(p);
     return v;
 }
@@ -311,7 +296,7 @@ static void test_horizontal_ranges(void)
         CHECK(t.symmetry == CDL_PHOTOMETRY_SYMMETRY_NONE && t.horizontal_count == 4);
         CHECK_REL(I(p, 270.0, 30.0), 110.0, 0.0);
         CHECK_REL(I(p, 90.0, 30.0), 130.0, 0.0);
-        CHECK(has_warning(p, "H = 0 and H = 360 rows differ")); /* rows 100 and 140 */
+        CHECK(pc_has_warning(p, "H = 0 and H = 360 rows differ")); /* rows 100 and 140 */
         cdl_photometry_release(p);
     }
     /* 0..270 step 90 (no closing row): wraps 270 -> 360 = 0 without a warning */
@@ -324,7 +309,7 @@ static void test_horizontal_ranges(void)
     /* an irregular range leaves a gap: read, with a warning */
     p = horizontal("0 45 100", 3, &err);
     if (p) {
-        CHECK(has_warning(p, "interpolated across"));
+        CHECK(pc_has_warning(p, "interpolated across"));
         cdl_photometry_release(p);
     }
     /* out of range */
@@ -472,24 +457,24 @@ static void test_warnings_and_strict(void)
 {
     cdl_error err;
     cdl_photometry *p = read_fixture("warn_seam.ies", 0, &err);
-    CHECK(p && has_warning(p, "H = 0 and H = 360 rows differ"));
+    CHECK(p && pc_has_warning(p, "H = 0 and H = 360 rows differ"));
     if (p) CHECK_REL(I(p, 0.0, 0.0), 100.0, 0.0); /* the H = 0 row wins */
     cdl_photometry_release(p);
     p = read_fixture("warn_seam.ies", 1, &err);
     CHECK(!p && strstr(err.message, "H = 0 and H = 360") && strstr(err.message, "--strict"));
     p = read_fixture("warn_output_ratio.ies", 0, &err);
-    CHECK(p && has_warning(p, "output ratio above 1"));
+    CHECK(p && pc_has_warning(p, "output ratio above 1"));
     cdl_photometry_release(p);
     p = read_fixture("warn_output_ratio.ies", 1, &err);
     CHECK(!p && strstr(err.message, "output ratio above 1"));
     /* text after the table: read, with a warning */
     p = read_text("IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 2 1 1 2 0 0 0\n1 1 10\n0 90\n0\n10 5 ; end of data\n", &err);
-    CHECK(p && has_warning(p, "after the candela table"));
+    CHECK(p && pc_has_warning(p, "after the candela table"));
     cdl_photometry_release(p);
     /* a stated luminaire flux far from the table */
     p = read_text("IESNA:LM-63-2002\n[_ABSOLUTELUMENS] 5000\nTILT=NONE\n1 -1 1 2 1 1 2 0 0 0\n1 1 10\n0 90\n0\n10 5\n",
                   &err);
-    CHECK(p && has_warning(p, "far from the luminaire flux"));
+    CHECK(p && pc_has_warning(p, "far from the luminaire flux"));
     cdl_photometry_release(p);
 }
 

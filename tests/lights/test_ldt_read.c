@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "photometry_checks.h"
 #include "lights/photometry.h"
 #include "radiometry/constants.h"
 
@@ -65,18 +66,7 @@ static char *make_ldt(const ldt_spec *s, shape_fn f)
 
 static cdl_photometry *read_text(const char *text, cdl_error *err)
 {
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
-    cdl_photometry *p = NULL;
-    cdl_error_clear(err);
-    cdl_photometry_read_memory(text, strlen(text), "mem.ldt", &o, &p, err);
-    return p;
-}
-
-static int has_warning(const cdl_photometry *p, const char *needle)
-{
-    for (size_t i = 0; i < cdl_photometry_warning_count(p); ++i)
-        if (strstr(cdl_photometry_warning(p, i), needle)) return 1;
-    return 0;
+    return pc_read_text("mem.ldt", text, strlen(text), 0, err);
 }
 
 static const double g19[19] = {0, 10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120, 130, 140, 150, 160, 170, 180};
@@ -225,8 +215,8 @@ static void test_irregular_and_partial(void)
         cdl_photometry_table t;
         cdl_photometry_get_table(p, &t);
         CHECK(t.symmetry == CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL);
-        CHECK(has_warning(p, "single C-plane"));
-        CHECK(has_warning(p, "3 values after the intensity table"));
+        CHECK(pc_has_warning(p, "single C-plane"));
+        CHECK(pc_has_warning(p, "3 values after the intensity table"));
         cdl_photometry_release(p);
     }
     free(text);
@@ -268,7 +258,7 @@ static void test_fixtures(void)
     /* the stated LORL disagrees: a warning, an error with --strict */
     CHECK_OK(cdl_photometry_read_file(FIXTURES "warn_lorl.ldt", &o, &p, &err), &err);
     if (p) {
-        CHECK(has_warning(p, "stated light output ratio LORL 50 %"));
+        CHECK(pc_has_warning(p, "stated light output ratio LORL 50 %"));
         cdl_photometry_release(p);
     }
     o.strict = 1;

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# `candela info`: usage errors, the text summary, broken files (exit 1 with
+# FILE:LINE: expected ..., found ...), warnings and --strict.
+set -u
+: "${CANDELA:?}" "${CANDELA_SOURCE_DIR:?}"
+fix="$CANDELA_SOURCE_DIR/tests/data/photometric"
+fail=0
+check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
+
+err=$("$CANDELA" info 2>&1 >/dev/null); st=$?
+check "no argument is a usage error" '[ $st -eq 2 ] && [[ "$err" == *"expected one luminaire file"* ]]'
+"$CANDELA" info a.ies b.ies >/dev/null 2>&1; st=$?
+check "two files is a usage error" '[ $st -eq 2 ]'
+"$CANDELA" info --frobnicate "$fix/iso_1000cd.ies" >/dev/null 2>&1; st=$?
+check "an unknown option is a usage error" '[ $st -eq 2 ]'
+out=$("$CANDELA" info --help); st=$?
+check "--help" '[ $st -eq 0 ] && [[ "$out" == "usage: candela info"* ]] && [[ "$out" == *"--json"* ]]'
+
+out=$("$CANDELA" info "$fix/iso_1000cd.ies"); st=$?
+check "isotropic fixture reads" '[ $st -eq 0 ]'
+check "4000 pi lm" '[[ "$out" == *"12566.4 lm (integrated)"* ]]'
+check "symmetry and format" '[[ "$out" == *"symmetry rotational"* ]] && [[ "$out" == *"IES LM-63-2002"* ]]'
+check "absolute photometry named" '[[ "$out" == *"absolute photometry"* ]]'
+
+out=$("$CANDELA" info "$fix/ies_tilt_file.ies"); st=$?
+check "tilt file summary" '[ $st -eq 0 ] && [[ "$out" == *"4 angles, geometry 3"* ]] && [[ "$out" == *"LOR             90.4 %"* ]]'
+
+out=$("$CANDELA" info "$fix/ldt_comma_blank_crlf.ldt"); st=$?
+check "EULUMDAT summary" '[ $st -eq 0 ] && [[ "$out" == *"EULUMDAT (Isym 4"* ]] && [[ "$out" == *"warnings        none"* ]]'
+
+err=$("$CANDELA" info "$fix/no_such_file.ies" 2>&1 >/dev/null); st=$?
+check "a missing file is bad input" '[ $st -eq 1 ] && [[ "$err" == *"no_such_file.ies: cannot open"* ]]'
+
+for f in bad_truncated.ies bad_not_a_number.ies bad_count_mismatch.ies bad_angles_decreasing.ies bad_nan.ies \
+         bad_infinite.ies bad_negative_candela.ies bad_type_4.ies bad_no_tilt.ies bad_vertical_range.ies \
+         bad_truncated.ldt bad_isym.ldt bad_negative.ldt bad_shifted.ldt; do
+  out=$("$CANDELA" info "$fix/$f" 2>/tmp/candela_info_err.$$); st=$?
+  err=$(cat /tmp/candela_info_err.$$)
+  check "$f: exit 1" '[ $st -eq 1 ]'
+  check "$f: nothing on stdout" '[ -z "$out" ]'
+  check "$f: FILE:LINE: expected ..., found ..." '[[ "$err" =~ $f:[0-9]+:\ expected.*found ]]'
+done
+rm -f /tmp/candela_info_err.$$
+
+out=$("$CANDELA" info "$fix/warn_seam.ies" 2>&1); st=$?
+check "a warning does not fail" '[ $st -eq 0 ] && [[ "$out" == *"H = 0 and H = 360 rows differ"* ]]'
+err=$("$CANDELA" info --strict "$fix/warn_seam.ies" 2>&1 >/dev/null); st=$?
+check "--strict makes it an error" '[ $st -eq 1 ] && [[ "$err" == *"an error with --strict"* ]]'
+"$CANDELA" info --strict "$fix/warn_lorl.ldt" >/dev/null 2>&1; st=$?
+check "--strict: stated LORL disagrees" '[ $st -eq 1 ]'
+"$CANDELA" info --strict "$fix/warn_output_ratio.ies" >/dev/null 2>&1; st=$?
+check "--strict: output ratio above 1" '[ $st -eq 1 ]'
+"$CANDELA" info --strict "$fix/iso_1000cd.ies" >/dev/null 2>&1; st=$?
+check "--strict passes a clean file" '[ $st -eq 0 ]'
+out=$("$CANDELA" info --json --strict "$fix/warn_seam.ies" 2>/dev/null); st=$?
+check "--json with --strict on a warning: exit 1, no JSON" '[ $st -eq 1 ] && [ -z "$out" ]'
+exit $fail
