@@ -226,10 +226,13 @@ typedef struct cdl_light_sample {
  * shadowing, exactly cdl_emitter_exact_illuminance: area samples are points
  * on the emitter chosen whether or not another part of the same emitter
  * hides them, so a shadow ray to each sample gives the shadowed E.
- * Samplers: area emitters by area (pdf = d^2 / (A cos theta_e)), spheres
- * uniform in their cone (outside) or cos-weighted about n (inside an
- * inward sphere); uniform sky cos-weighted about n; image sky by pixel
- * luminance x solid angle (see the kinds' files). */
+ * Samplers (emitter_area.c, emitter_environment.c): rects uniform in
+ * solid angle when they subtend >= 1e-3 sr, else by area; meshes of up to
+ * 64 triangles by solid angle (facing triangles only), larger ones by
+ * area; disks cos-weighted about n when they fill half the receiver's
+ * cosine-weighted hemisphere, else by area; spheres uniform in their cone
+ * (outside) or cos-weighted about n (inside an inward sphere); uniform sky
+ * cos-weighted about n; image sky by pixel luminance x solid angle. */
 int cdl_emitter_sample(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, double u1, double u2,
                        cdl_light_sample *out);
 

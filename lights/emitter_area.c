@@ -29,8 +29,13 @@
  *    uniform in solid angle (spherical_rectangle.h), pdf = 1 / Omega, so
  *    near a large panel the variance stays that of the cosine alone;
  *    otherwise (far, or a slanted parallelogram) a uniform point (s, t) =
- *    (u1, u2); disk: a uniform point by the concentric map
- *    (stratification-preserving); pdf = d^2 / (A cos theta_e);
+ *    (u1, u2); pdf = d^2 / (A cos theta_e);
+ *  - disk filling at least DISK_COSINE_FRACTION of the receiver's
+ *    cosine-weighted hemisphere (Omega_p / pi, from the closed form): a
+ *    cosine-weighted direction about n, pdf = cos / pi (directions that miss
+ *    the disk carry no light; the relative spread is sqrt((1 - f) / f) <= 1,
+ *    and vanishes right under the disk); otherwise a uniform point by the
+ *    concentric map (stratification-preserving), pdf = d^2 / (A cos theta_e);
  *  - sphere seen from outside: a uniform direction in the cone it
  *    subtends, pdf = 1 / (2 pi (1 - cos sigma)), sin sigma = R/d;
  *  - inside an inward sphere: cosine-weighted about n, pdf = cos / pi.
@@ -169,6 +174,36 @@ static int area_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_illumina
     return 1;
 }
 
+/* ---- ray queries ------------------------------------------------------------ */
+
+/* Ray p + t w (t > 0) against the triangle: Moller and Trumbore, "Fast,
+ * minimum storage ray-triangle intersection", JGT 2(1), 1997. */
+static double ray_triangle(const area_triangle *t, cdl_vec3 p, cdl_vec3 w)
+{
+    cdl_vec3 pv = cdl_vec3_cross(w, t->e2);
+    double det = cdl_vec3_dot(t->e1, pv);
+    if (det == 0.0) return -1.0;
+    cdl_vec3 s = cdl_vec3_sub(p, t->v0);
+    double b1 = cdl_vec3_dot(s, pv) / det;
+    if (b1 < 0.0 || b1 > 1.0) return -1.0;
+    cdl_vec3 qv = cdl_vec3_cross(s, t->e1);
+    double b2 = cdl_vec3_dot(w, qv) / det;
+    if (b2 < 0.0 || b1 + b2 > 1.0) return -1.0;
+    double dist = cdl_vec3_dot(t->e2, qv) / det;
+    return dist > 0.0 ? dist : -1.0;
+}
+
+/* Ray against the plane of a rect or disk: distance and in-plane offset from `base`. */
+static double ray_plane(const area_emitter *a, cdl_vec3 base, cdl_vec3 p, cdl_vec3 w, cdl_vec3 *offset)
+{
+    double denom = cdl_vec3_dot(a->frame.n, w);
+    if (denom == 0.0) return -1.0;
+    double t = cdl_vec3_dot(a->frame.n, cdl_vec3_sub(base, p)) / denom;
+    if (!(t > 0.0)) return -1.0;
+    *offset = cdl_vec3_sub(cdl_vec3_madd(p, t, w), base);
+    return t;
+}
+
 /* ---- sampling --------------------------------------------------------------- */
 
 /* Fills `out` for a sampled point at w = x - p on a surface of unit normal m
@@ -261,6 +296,16 @@ static int sample_triangles_by_solid_angle(const area_emitter *a, cdl_vec3 p, cd
  * for area sampling to be nearly uniform in solid angle too, and the angle
  * excess that gives Omega (~1e-15 sr absolute) would lose relative digits. */
 #define RECT_SOLID_ANGLE_MIN 1e-3
+
+/* A disk filling at least this fraction of the receiver's cosine-weighted
+ * hemisphere is sampled cos-weighted about n. */
+#define DISK_COSINE_FRACTION 0.5
+
+static int disk_uses_cosine(const area_emitter *a, cdl_vec3 p, cdl_vec3 n)
+{
+    double omega = cdl_projected_solid_angle_disk(cdl_vec3_sub(a->center, p), a->frame.n, a->radius, n);
+    return omega >= DISK_COSINE_FRACTION * CDL_PI;
+}
 
 /* Whether p samples the rect by solid angle (the same decision, from the
  * same arithmetic, in sample and radiance, so their pdfs agree). */
@@ -382,6 +427,16 @@ static int area_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1, 
         return finish_point_sample(a, w, a->frame.n, 1.0 / a->area, n, out);
     }
     case CDL_SHAPE_DISK: {
+        if (disk_uses_cosine(a, p, n)) {
+            cdl_frame f = cdl_frame_from_normal(n);
+            cdl_vec3 dir = cdl_frame_to_world(&f, cdl_sample_cosine_hemisphere(u1, u2));
+            cdl_vec3 off;
+            double t = ray_plane(a, a->center, p, dir, &off);
+            if (!(t > 0.0) || cdl_vec3_length(off) > a->radius) return 0; /* missed the disk */
+            if (!finish_point_sample(a, cdl_vec3_scale(dir, t), a->frame.n, 1.0 / a->area, n, out)) return 0;
+            out->pdf = cdl_vec3_dot(n, out->to_light) * CDL_INV_PI;
+            return out->pdf > 0.0;
+        }
         double x, y;
         concentric_disk(u1, u2, &x, &y);
         cdl_vec3 w = cdl_vec3_madd(cdl_vec3_madd(cdl_vec3_sub(a->center, p), a->radius * x, a->frame.s),
@@ -395,34 +450,6 @@ static int area_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1, 
 }
 
 /* ---- radiance along a ray ------------------------------------------------------ */
-
-/* Ray p + t w (t > 0) against the triangle: Moller and Trumbore, "Fast,
- * minimum storage ray-triangle intersection", JGT 2(1), 1997. */
-static double ray_triangle(const area_triangle *t, cdl_vec3 p, cdl_vec3 w)
-{
-    cdl_vec3 pv = cdl_vec3_cross(w, t->e2);
-    double det = cdl_vec3_dot(t->e1, pv);
-    if (det == 0.0) return -1.0;
-    cdl_vec3 s = cdl_vec3_sub(p, t->v0);
-    double b1 = cdl_vec3_dot(s, pv) / det;
-    if (b1 < 0.0 || b1 > 1.0) return -1.0;
-    cdl_vec3 qv = cdl_vec3_cross(s, t->e1);
-    double b2 = cdl_vec3_dot(w, qv) / det;
-    if (b2 < 0.0 || b1 + b2 > 1.0) return -1.0;
-    double dist = cdl_vec3_dot(t->e2, qv) / det;
-    return dist > 0.0 ? dist : -1.0;
-}
-
-/* Ray against the plane of a rect or disk: distance and in-plane offset from `base`. */
-static double ray_plane(const area_emitter *a, cdl_vec3 base, cdl_vec3 p, cdl_vec3 w, cdl_vec3 *offset)
-{
-    double denom = cdl_vec3_dot(a->frame.n, w);
-    if (denom == 0.0) return -1.0;
-    double t = cdl_vec3_dot(a->frame.n, cdl_vec3_sub(base, p)) / denom;
-    if (!(t > 0.0)) return -1.0;
-    *offset = cdl_vec3_sub(cdl_vec3_madd(p, t, w), base);
-    return t;
-}
 
 static cdl_luminance area_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_vec3 w, double *pdf)
 {
@@ -486,6 +513,8 @@ static cdl_luminance area_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n,
         *pdf = total > 0.0 ? triangle_solid_angle_pdf(&a->tris[hit], omega[hit], total, t, cos_e) : 0.0;
     } else if (a->shape == CDL_SHAPE_RECT && rect_uses_solid_angle(a, p, &sr)) {
         *pdf = 1.0 / sr.S;
+    } else if (a->shape == CDL_SHAPE_DISK && disk_uses_cosine(a, p, n)) {
+        *pdf = fmax(0.0, cdl_vec3_dot(n, w)) * CDL_INV_PI;
     } else {
         *pdf = t / cos_e * t / a->area;
     }

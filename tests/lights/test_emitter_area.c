@@ -299,6 +299,10 @@ static void test_sampling(void)
     cdl_emitter *disk = make_area(disk_shape(cdl_vec3_make(0, 0, 2), cdl_vec3_make(0.3, 0, -1), 0.6), L);
     check_sampled_E(disk, cdl_vec3_make(0.5, 0.3, 0), cdl_vec3_make(0, 0, 1), "disk");
     check_sampled_E(disk, cdl_vec3_make(0.9, 0.0, 1.9), cdl_vec3_normalize(cdl_vec3_make(-1, 0.2, 0.3)), "disk, cut");
+    /* Close under the disk it fills more than half of the cosine-weighted
+     * hemisphere: cosine-weighted sampling, with a small spread. */
+    check_sampled_E(disk, cdl_vec3_make(0.1, -0.05, 1.92), cdl_vec3_make(0, 0, 1), "disk, 5 cm below");
+    check_sampled_E(disk, cdl_vec3_make(0.45, 0.1, 1.99), cdl_vec3_normalize(cdl_vec3_make(0.2, 0, 1)), "disk, near the rim");
     cdl_emitter *sph = make_area(sphere_shape(cdl_vec3_make(0, 0, 3), 0.5, 0), L);
     check_sampled_E(sph, cdl_vec3_make(0.2, 0, 0), cdl_vec3_make(0, 0, 1), "sphere");
     check_sampled_E(sph, cdl_vec3_make(0, 1.0, 3.0), cdl_vec3_normalize(cdl_vec3_make(0, 0.3, 1)), "sphere, cut");

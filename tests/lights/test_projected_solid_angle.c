@@ -190,7 +190,7 @@ static void test_nonconvex_polygon(void)
 /* Regular N-gon inscribed in (scale 1) or circumscribing (scale 1/cos(pi/N)) the disk. */
 static double ngon_psa(cdl_vec3 c, cdl_vec3 m, double R, cdl_vec3 n, int N, double scale)
 {
-    static cdl_vec3 v[4096];
+    cdl_vec3 v[4096];
     cdl_frame f = cdl_frame_from_normal(m);
     for (int k = 0; k < N; ++k) {
         double phi = CDL_TWO_PI * k / N;
