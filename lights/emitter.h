@@ -242,7 +242,8 @@ int cdl_emitter_sample(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, doubl
  * L = 0 if no light arrives that way. Area emitters: the nearest point of
  * the emitter along the ray, L = 0 on its back; the pdf is that point's.
  * The receiver normal n is needed because some samplers depend on it
- * (uniform environment and inward spheres sample cos-weighted about n).
+ * (uniform skies, disks close to p and inward spheres sample cos-weighted
+ * about n).
  * Delta emitters: L = 0, pdf = 0. */
 cdl_luminance cdl_emitter_radiance(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, cdl_vec3 to_light,
                                    double *pdf);
