@@ -28,6 +28,7 @@ typedef struct ies_reader {
     cdl_photometry *p;
     cdl_error *err;
     cdl_photometry_scanner s;
+    cdl_photometry_scanner table_start; /* after the ballast line */
 } ies_reader;
 
 static cdl_status oom(ies_reader *r) { return cdl_error_out_of_memory(r->err); }
@@ -261,8 +262,8 @@ static cdl_status read_records(ies_reader *r, ies_header *h)
         {"the ballast factor (record B, field 1)", "the file generation type (record B, field 2)",
          "the input watts (record B, field 3)"}};
     int era = r->p->meta.ies_version <= 1995 ? 0 : r->p->meta.ies_version < 2019 ? 1 : 2;
-    /* how many numbers follow record A, for the missing-record hint below */
-    size_t after_a = cdl_photometry_count_numbers(&r->s, 1);
+    /* where record A ends, to count what follows for the missing-record hint below */
+    cdl_photometry_scanner after_a = r->s;
     double b[3];
     for (int k = 0; k < 3; ++k) {
         cdl_status st = cdl_photometry_expect_number(&r->s, src, names_b[era][k], &b[k], &h->line_b[k], r->err);
@@ -273,7 +274,7 @@ static cdl_status read_records(ies_reader *r, ies_header *h)
     h->watts = b[2];
     if (!(h->ballast > 0.0)) {
         double need = 3.0 + (double)h->nv + (double)h->nh + (double)h->nv * (double)h->nh;
-        const char *hint = (double)after_a + 3.0 == need
+        const char *hint = (double)cdl_photometry_count_numbers(&after_a, 1) + 3.0 == need
                                ? "; the file holds exactly 3 numbers fewer than its header needs: the ballast "
                                  "line (ballast factor, second factor, input watts) looks missing"
                                : "";
@@ -285,21 +286,52 @@ static cdl_status read_records(ies_reader *r, ies_header *h)
 
 /* ---- angles and values ------------------------------------------------------------------ */
 
-static cdl_status read_angles(ies_reader *r, const char *kind, long n, double lo, double hi, double *x)
+static double numbers_needed(const ies_header *h) { return (double)h->nv + (double)h->nh + (double)h->nv * (double)h->nh; }
+
+/* The data ended (at `line`) after `have` of the numbers that follow the ballast line. */
+static cdl_status truncated(ies_reader *r, const ies_header *h, size_t have, unsigned line)
+{
+    return cdl_error_set(r->err, CDL_ERR_INPUT,
+                         "%s:%u: expected %.0f numbers after the ballast line (%ld vertical angles, %ld horizontal "
+                         "angles, %ld x %ld candela values), found %zu: the file is truncated",
+                         r->source, line, numbers_needed(h), h->nv, h->nh, h->nv, h->nh, have);
+}
+
+/* For an angle error: when the file holds a different number of values
+ * than record A announces, say so (the counts, not the angles, are wrong). */
+static void count_hint(const ies_reader *r, const ies_header *h, char *out, size_t size)
+{
+    size_t have = cdl_photometry_count_numbers(&r->table_start, 1);
+    out[0] = '\0';
+    if ((double)have != numbers_needed(h))
+        snprintf(out, size, "; the file holds %zu numbers after the ballast line where record A announces %.0f (%ld "
+                            "vertical angles, %ld horizontal angles, %ld x %ld values): check those counts",
+                 have, numbers_needed(h), h->nv, h->nh, h->nv, h->nh);
+}
+
+static cdl_status read_angles(ies_reader *r, const ies_header *h, size_t done, const char *kind, long n, double lo,
+                              double hi, double *x)
 {
     char what[96];
-    unsigned line;
     for (long i = 0; i < n; ++i) {
-        snprintf(what, sizeof what, "%s angle %ld of %ld", kind, i + 1, n);
-        cdl_status st = cdl_photometry_expect_number(&r->s, r->source, what, &x[i], &line, r->err);
-        if (st != CDL_OK) return st;
-        if (x[i] < lo || x[i] > hi)
-            return cdl_error_set(r->err, CDL_ERR_INPUT, "%s:%u: expected %s within [%g, %g] degrees, found %g",
-                                 r->source, line, what, lo, hi, x[i]);
-        if (i > 0 && !(x[i] > x[i - 1]))
+        cdl_token_kind k = cdl_photometry_take_number(&r->s, &x[i]);
+        unsigned line = r->s.tok_line;
+        if (k == CDL_TOKEN_END) return truncated(r, h, done + (size_t)i, r->s.line);
+        if (k != CDL_TOKEN_NUMBER || x[i] < lo || x[i] > hi || (i > 0 && !(x[i] > x[i - 1])))
+            snprintf(what, sizeof what, "%s angle %ld of %ld", kind, i + 1, n);
+        if (k != CDL_TOKEN_NUMBER) return cdl_photometry_token_error(&r->s, k, r->source, what, r->err);
+        char hint[256];
+        if (x[i] < lo || x[i] > hi) {
+            count_hint(r, h, hint, sizeof hint);
+            return cdl_error_set(r->err, CDL_ERR_INPUT, "%s:%u: expected %s within [%g, %g] degrees, found %g%s",
+                                 r->source, line, what, lo, hi, x[i], hint);
+        }
+        if (i > 0 && !(x[i] > x[i - 1])) {
+            count_hint(r, h, hint, sizeof hint);
             return cdl_error_set(r->err, CDL_ERR_INPUT,
-                                 "%s:%u: expected %s angles in increasing order, found %g after %g", r->source, line,
-                                 kind, x[i], x[i - 1]);
+                                 "%s:%u: expected %s angles in increasing order, found %g after %g%s", r->source, line,
+                                 kind, x[i], x[i - 1], hint);
+        }
     }
     return CDL_OK;
 }
@@ -307,13 +339,19 @@ static cdl_status read_angles(ies_reader *r, const char *kind, long n, double lo
 static cdl_status read_values(ies_reader *r, const ies_header *h, const double *v, const double *hz, double *cd)
 {
     char what[128];
-    unsigned line;
     for (long i = 0; i < h->nh; ++i)
         for (long j = 0; j < h->nv; ++j) {
-            snprintf(what, sizeof what, "the candela value at horizontal angle %g, vertical angle %g", hz[i], v[j]);
             double x;
-            cdl_status st = cdl_photometry_expect_number(&r->s, r->source, what, &x, &line, r->err);
-            if (st != CDL_OK) return st;
+            cdl_token_kind k = cdl_photometry_take_number(&r->s, &x);
+            unsigned line = r->s.tok_line;
+            if (k == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * h->multiplier)) {
+                cd[i * h->nv + j] = x * h->multiplier;
+                continue;
+            }
+            if (k == CDL_TOKEN_END)
+                return truncated(r, h, (size_t)(h->nv + h->nh) + (size_t)(i * h->nv + j), r->s.line);
+            snprintf(what, sizeof what, "the candela value at horizontal angle %g, vertical angle %g", hz[i], v[j]);
+            if (k != CDL_TOKEN_NUMBER) return cdl_photometry_token_error(&r->s, k, r->source, what, r->err);
             if (x < 0.0)
                 return cdl_error_set(r->err, CDL_ERR_INPUT, "%s:%u: expected %s >= 0, found %g (negative candela)",
                                      r->source, line, what, x);
@@ -513,13 +551,17 @@ cdl_status cdl_ies_read(const char *data, size_t size, const char *name, const c
     if (need > 2e7)
         return cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected a table of at most 2e7 values, found %ld x %ld",
                              r.source, h.line_a[4], h.nv, h.nh);
-    size_t have;
-    unsigned end_line;
-    if (cdl_photometry_numbers_then_end(&r.s, &have, &end_line) && (double)have < need)
-        return cdl_error_set(err, CDL_ERR_INPUT,
-                             "%s:%u: expected %.0f numbers after the ballast line (%ld vertical angles, %ld "
-                             "horizontal angles, %ld x %ld candela values), found %zu: the file is truncated",
-                             r.source, end_line, need, h.nv, h.nh, h.nv, h.nh, have);
+    /* A number takes at least two bytes (a digit and a separator): a header
+     * asking for more than the rest of the file can hold is refused before
+     * anything is allocated (a hostile header cannot make us allocate more
+     * than a few times the file's size). */
+    if (need > 0.5 * (double)(size - r.s.pos) + 1.0) {
+        size_t have;
+        unsigned end_line;
+        cdl_photometry_numbers_then_end(&r.s, &have, &end_line);
+        return truncated(&r, &h, have, end_line);
+    }
+    r.table_start = r.s;
 
     double lo_v, hi_v, lo_h, hi_h;
     switch (h.type) {
@@ -532,8 +574,8 @@ cdl_status cdl_ies_read(const char *data, size_t size, const char *name, const c
     if (!v || !hz || !cd) st = oom(&r);
     const char *vname = h.type == 1 ? "vertical (type C)" : h.type == 2 ? "vertical (type B)" : "vertical (type A)";
     const char *hname = h.type == 1 ? "horizontal (type C)" : h.type == 2 ? "horizontal (type B)" : "horizontal (type A)";
-    if (st == CDL_OK) st = read_angles(&r, vname, h.nv, lo_v, hi_v, v);
-    if (st == CDL_OK) st = read_angles(&r, hname, h.nh, lo_h, hi_h, hz);
+    if (st == CDL_OK) st = read_angles(&r, &h, 0, vname, h.nv, lo_v, hi_v, v);
+    if (st == CDL_OK) st = read_angles(&r, &h, (size_t)h.nv, hname, h.nh, lo_h, hi_h, hz);
     if (st == CDL_OK) st = read_values(&r, &h, v, hz, cd);
     if (st == CDL_OK) st = check_trailing(&r);
     if (st == CDL_OK) st = fill_metadata(&r, &h);

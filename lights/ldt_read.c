@@ -191,11 +191,12 @@ static cdl_status read_angles(ldt_reader *r, cdl_photometry_scanner *s, const ch
                               double *x)
 {
     char what[96];
-    unsigned line;
     for (long i = 0; i < n; ++i) {
-        snprintf(what, sizeof what, "%s angle %ld of %ld", kind, i + 1, n);
-        cdl_status st = cdl_photometry_expect_number(s, r->source, what, &x[i], &line, r->err);
-        if (st != CDL_OK) return st;
+        cdl_token_kind k = cdl_photometry_take_number(s, &x[i]);
+        unsigned line = s->tok_line;
+        if (k != CDL_TOKEN_NUMBER || x[i] < 0.0 || x[i] > hi || (i > 0 && !(x[i] > x[i - 1])))
+            snprintf(what, sizeof what, "%s angle %ld of %ld", kind, i + 1, n);
+        if (k != CDL_TOKEN_NUMBER) return cdl_photometry_token_error(s, k, r->source, what, r->err);
         if (x[i] < 0.0 || x[i] > hi)
             return cdl_error_set(r->err, CDL_ERR_INPUT, "%s:%u: expected %s within [0, %g] degrees, found %g",
                                  r->source, line, what, hi, x[i]);
@@ -318,10 +319,15 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
     char what[96];
     for (size_t i = 0; i < np && st == CDL_OK; ++i)
         for (size_t j = 0; j < ng && st == CDL_OK; ++j) {
-            snprintf(what, sizeof what, "the intensity at C%g, gamma %g", planes[i], g[j]);
             double x;
-            unsigned line;
-            st = cdl_photometry_expect_number(&s, r.source, what, &x, &line, err);
+            cdl_token_kind k = cdl_photometry_take_number(&s, &x);
+            unsigned line = s.tok_line;
+            if (k == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * scale)) {
+                cd[i * ng + j] = x * scale;
+                continue;
+            }
+            snprintf(what, sizeof what, "the intensity at C%g, gamma %g", planes[i], g[j]);
+            if (k != CDL_TOKEN_NUMBER) st = cdl_photometry_token_error(&s, k, r.source, what, err);
             if (st == CDL_OK && x < 0.0)
                 st = cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected %s >= 0, found %g (negative intensity)",
                                    r.source, line, what, x);

@@ -77,6 +77,10 @@ double cdl_photometry_eval_hv(const cdl_photometry *p, double h_deg, double v_de
  * for the zero or a non-finite vector. */
 int cdl_photometry_direction_to_hv(cdl_photometric_type type, cdl_vec3 d, double *h_deg, double *v_deg);
 
+/* Flux in the 18 zones of 10 degrees of frame gamma: exact for type C,
+ * a quadrature for types A/B (see photometry_flux.c). */
+void cdl_photometry_zones(const cdl_photometry *p, double zone[CDL_PHOTOMETRY_ZONES]);
+
 /* Exact flux of the table (no caching); used once at set-up. */
 double cdl_photometry_compute_flux(const cdl_photometry *p);
 

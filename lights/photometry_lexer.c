@@ -49,6 +49,9 @@ void cdl_photometry_scanner_init(cdl_photometry_scanner *s, const char *data, si
     s->pos = pos;
     s->line = line;
     s->comma_is_separator = comma_is_separator;
+    s->tok = NULL;
+    s->tok_len = 0;
+    s->tok_line = line;
 }
 
 static int is_separator(const cdl_photometry_scanner *s, unsigned char c)
@@ -196,29 +199,44 @@ void cdl_photometry_quote(char *out, size_t out_size, const char *tok, size_t le
     out[k] = '\0';
 }
 
+cdl_token_kind cdl_photometry_take_number(cdl_photometry_scanner *s, double *value)
+{
+    if (!cdl_photometry_scan(s, &s->tok, &s->tok_len, &s->tok_line)) {
+        s->tok = NULL;
+        s->tok_len = 0;
+        s->tok_line = s->line;
+        return CDL_TOKEN_END;
+    }
+    if (!cdl_photometry_parse_number(s->tok, s->tok_len, !s->comma_is_separator, value)) return CDL_TOKEN_TEXT;
+    return isfinite(*value) ? CDL_TOKEN_NUMBER : CDL_TOKEN_OUT_OF_RANGE;
+}
+
+cdl_status cdl_photometry_token_error(const cdl_photometry_scanner *s, cdl_token_kind kind, const char *source,
+                                      const char *what, cdl_error *err)
+{
+    char q[40];
+    cdl_photometry_quote(q, sizeof q, s->tok ? s->tok : "", s->tok_len);
+    switch (kind) {
+    case CDL_TOKEN_END:
+        return cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected %s, found the end of the file (truncated?)", source,
+                             s->tok_line, what);
+    case CDL_TOKEN_TEXT:
+        return cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected %s (a number), found %s", source, s->tok_line, what,
+                             q);
+    case CDL_TOKEN_OUT_OF_RANGE:
+        return cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected %s as a finite number, found %s (out of range)",
+                             source, s->tok_line, what, q);
+    default:
+        return CDL_OK;
+    }
+}
+
 cdl_status cdl_photometry_expect_number(cdl_photometry_scanner *s, const char *source, const char *what,
                                         double *value, unsigned *line, cdl_error *err)
 {
-    const char *tok;
-    size_t len;
-    unsigned at;
-    if (!cdl_photometry_scan(s, &tok, &len, &at)) {
-        if (line) *line = s->line;
-        return cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected %s, found the end of the file (truncated?)",
-                             source, s->line, what);
-    }
-    if (line) *line = at;
-    char q[40];
-    if (!cdl_photometry_parse_number(tok, len, !s->comma_is_separator, value)) {
-        cdl_photometry_quote(q, sizeof q, tok, len);
-        return cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected %s (a number), found %s", source, at, what, q);
-    }
-    if (!isfinite(*value)) {
-        cdl_photometry_quote(q, sizeof q, tok, len);
-        return cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected %s as a finite number, found %s (out of range)",
-                             source, at, what, q);
-    }
-    return CDL_OK;
+    cdl_token_kind k = cdl_photometry_take_number(s, value);
+    if (line) *line = s->tok_line;
+    return k == CDL_TOKEN_NUMBER ? CDL_OK : cdl_photometry_token_error(s, k, source, what, err);
 }
 
 cdl_status cdl_photometry_expect_integer(cdl_photometry_scanner *s, const char *source, const char *what, long lo,

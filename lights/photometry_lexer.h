@@ -31,6 +31,9 @@ typedef struct cdl_photometry_scanner {
     size_t pos, size;
     unsigned line;
     int comma_is_separator; /* IES: ',' separates numbers; EULUMDAT: it may be a decimal comma */
+    const char *tok;        /* the last token taken, for messages */
+    size_t tok_len;
+    unsigned tok_line;
 } cdl_photometry_scanner;
 
 void cdl_photometry_scanner_init(cdl_photometry_scanner *s, const char *data, size_t size, size_t pos,
@@ -55,6 +58,21 @@ int cdl_photometry_numbers_then_end(const cdl_photometry_scanner *s, size_t *cou
 
 /* Quote a token for a message: at most 24 bytes, non-printable bytes as '?'. */
 void cdl_photometry_quote(char *out, size_t out_size, const char *tok, size_t len);
+
+typedef enum cdl_token_kind {
+    CDL_TOKEN_NUMBER = 0,   /* a finite number */
+    CDL_TOKEN_END,          /* no more data */
+    CDL_TOKEN_TEXT,         /* a token that is not a number */
+    CDL_TOKEN_OUT_OF_RANGE  /* a number too large for a double */
+} cdl_token_kind;
+
+/* The fast path for tables: the next token as a number, no message. The
+ * token stays in s->tok for cdl_photometry_token_error. */
+cdl_token_kind cdl_photometry_take_number(cdl_photometry_scanner *s, double *value);
+
+/* The message for a failed take: "SOURCE:LINE: expected WHAT, found ...". */
+cdl_status cdl_photometry_token_error(const cdl_photometry_scanner *s, cdl_token_kind kind, const char *source,
+                                      const char *what, cdl_error *err);
 
 /* The next token as a number. On failure the message reads
  * "SOURCE:LINE: expected WHAT, found 'TOKEN'" (or "found the end of the

@@ -31,43 +31,43 @@ static double refine(const cdl_photometry *p, cdl_photometry_plane plane, double
     return 0.5 * (a + b);
 }
 
-double cdl_photometry_spread_angle(const cdl_photometry *p, cdl_photometry_plane plane, double fraction)
+/* Full angles at the given fractions of the plane's maximum (-1 when undefined). */
+static void plane_spreads(const cdl_photometry *p, cdl_photometry_plane plane, const double *fractions, int count,
+                          double *out)
 {
-    if (!(fraction > 0.0 && fraction < 1.0)) return -1.0;
+    for (int f = 0; f < count; ++f) out[f] = -1.0;
     const int n = 360 * PLANE_SAMPLES_PER_DEG;
     const double step = 1.0 / PLANE_SAMPLES_PER_DEG;
     double *I = malloc((size_t)n * sizeof *I);
-    if (!I) return -1.0;
+    if (!I) return;
     int peak = 0;
     for (int k = 0; k < n; ++k) {
         I[k] = plane_intensity(p, plane, -180.0 + step * k);
         if (I[k] > I[peak]) peak = k;
     }
-    double result = -1.0;
-    double level = fraction * I[peak];
-    if (I[peak] > 0.0) {
+    for (int f = 0; f < count && I[peak] > 0.0; ++f) {
+        if (!(fractions[f] > 0.0 && fractions[f] < 1.0)) continue;
+        double level = fractions[f] * I[peak];
         /* walk both ways round the circle from the peak to the first sample below the level */
         int right = -1, left = -1;
-        for (int s = 1; s < n; ++s)
-            if (I[(peak + s) % n] < level) {
-                right = s;
-                break;
-            }
-        for (int s = 1; s < n; ++s)
-            if (I[((peak - s) % n + n) % n] < level) {
-                left = s;
-                break;
-            }
-        if (right > 0 && left > 0) {
-            double t0 = -180.0 + step * peak;
-            double tr = refine(p, plane, t0 + step * (right - 1), t0 + step * right, level);
-            double tl = refine(p, plane, t0 - step * (left - 1), t0 - step * left, level);
-            result = tr - tl;
-            if (result > 360.0) result = 360.0;
-        }
+        for (int s = 1; s < n && right < 0; ++s)
+            if (I[(peak + s) % n] < level) right = s;
+        for (int s = 1; s < n && left < 0; ++s)
+            if (I[((peak - s) % n + n) % n] < level) left = s;
+        if (right < 0 || left < 0) continue;
+        double t0 = -180.0 + step * peak;
+        double tr = refine(p, plane, t0 + step * (right - 1), t0 + step * right, level);
+        double tl = refine(p, plane, t0 - step * (left - 1), t0 - step * left, level);
+        out[f] = fmin(tr - tl, 360.0);
     }
     free(I);
-    return result;
+}
+
+double cdl_photometry_spread_angle(const cdl_photometry *p, cdl_photometry_plane plane, double fraction)
+{
+    double out;
+    plane_spreads(p, plane, &fraction, 1, &out);
+    return out;
 }
 
 void cdl_photometry_summarize(const cdl_photometry *p, cdl_photometry_summary *s)
@@ -76,7 +76,9 @@ void cdl_photometry_summarize(const cdl_photometry *p, cdl_photometry_summary *s
     s->flux = cdl_photometry_flux(p);
     s->downward_flux = cdl_photometry_zone_flux(p, 0.0, 90.0);
     s->upward_flux = cdl_lumens(fmax(0.0, s->flux.lm - s->downward_flux.lm));
-    for (int k = 0; k < 18; ++k) s->zone_flux[k] = cdl_photometry_zone_flux(p, 10.0 * k, 10.0 * k + 10.0);
+    double zones[CDL_PHOTOMETRY_ZONES];
+    cdl_photometry_zones(p, zones);
+    for (int k = 0; k < CDL_PHOTOMETRY_ZONES; ++k) s->zone_flux[k] = cdl_lumens(zones[k]);
     s->downward_fraction = s->flux.lm > 0.0 ? s->downward_flux.lm / s->flux.lm : 0.0;
     const cdl_photometry_metadata *m = &p->meta;
     if (!m->absolute && m->rated_lamp_flux_lm > 0.0) {
@@ -99,9 +101,13 @@ void cdl_photometry_summarize(const cdl_photometry *p, cdl_photometry_summary *s
         s->max_c_deg = c;
         s->max_gamma_deg = g;
     }
+    /* beam: 50 % of the maximum, field: 10 % (IES / CIE usage) */
+    const double fractions[2] = {0.5, 0.1};
     for (int k = 0; k < 2; ++k) {
-        s->beam_angle_deg[k] = cdl_photometry_spread_angle(p, (cdl_photometry_plane)k, 0.5);
-        s->field_angle_deg[k] = cdl_photometry_spread_angle(p, (cdl_photometry_plane)k, 0.1);
+        double spread[2];
+        plane_spreads(p, (cdl_photometry_plane)k, fractions, 2, spread);
+        s->beam_angle_deg[k] = spread[0];
+        s->field_angle_deg[k] = spread[1];
     }
     if (m->input_watts > 0.0) {
         s->efficacy_known = 1;

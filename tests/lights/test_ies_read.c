@@ -410,7 +410,7 @@ static void test_errors(void)
         const char *says;
     } cases[] = {
         {"bad_truncated.ies", "bad_truncated.ies:11:", "the file is truncated"},
-        {"bad_count_mismatch.ies", "bad_count_mismatch.ies:11:", "expected 14 numbers"},
+        {"bad_count_mismatch.ies", "bad_count_mismatch.ies:8:", "holds 11 numbers after the ballast line where record A announces 14"},
         {"bad_not_a_number.ies", "bad_not_a_number.ies:9:", "found '1O'"},
         {"bad_angles_decreasing.ies", "bad_angles_decreasing.ies:7:", "increasing order, found 45 after 90"},
         {"bad_nan.ies", "bad_nan.ies:9:", "found 'nan'"},
