@@ -56,7 +56,10 @@ int cdl_emitter_eval_positional(const cdl_emitter *e, cdl_vec3 position, cdl_emi
                                 cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out)
 {
     cdl_vec3 w = cdl_vec3_sub(position, p);
-    double d = cdl_vec3_length(w);
+    /* sqrt of the dot product where that cannot over- or underflow, the
+     * scaled length otherwise */
+    double d2 = cdl_vec3_dot(w, w);
+    double d = (d2 > 1e-290 && d2 < 1e290) ? sqrt(d2) : cdl_vec3_length(w);
     out->to_light = d > 0.0 ? cdl_vec3_scale(w, 1.0 / d) : cdl_vec3_make(0.0, 0.0, 0.0);
     out->distance = d;
     out->E = cdl_lux(0.0);
@@ -87,6 +90,11 @@ cdl_emitter_kind cdl_emitter_get_kind(const cdl_emitter *emitter)
 int cdl_emitter_is_delta(const cdl_emitter *emitter)
 {
     return emitter->ops->eval_delta != NULL;
+}
+
+int cdl_emitter_emission_cone(const cdl_emitter *emitter, cdl_vec3 *position, cdl_vec3 *axis, double *cos_min)
+{
+    return emitter->ops->cone ? emitter->ops->cone(emitter, position, axis, cos_min) : 0;
 }
 
 cdl_luminous_flux cdl_emitter_flux(const cdl_emitter *emitter)

@@ -191,6 +191,16 @@ typedef struct cdl_delta_light {
  * non-delta emitters. */
 int cdl_emitter_eval_delta(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out);
 
+/* The cone outside which a positional delta emitter sends no light: from
+ * *position, only directions w (unit) with dot(w, *axis) > *cos_min carry
+ * light. A spot: its axis and half angle (hemisphere for cos^n); a
+ * goniometric luminaire: its rotated nadir and the largest gamma with
+ * non-zero interpolated intensity (type C tables). Returns 0 when there is
+ * no such cone (point lights, uplights, types A/B, directional and extended
+ * emitters): light may go anywhere. Lets a solver skip, in one test, points
+ * a luminaire cannot reach. */
+int cdl_emitter_emission_cone(const cdl_emitter *emitter, cdl_vec3 *position, cdl_vec3 *axis, double *cos_min);
+
 /* ---- extended emitters (area, environment) -------------------------------- */
 
 /* Exact illuminance at p on the plane with unit normal n from the whole

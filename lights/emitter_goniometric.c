@@ -36,6 +36,9 @@ typedef struct goniometric_emitter {
     cdl_vec3 col[3];  /* columns of world_from_luminaire: the luminaire's x, y, z axes in world */
     double factor;    /* k above */
     double tilt_deg;
+    int rotational;   /* type C table with one plane: I depends on gamma only */
+    int has_cone;     /* light only where gamma < cone_gamma (see gonio_cone) */
+    double cone_cos;  /* cos(cone_gamma) */
 } goniometric_emitter;
 
 static const goniometric_emitter *as_gonio(const cdl_emitter *e)
@@ -49,10 +52,26 @@ static cdl_vec3 to_luminaire(const goniometric_emitter *g, cdl_vec3 w)
     return cdl_vec3_make(cdl_vec3_dot(g->col[0], w), cdl_vec3_dot(g->col[1], w), cdl_vec3_dot(g->col[2], w));
 }
 
+/* Polar angle from the nadir (-z) of a unit vector, in degrees, accurate
+ * everywhere: acos(cos g) where it is well conditioned, asin(sin g) near the
+ * poles (acos loses digits there). */
+static double gamma_deg_of(cdl_vec3 unit)
+{
+    double c = -unit.z;
+    if (fabs(c) < 0.7) return acos(c) * CDL_RAD_TO_DEG;
+    double s = asin(fmin(1.0, sqrt(unit.x * unit.x + unit.y * unit.y))) * CDL_RAD_TO_DEG;
+    return c > 0.0 ? s : 180.0 - s;
+}
+
 static cdl_luminous_intensity gonio_intensity(const cdl_emitter *e, cdl_vec3 unit_dir)
 {
     const goniometric_emitter *g = as_gonio(e);
-    cdl_luminous_intensity I = cdl_photometry_intensity(g->photometry, to_luminaire(g, unit_dir));
+    cdl_vec3 local = to_luminaire(g, unit_dir);
+    /* Beyond the table's cut-off the interpolated intensity is zero: skip the lookup. */
+    if (g->has_cone && -local.z <= g->cone_cos) return cdl_candelas(0.0);
+    /* A rotationally symmetric table does not depend on C: no azimuth needed. */
+    cdl_luminous_intensity I = g->rotational ? cdl_photometry_intensity_c_gamma(g->photometry, 0.0, gamma_deg_of(local))
+                                             : cdl_photometry_intensity(g->photometry, local);
     return cdl_candelas(I.cd * g->factor);
 }
 
@@ -68,7 +87,47 @@ static int gonio_eval_delta(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_de
     return cdl_emitter_eval_positional(e, as_gonio(e)->position, gonio_intensity, p, n, out);
 }
 
-static const cdl_emitter_ops gonio_ops = {gonio_flux, gonio_intensity, gonio_eval_delta, NULL, NULL, NULL, NULL};
+static int gonio_cone(const cdl_emitter *e, cdl_vec3 *position, cdl_vec3 *axis, double *cos_min)
+{
+    const goniometric_emitter *g = as_gonio(e);
+    if (!g->has_cone) return 0;
+    *position = g->position;
+    *axis = cdl_vec3_neg(g->col[2]); /* the rotated nadir */
+    *cos_min = g->cone_cos;
+    return 1;
+}
+
+/* The gamma beyond which a type C table gives no light in any plane. The
+ * interpolated intensity is zero past the last non-zero sample of a plane
+ * once the next sample is zero (and beyond the table's last gamma), and
+ * interpolation between planes mixes only those planes, so the cut-off is
+ * the largest such gamma over the planes. Returns 0 (no cone) when light
+ * reaches gamma = 180 or the table is not type C. */
+static int gamma_cutoff(const cdl_photometry *ph, double *cutoff_deg)
+{
+    cdl_photometry_table t;
+    cdl_photometry_get_table(ph, &t);
+    if (t.type != CDL_PHOTOMETRIC_TYPE_C || t.vertical_count == 0) return 0;
+    double cut = 0.0;
+    for (size_t i = 0; i < t.horizontal_count; ++i) {
+        const double *row = &t.candela[i * t.vertical_count];
+        size_t last = t.vertical_count;
+        for (size_t j = t.vertical_count; j-- > 0;)
+            if (row[j] > 0.0) {
+                last = j;
+                break;
+            }
+        if (last == t.vertical_count) continue; /* a dark plane */
+        double g = last + 1 < t.vertical_count ? t.vertical_deg[last + 1] : t.vertical_deg[last];
+        if (g > cut) cut = g;
+    }
+    if (!(cut < 180.0)) return 0;
+    *cutoff_deg = cut;
+    return 1;
+}
+
+static const cdl_emitter_ops gonio_ops = {gonio_flux, gonio_intensity, gonio_eval_delta, NULL, NULL, NULL, NULL,
+                                          gonio_cone};
 
 /* Columns of Rz(c) Ry(b) Rx(a) (angles in radians), each rotation
  * right-handed about a fixed world axis: R e_k for k = x, y, z. */
@@ -139,6 +198,14 @@ cdl_status cdl_emitter_create_goniometric(const cdl_goniometric_params *p, cdl_e
                              k);
     }
     g->factor = k;
+    cdl_photometry_table table;
+    cdl_photometry_get_table(p->photometry, &table);
+    g->rotational = table.type == CDL_PHOTOMETRIC_TYPE_C && table.symmetry == CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL;
+    double cut;
+    if (gamma_cutoff(p->photometry, &cut)) {
+        g->has_cone = 1;
+        g->cone_cos = cos(cut * CDL_DEG_TO_RAD);
+    }
     *out = &g->base;
     return CDL_OK;
 }

@@ -23,6 +23,8 @@ typedef struct cdl_emitter_ops {
     cdl_luminance (*radiance)(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_vec3 unit_dir, double *pdf);
     /* Frees what the kind owns besides the block itself (may be NULL). */
     void (*destroy)(cdl_emitter *e);
+    /* Positional delta emitters whose light is confined to a cone (may be NULL). */
+    int (*cone)(const cdl_emitter *e, cdl_vec3 *position, cdl_vec3 *axis, double *cos_min);
 } cdl_emitter_ops;
 
 struct cdl_emitter {

@@ -82,7 +82,19 @@ static int spot_eval_delta(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_del
     return cdl_emitter_eval_positional(e, as_spot(e)->position, spot_intensity, p, n, out);
 }
 
-static const cdl_emitter_ops spot_ops = {spot_flux, spot_intensity, spot_eval_delta, NULL, NULL, NULL, NULL};
+/* No light where cos(alpha) <= cos(half angle) (smoothstep profile) or
+ * cos(alpha) <= 0 (cos^n, zero behind). */
+static int spot_cone(const cdl_emitter *e, cdl_vec3 *position, cdl_vec3 *axis, double *cos_min)
+{
+    const spot_emitter *s = as_spot(e);
+    *position = s->position;
+    *axis = s->axis;
+    *cos_min = s->use_exponent ? 0.0 : cos(s->half_angle);
+    return 1;
+}
+
+static const cdl_emitter_ops spot_ops = {spot_flux, spot_intensity, spot_eval_delta, NULL, NULL, NULL, NULL,
+                                         spot_cone};
 
 cdl_status cdl_emitter_create_spot(const cdl_spot_params *p, cdl_emitter **out, cdl_error *err)
 {

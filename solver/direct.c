@@ -191,54 +191,88 @@ static void sample_light(const cdl_direct_context *ctx, const cdl_direct_light *
     *variance = var;
 }
 
-void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strategy *strategies, uint64_t stream,
-                            cdl_vec3 p, cdl_vec3 n, double *E_out, double *var_out, cdl_direct_sample_stats *stats)
+size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, double radius, uint32_t *active)
 {
-    double E = 0.0, var = 0.0;
+    size_t count = 0;
     for (size_t l = 0; l < ctx->light_count; ++l) {
         const cdl_direct_light *light = &ctx->lights[l];
-        uint64_t light_stream = cdl_rng_stream_id(stream, (uint64_t)l, 0x6c69676874ull /* "light" */);
-        switch (strategies[l]) {
-        case CDL_STRATEGY_DELTA_EXACT:
-        case CDL_STRATEGY_DELTA_SHADOWED: {
-            cdl_delta_light d;
-            if (!cdl_emitter_eval_delta(light->emitter, p, n, &d) || !(d.E.lx > 0.0)) break;
-            if (strategies[l] == CDL_STRATEGY_DELTA_SHADOWED && shadowed(ctx, p, n, d.to_light, d.distance, stats))
-                break;
-            E += d.E.lx;
-            break;
-        }
-        case CDL_STRATEGY_EXTENDED_EXACT:
-        case CDL_STRATEGY_EXTENDED_TESTED: {
-            cdl_illuminance exact;
-            if (cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK) {
-                if (!(exact.lx > 0.0)) break; /* behind the emitter or below the horizon */
-                if (strategies[l] == CDL_STRATEGY_EXTENDED_EXACT || light_fully_visible(ctx, light, p, n)) {
-                    E += exact.lx;
-                    stats->exact_evaluations++;
-                } else {
-                    /* E = E_exact - E_hidden: a control variate that is exact
-                     * when nothing is hidden and whose variance comes only
-                     * from the hidden part. */
-                    double hidden, v;
-                    sample_light(ctx, light, light_stream, p, n, 1, &hidden, &v, stats);
-                    E += fmax(0.0, exact.lx - hidden);
-                    var += v;
-                    stats->sampled_evaluations++;
-                }
-                break;
+        if (light->has_cone) {
+            /* The ball (seen from the light under half-angle asin(r/d)) meets
+             * the cone iff the angle from the axis to the ball's centre is
+             * less than the cone's half-angle plus the ball's. */
+            cdl_vec3 v = cdl_vec3_sub(center, light->cone_position);
+            double d = cdl_vec3_length(v);
+            if (d > radius) {
+                double c = cdl_vec3_dot(v, light->cone_axis) / d;
+                double to_centre = acos(fmax(-1.0, fmin(1.0, c)));
+                if (to_centre > light->cone_angle + asin(radius / d)) continue;
             }
         }
-            /* no closed form after all: sample */
-            /* fall through */
-        case CDL_STRATEGY_SAMPLED: {
-            double m, v;
-            sample_light(ctx, light, light_stream, p, n, 0, &m, &v, stats);
-            E += m;
-            var += v;
-            stats->sampled_evaluations++;
-            break;
+        active[count++] = (uint32_t)l;
+    }
+    return count;
+}
+
+/* Exact illuminance from a delta light, 0 if it is shadowed. */
+static double delta_contribution(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_light_strategy st,
+                                 cdl_vec3 p, cdl_vec3 n, cdl_direct_sample_stats *stats)
+{
+    if (light->has_cone) {
+        /* Outside the emission cone: no light, no lookup. */
+        cdl_vec3 v = cdl_vec3_sub(p, light->cone_position);
+        if (cdl_vec3_dot(v, light->cone_axis) <= light->cone_cos * sqrt(cdl_vec3_dot(v, v))) return 0.0;
+    }
+    cdl_delta_light d;
+    if (!cdl_emitter_eval_delta(light->emitter, p, n, &d) || !(d.E.lx > 0.0)) return 0.0;
+    if (st == CDL_STRATEGY_DELTA_SHADOWED && shadowed(ctx, p, n, d.to_light, d.distance, stats)) return 0.0;
+    return d.E.lx;
+}
+
+/* Illuminance from an area emitter or environment: closed form where nothing
+ * hides it, closed form minus the sampled hidden part where something does,
+ * plain sampling where there is no closed form. Adds to *E and *var. */
+static void extended_contribution(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_light_strategy st,
+                                  uint64_t stream, cdl_vec3 p, cdl_vec3 n, double *E, double *var,
+                                  cdl_direct_sample_stats *stats)
+{
+    cdl_illuminance exact;
+    if (st != CDL_STRATEGY_SAMPLED && cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK) {
+        if (!(exact.lx > 0.0)) return; /* behind the emitter or below the horizon */
+        if (st == CDL_STRATEGY_EXTENDED_EXACT || light_fully_visible(ctx, light, p, n)) {
+            *E += exact.lx;
+            stats->exact_evaluations++;
+            return;
         }
+        /* E = E_exact - E_hidden: a control variate that is exact when nothing
+         * is hidden and whose variance comes only from the hidden part. */
+        double hidden, v;
+        sample_light(ctx, light, stream, p, n, 1, &hidden, &v, stats);
+        *E += fmax(0.0, exact.lx - hidden);
+        *var += v;
+        stats->sampled_evaluations++;
+        return;
+    }
+    double m, v;
+    sample_light(ctx, light, stream, p, n, 0, &m, &v, stats);
+    *E += m;
+    *var += v;
+    stats->sampled_evaluations++;
+}
+
+void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                            const uint32_t *active, size_t active_count, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                            double *E_out, double *var_out, cdl_direct_sample_stats *stats)
+{
+    double E = 0.0, var = 0.0;
+    size_t count = active ? active_count : ctx->light_count;
+    for (size_t a = 0; a < count; ++a) {
+        size_t l = active ? active[a] : a;
+        cdl_light_strategy st = strategies[l];
+        if (st == CDL_STRATEGY_DELTA_EXACT || st == CDL_STRATEGY_DELTA_SHADOWED) {
+            E += delta_contribution(ctx, &ctx->lights[l], st, p, n, stats);
+        } else {
+            uint64_t light_stream = cdl_rng_stream_id(stream, (uint64_t)l, 0x6c69676874ull /* "light" */);
+            extended_contribution(ctx, &ctx->lights[l], st, light_stream, p, n, &E, &var, stats);
         }
     }
     *E_out = E;

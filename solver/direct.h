@@ -69,6 +69,12 @@ typedef struct cdl_direct_light {
     double sphere_radius;
     cdl_vec3 bounds_lo, bounds_hi;    /* world bounds of the emitter (delta: its position) */
     int bounded;                      /* 0 for directional and environment */
+    /* Emission cone (cdl_emitter_emission_cone): no light outside the
+     * directions within cone_angle of cone_axis from cone_position. */
+    int has_cone;
+    cdl_vec3 cone_position, cone_axis;
+    double cone_angle;                /* radians */
+    double cone_cos;                  /* cos(cone_angle) */
 } cdl_direct_light;
 
 typedef struct cdl_direct_context {
@@ -98,11 +104,18 @@ typedef struct cdl_direct_sample_stats {
     uint64_t sampled_evaluations;     /* Monte-Carlo estimates used */
 } cdl_direct_sample_stats;
 
+/* Lights that can reach any point of a ball (centre, radius): the indices
+ * of all lights except those whose emission cone misses the ball. Writes
+ * at most ctx->light_count indices into `active`; returns their number. */
+size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, double radius, uint32_t *active);
+
 /* Direct illuminance (lux) at p on the plane with unit normal n, with the
- * variance of its estimate (0 when exact). `stream` identifies the point
- * (grid and index) for the random numbers. */
-void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strategy *strategies, uint64_t stream,
-                            cdl_vec3 p, cdl_vec3 n, double *E, double *variance, cdl_direct_sample_stats *stats);
+ * variance of its estimate (0 when exact), from the lights listed in
+ * `active` (NULL: all lights). `stream` identifies the point (grid and
+ * index) for the random numbers. */
+void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                            const uint32_t *active, size_t active_count, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                            double *E, double *variance, cdl_direct_sample_stats *stats);
 
 /* Cosine-weighted unoccluded fraction of the hemisphere about n at p. */
 double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,

@@ -239,6 +239,13 @@ static size_t find_luminaire_piece(const cdl_scene_geometry *g, size_t k)
 static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kind, const cdl_direct_light *proto,
                             cdl_error *err)
 {
+    cdl_direct_light light = *proto;
+    double cos_min;
+    if (cdl_emitter_emission_cone(e, &light.cone_position, &light.cone_axis, &cos_min)) {
+        light.has_cone = 1;
+        light.cone_angle = acos(fmax(-1.0, fmin(1.0, cos_min)));
+        light.cone_cos = cos_min;
+    }
     cdl_direct_light *nl = realloc(L->lights, (L->count + 1) * sizeof *nl);
     if (!nl) {
         cdl_emitter_release(e);
@@ -257,7 +264,7 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
         return cdl_error_out_of_memory(err);
     }
     L->kinds = nk;
-    L->lights[L->count] = *proto;
+    L->lights[L->count] = light;
     L->lights[L->count].emitter = e;
     L->emitters[L->count] = e;
     L->kinds[L->count] = kind;

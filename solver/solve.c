@@ -225,6 +225,7 @@ typedef struct grid_job {
 typedef struct worker_state {
     grid_job *job;
     cdl_direct_sample_stats stats;
+    uint32_t *active;             /* light indices for the current chunk */
 } worker_state;
 
 static void *worker_main(void *arg)
@@ -236,11 +237,20 @@ static void *worker_main(void *arg)
         size_t start = atomic_fetch_add(&job->next, job->chunk);
         if (start >= grid->count) break;
         size_t end = start + job->chunk < grid->count ? start + job->chunk : grid->count;
+        /* Skip, once for the whole chunk, the lights that cannot reach it. */
+        cdl_vec3 lo = grid->points[start], hi = grid->points[start];
+        for (size_t i = start + 1; i < end; ++i) {
+            cdl_vec3 q = grid->points[i];
+            lo = cdl_vec3_make(fmin(lo.x, q.x), fmin(lo.y, q.y), fmin(lo.z, q.z));
+            hi = cdl_vec3_make(fmax(hi.x, q.x), fmax(hi.y, q.y), fmax(hi.z, q.z));
+        }
+        size_t active = cdl_direct_select_lights(job->ctx, cdl_vec3_scale(cdl_vec3_add(lo, hi), 0.5),
+                                                 0.5 * cdl_vec3_distance(lo, hi), w->active);
         for (size_t i = start; i < end; ++i) {
             uint64_t stream = cdl_rng_stream_id((uint64_t)job->grid_index, (uint64_t)i, 0x6772696470ull /* "gridp" */);
             double E, var;
-            cdl_direct_illuminance(job->ctx, job->strategies, stream, grid->points[i], grid->normals[i], &E, &var,
-                                   &w->stats);
+            cdl_direct_illuminance(job->ctx, job->strategies, w->active, active, stream, grid->points[i],
+                                   grid->normals[i], &E, &var, &w->stats);
             job->gs->E[i] = E;
             job->gs->E_direct[i] = E;
             job->gs->E_indirect[i] = 0.0;
@@ -263,8 +273,15 @@ static cdl_status run_grid(grid_job *job, int threads, cdl_direct_sample_stats *
         return cdl_error_out_of_memory(err);
     }
     int started = 0;
+    uint32_t *active = malloc((size_t)threads * (job->ctx->light_count + 1) * sizeof(uint32_t));
+    if (!active) {
+        free(ws);
+        free(tid);
+        return cdl_error_out_of_memory(err);
+    }
     for (int i = 0; i < threads; ++i) {
         ws[i].job = job;
+        ws[i].active = active + (size_t)i * (job->ctx->light_count + 1);
         if (i == 0) continue; /* the calling thread works too */
         if (pthread_create(&tid[i], NULL, worker_main, &ws[i]) != 0) break;
         started = i;
@@ -276,6 +293,7 @@ static cdl_status run_grid(grid_job *job, int threads, cdl_direct_sample_stats *
         total->exact_evaluations += ws[i].stats.exact_evaluations;
         total->sampled_evaluations += ws[i].stats.sampled_evaluations;
     }
+    free(active);
     free(ws);
     free(tid);
     return CDL_OK;
