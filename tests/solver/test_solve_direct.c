@@ -7,6 +7,7 @@
 
 #include "check.h"
 #include "radiometry/constants.h"
+#include "solver/exr_image.h"
 #include "solver/solve.h"
 
 /* Solve a scene given as JSON text; returns 0 on failure (reported). */
@@ -536,6 +537,99 @@ static void test_method_refusals(void)
     }
 }
 
+
+/* A lat-long environment image: its top half (polar angle < 90 degrees from
+ * up) at 1000 cd/m^2 in Y, the bottom half dark, and in the top half a band
+ * of columns u in [0.375, 0.625) - azimuths around +x (phi = pi + 2 pi u)
+ * - at 3000 cd/m^2. Sampled by luminance, so the estimates carry a
+ * standard error; closed forms for comparison:
+ *   upward receiver: pi L over the upper hemisphere plus the band's excess
+ *     (2000 cd/m^2 over a quarter of the azimuths: a quarter of pi x 2000);
+ *   receivers facing +x and -x: pi L / 2 each from the uniform part, and the
+ *     band adds its projected solid angle only for +x. */
+static void test_image_environment(void)
+{
+    const int w = 64, h = 32;
+    static float Y[64 * 32];
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) {
+            double u = (c + 0.5) / w;
+            Y[r * w + c] = r < h / 2 ? ((u >= 0.375 && u < 0.625) ? 3000.0f : 1000.0f) : 0.0f;
+        }
+    cdl_exr_channel ch = {"Y", Y};
+    cdl_error err;
+    CHECK_OK(cdl_exr_write(CANDELA_TEST_TMPDIR "/sky_band.exr", w, h, &ch, 1, NULL, 0, &err), &err);
+    const char *json =
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"environment\", \"file\": \"sky_band.exr\", \"scale\": 1.0}],"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]},"
+        " {\"p\": [0, 0, 0], \"n\": [1, 0, 0]}, {\"p\": [0, 0, 0], \"n\": [-1, 0, 0]}, {\"p\": [0, 0, 0], \"n\": [0, 0, -1]}]}],"
+        " \"solver\": {\"method\": \"direct\", \"direct_samples\": 16384}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    const double *E = sol.grids[0].E, *se = sol.grids[0].E_stderr;
+    /* Upward: uniform 1000 over the hemisphere -> 1000 pi; the band covers
+     * azimuths -45..45 degrees: a quarter of the cosine-weighted hemisphere. */
+    double up = 1000.0 * CDL_PI + 2000.0 * CDL_PI / 4.0;
+    /* Facing +x: the uniform upper quarter-sphere gives 1000 pi / 2; the band
+     * (phi in [-45, 45], theta in [0, 90]) adds 2000 x int cos(phi) sin(theta)
+     * sin(theta) dtheta dphi = 2000 x (pi/4) x (2 sin 45) = 2000 x pi sqrt(2) / 4. */
+    double east = 1000.0 * CDL_PI / 2.0 + 2000.0 * CDL_PI * sqrt(2.0) / 4.0;
+    double west = 1000.0 * CDL_PI / 2.0;
+    const double expected[3] = {up, east, west};
+    for (int i = 0; i < 3; ++i) {
+        CHECK_MSG(se[i] > 0.0 && se[i] < 0.02 * expected[i], "point %d: stderr %g", i, se[i]);
+        /* 4 standard errors; the per-pixel constant luminance is exact for this image */
+        CHECK_MSG(fabs(E[i] - expected[i]) <= 4.0 * se[i], "point %d: E = %g, expected %g +- %g", i, E[i],
+                  expected[i], 4.0 * se[i]);
+    }
+    CHECK(E[3] == 0.0); /* facing down: the ground half is black */
+    CHECK(strstr(sol.plan_json, "sampled") != NULL);
+    done(scene, &sol);
+}
+
+/* Model only what the scene needs: a point light and a grid inside a closed
+ * box room: no surface can come between them, so no ray is traced, and the
+ * plan says so. Add an obstacle between them and shadow rays appear. */
+static void test_plan_no_rays(void)
+{
+    const char *room =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [0, 0, 0], \"max\": [5, 4, 3], \"inward\": true,"
+        " \"reflectance\": 0}],"
+        " \"luminaires\": [{\"type\": \"point\", \"position\": [2.5, 2, 2.9], \"intensity_cd\": 800}],"
+        " \"grids\": [{\"name\": \"floor\", \"type\": \"rect\", \"origin\": [0, 0, 0], \"u\": [5, 0, 0], \"v\": [0, 4, 0],"
+        " \"nu\": 10, \"nv\": 8}], \"solver\": {\"method\": \"direct\"}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(room, &scene, &sol, 1)) return;
+    CHECK(sol.rays == 0);
+    CHECK(strstr(sol.plan_json, "exact, no shadow rays") != NULL);
+    CHECK(strstr(sol.plan_json, "no environment work") != NULL);
+    /* points on the floor itself: the closed form everywhere */
+    for (size_t i = 0; i < sol.grids[0].grid.count; ++i) {
+        cdl_vec3 p = sol.grids[0].grid.points[i];
+        double d2 = (p.x - 2.5) * (p.x - 2.5) + (p.y - 2) * (p.y - 2) + 2.9 * 2.9;
+        CHECK_REL(sol.grids[0].E[i], 800.0 * 2.9 / sqrt(d2) / d2, 1e-12);
+    }
+    done(scene, &sol);
+    const char *obstacle =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [0, 0, 0], \"max\": [5, 4, 3], \"inward\": true,"
+        " \"reflectance\": 0}, {\"type\": \"disk\", \"center\": [2.5, 2, 1.5], \"normal\": [0, 0, 1], \"radius\": 0.3,"
+        " \"reflectance\": 0}],"
+        " \"luminaires\": [{\"type\": \"point\", \"position\": [2.5, 2, 2.9], \"intensity_cd\": 800}],"
+        " \"grids\": [{\"name\": \"floor\", \"type\": \"rect\", \"origin\": [0, 0, 0], \"u\": [5, 0, 0], \"v\": [0, 4, 0],"
+        " \"nu\": 10, \"nv\": 8}], \"solver\": {\"method\": \"direct\"}}";
+    if (!solve_json(obstacle, &scene, &sol, 1)) return;
+    CHECK(sol.rays == 80);
+    CHECK(strstr(sol.plan_json, "one shadow ray per point") != NULL);
+    /* the disk (radius 0.3 at half height) shadows the floor within radius
+     * 0.3 x 2.9 / 1.4 = 0.62 m of the centre: the 4 central cells */
+    int dark = 0;
+    for (size_t i = 0; i < sol.grids[0].grid.count; ++i) dark += sol.grids[0].E[i] == 0.0;
+    CHECK(dark == 4);
+    done(scene, &sol);
+}
+
 int main(void)
 {
     test_inverse_square_cosine();
@@ -549,5 +643,7 @@ int main(void)
     test_thread_determinism();
     test_ambient_occlusion();
     test_method_refusals();
+    test_image_environment();
+    test_plan_no_rays();
     return check_finish();
 }
