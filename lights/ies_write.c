@@ -8,7 +8,7 @@
  * its closing H = 360 row. LM-63 needs the vertical angles of type C data
  * to start at 0 or 90 and end at 90 or 180: a partial gamma range is padded
  * with zero intensity, which leaves the interpolated distribution (zero
- * outside the measured range) unchanged but for a 0.01 degree ramp.
+ * outside the measured range) unchanged but for a 0.001 degree ramp.
  */
 #include <math.h>
 #include <stdio.h>
@@ -20,7 +20,7 @@
 
 #define PER_LINE 10
 #define KEYWORD_CHUNK 200
-#define PAD_STEP_DEG 0.01
+#define PAD_STEP_DEG 0.001
 
 typedef struct ies_table {
     size_t nh, nv;

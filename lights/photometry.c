@@ -252,6 +252,9 @@ cdl_status cdl_photometry_set_table(cdl_photometry *p, cdl_photometric_type type
     p->max_i = max_k / nv;
     p->max_j = max_k % nv;
     p->flux_lm = cdl_photometry_compute_flux(p);
+    if (!isfinite(p->flux_lm))
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "expected candela values whose flux is a finite number, found values up to %g cd", max_cd);
     if (p->meta.format == CDL_PHOTOMETRY_FORMAT_TABLE) {
         p->meta.file_horizontal_count = nh;
         p->meta.file_vertical_count = nv;

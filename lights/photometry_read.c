@@ -61,14 +61,13 @@ static detected_format detect(const char *data, size_t size)
     size_t pos = 0;
     const char *line;
     size_t len;
-    int ldt_lines = 0, tilt = 0;
+    int ldt_lines = 0, tilt = 0, tag = 0;
     /* skip a UTF-8 byte-order mark */
     if (size >= 3 && (unsigned char)data[0] == 0xEF && (unsigned char)data[1] == 0xBB && (unsigned char)data[2] == 0xBF)
         pos = 3;
     for (unsigned n = 1; n <= 2000 && cdl_photometry_next_line(data, size, &pos, &line, &len); ++n) {
         cdl_photometry_trim(&line, &len);
-        if (n == 1 && (starts_with_nocase(line, len, "IESNA") || starts_with_nocase(line, len, "IES:")))
-            return FORMAT_IES;
+        if (n == 1) tag = starts_with_nocase(line, len, "IESNA") || starts_with_nocase(line, len, "IES:");
         if (!tilt && starts_with_nocase(line, len, "TILT")) {
             size_t k = 4;
             while (k < len && (line[k] == ' ' || line[k] == '\t')) ++k;
@@ -80,8 +79,10 @@ static detected_format detect(const char *data, size_t size)
             if ((len == 0 && optional) || (len > 0 && cdl_photometry_parse_number(line, len, 1, &v))) ++ldt_lines;
         }
     }
+    /* an EULUMDAT company line may read like an IES tag; an IES file never
+     * has six numeric lines right after its tag (keywords or TILT= come first) */
     if (ldt_lines == 6) return FORMAT_LDT;
-    return tilt ? FORMAT_IES : FORMAT_UNKNOWN;
+    return tag || tilt ? FORMAT_IES : FORMAT_UNKNOWN;
 }
 
 cdl_status cdl_photometry_read_memory(const void *bytes, size_t size, const char *name,

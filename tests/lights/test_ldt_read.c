@@ -279,8 +279,27 @@ static void test_bad_angles(void)
     free(text);
 }
 
+/* An EULUMDAT company line that reads like an IES tag (a converted file
+ * whose [MANUFAC] was "IESNA:LM-63-2002"): still EULUMDAT (a fuzzer finding). */
+static void test_company_like_a_tag(void)
+{
+    ldt_spec s = {1, 1, 0.0, (const double[]){0.0}, 19, g19, 1, {1}, {1000.0}, 1.0, 0.0, 0.0, NULL};
+    char *text = make_ldt(&s, flat);
+    const char *rest = strchr(text, '\n');
+    char *tagged = malloc(strlen(text) + 32);
+    sprintf(tagged, "IESNA:LM-63-2002%s", rest);
+    cdl_error err;
+    cdl_photometry *p = read_text(tagged, &err);
+    CHECK_MSG(p && cdl_photometry_get_metadata(p)->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT, "%s", err.message);
+    if (p) CHECK(strcmp(cdl_photometry_get_metadata(p)->ldt_company, "IESNA:LM-63-2002") == 0);
+    cdl_photometry_release(p);
+    free(tagged);
+    free(text);
+}
+
 int main(void)
 {
+    test_company_like_a_tag();
     test_symmetry_expansion();
     test_units_and_lamp_sets();
     test_irregular_and_partial();

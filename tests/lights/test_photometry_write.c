@@ -198,10 +198,10 @@ static void test_gamma_padding(void)
     if (a) {
         cdl_photometry_table t;
         cdl_photometry_get_table(a, &t);
-        CHECK(t.vertical_count == 17 && t.vertical_deg[15] == 140.01 && t.vertical_deg[16] == 180.0);
-        /* the 0.01 degree ramp from I(140) to 0 adds I(140) x 2 pi sin(140) x 0.01 deg / 2
-         * = 290 cd x pi x 0.643 x 1.75e-4 rad = 0.10 lm, 4.3e-5 of this table's 2364 lm */
-        CHECK_REL(cdl_photometry_flux(a).lm, cdl_photometry_flux(p).lm, 5e-5);
+        CHECK(t.vertical_count == 17 && t.vertical_deg[15] == 140.001 && t.vertical_deg[16] == 180.0);
+        /* the 0.001 degree ramp from I(140) to 0 adds I(140) x 2 pi sin(140) x 0.001 deg / 2
+         * = 290 cd x pi x 0.643 x 1.75e-5 rad = 0.010 lm, 4.3e-6 of this table's 2364 lm */
+        CHECK_REL(cdl_photometry_flux(a).lm, cdl_photometry_flux(p).lm, 5e-6);
         cdl_photometry_release(a);
     }
     cdl_photometry_notes_free(&notes);

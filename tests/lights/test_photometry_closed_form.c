@@ -1,0 +1,141 @@
+/* Closed forms through the file readers: IES and EULUMDAT tables of known
+ * distributions, written as text here, integrate to their closed-form
+ * flux, and the same distribution written as type A, B and C integrates
+ * alike and gives the same intensity in every direction. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "photometry_checks.h"
+#include "radiometry/constants.h"
+
+/* An IES file: nh horizontal x nv vertical angles, value = f(h, v). */
+static char *ies_text(int type, const double *h, int nh, const double *v, int nv, double (*f)(double, double))
+{
+    size_t cap = 4u << 20, n = 0;
+    char *t = malloc(cap);
+#define OUT(...) n += (size_t)snprintf(t + n, cap - n, __VA_ARGS__)
+    OUT("IESNA:LM-63-2002\n[TEST] closed form\nTILT=NONE\n1 -1 1 %d %d %d 2 0 0 0\n1 1 0\n", nv, nh, type);
+    for (int j = 0; j < nv; ++j) OUT("%.17g%s", v[j], (j + 1) % 10 ? " " : "\n");
+    OUT("\n");
+    for (int i = 0; i < nh; ++i) OUT("%.17g%s", h[i], (i + 1) % 10 ? " " : "\n");
+    OUT("\n");
+    for (int i = 0; i < nh; ++i) {
+        for (int j = 0; j < nv; ++j) OUT("%.17g%s", f(h[i], v[j]), (j + 1) % 10 ? " " : "\n");
+        OUT("\n");
+    }
+#undef OUT
+    return t;
+}
+
+static int steps(double *a, double first, double last, double step)
+{
+    int n = 0;
+    for (double x = first; x <= last + 1e-9; x += step) a[n++] = x;
+    a[n - 1] = last;
+    return n;
+}
+
+static double d2r(double x) { return x * CDL_DEG_TO_RAD; }
+static const double I0 = 1500.0;
+
+/* I0 cos(alpha), alpha the angle to the beam axis (-z), in each type's angles */
+static double cos_c(double c, double g) { return (void)c, I0 * cos(d2r(g)); }
+static double cos_ab(double h, double v) { return I0 * cos(d2r(h)) * cos(d2r(v)); }
+static double iso(double h, double v) { return (void)h, (void)v, 1000.0; }
+static double cone(double h, double v) { return (void)h, (void)v, I0; }
+
+static cdl_photometry *read(const char *text, cdl_error *err)
+{
+    cdl_photometry *p = pc_read_text("closed.ies", text, strlen(text), 1, err);
+    CHECK_MSG(p != NULL, "%s", err->message);
+    return p;
+}
+
+static void test_isotropic_and_cone(void)
+{
+    static double g[181], c[37];
+    int ng = steps(g, 0.0, 180.0, 5.0), nc = steps(c, 0.0, 360.0, 10.0);
+    cdl_error err;
+    /* a full 0..360 table of 1000 cd: 4000 pi lm (round-off only) */
+    char *t = ies_text(1, c, nc, g, ng, iso);
+    cdl_photometry *p = read(t, &err);
+    if (p) CHECK_REL(cdl_photometry_flux(p).lm, 4000.0 * CDL_PI, 1e-12);
+    cdl_photometry_release(p);
+    free(t);
+    /* a cone of constant I0 out to tau = 30 deg, nothing beyond: EULUMDAT
+     * allows the partial gamma range. 2 pi I0 (1 - cos tau), round-off only */
+    char ldt[4096];
+    size_t n = (size_t)snprintf(ldt, sizeof ldt,
+                                "cone\n1\n1\n1\n0\n7\n5\nr\nn\nn\nf\nd\n0\n0\n0\n0\n0\n0\n0\n0\n0\n100\n100\n1\n0\n1\n1\n"
+                                "L\n1000\nc\nr\n1\n0\n0\n0\n0\n0\n0\n0\n0\n0\n0\n0\n");
+    for (int j = 0; j <= 6; ++j) n += (size_t)snprintf(ldt + n, sizeof ldt - n, "%d\n", 5 * j);
+    for (int j = 0; j <= 6; ++j) n += (size_t)snprintf(ldt + n, sizeof ldt - n, "%g\n", I0);
+    p = pc_read_text("cone.ldt", ldt, n, 0, &err);
+    CHECK_MSG(p != NULL, "%s", err.message);
+    if (p) CHECK_REL(cdl_photometry_flux(p).lm, 2.0 * CDL_PI * I0 * (1.0 - cos(d2r(30.0))), 1e-12);
+    cdl_photometry_release(p);
+}
+
+/* The same I0 cos(alpha) as type C (gamma 0..90), type B and type A
+ * (H, V in -90..90): each flux is pi I0 within its interpolation error
+ * (1 degree steps: the linear interpolant of cos lies within h^2/8 = 3.8e-5
+ * of it, twice for the products of types A/B: tolerance 1e-4), and the
+ * three agree direction by direction within the same error. */
+static void test_types_agree(void)
+{
+    static double g[91], hv[181];
+    int ng = steps(g, 0.0, 90.0, 1.0), nhv = steps(hv, -90.0, 90.0, 1.0);
+    double zero = 0.0;
+    cdl_error err;
+    char *tc = ies_text(1, &zero, 1, g, ng, cos_c);
+    char *tb = ies_text(2, hv, nhv, hv, nhv, cos_ab);
+    char *ta = ies_text(3, hv, nhv, hv, nhv, cos_ab);
+    cdl_photometry *c = read(tc, &err), *b = read(tb, &err), *a = read(ta, &err);
+    if (a && b && c) {
+        CHECK_REL(cdl_photometry_flux(c).lm, CDL_PI * I0, 1e-4);
+        CHECK_REL(cdl_photometry_flux(b).lm, CDL_PI * I0, 1e-4);
+        CHECK_REL(cdl_photometry_flux(a).lm, CDL_PI * I0, 1e-4);
+        CHECK_REL(cdl_photometry_flux(a).lm, cdl_photometry_flux(b).lm, 1e-12); /* the same table, transposed roles */
+        /* both hemispheres: all of it below the horizon */
+        CHECK_REL(cdl_photometry_zone_flux(b, 0.0, 90.0).lm, cdl_photometry_flux(b).lm, 1e-12);
+        double worst = fmax(pc_max_difference(c, b), pc_max_difference(c, a));
+        CHECK_MSG(worst < 2e-4 * I0, "types disagree by %g cd", worst);
+    }
+    cdl_photometry_release(a);
+    cdl_photometry_release(b);
+    cdl_photometry_release(c);
+    free(ta);
+    free(tb);
+    free(tc);
+    /* a laterally symmetric type B half (H 0..90) is the full set */
+    static double half[91];
+    int nhalf = steps(half, 0.0, 90.0, 1.0);
+    char *th = ies_text(2, half, nhalf, hv, nhv, cos_ab);
+    cdl_photometry *h = read(th, &err);
+    if (h) CHECK_REL(cdl_photometry_flux(h).lm, CDL_PI * I0, 1e-4);
+    cdl_photometry_release(h);
+    free(th);
+    /* constant I0 over the front hemisphere as type B and type A: 2 pi I0
+     * exactly (the interpolant of a constant is that constant; the cos
+     * latitude weight is integrated in closed form) */
+    for (int type = 2; type <= 3; ++type) {
+        char *tf = ies_text(type, hv, nhv, hv, nhv, cone);
+        cdl_photometry *f = read(tf, &err);
+        if (f) {
+            CHECK_REL(cdl_photometry_flux(f).lm, 2.0 * CDL_PI * I0, 1e-12);
+            CHECK(cdl_photometry_intensity(f, cdl_vec3_make(0.0, 0.0, 1.0)).cd == 0.0); /* behind: nothing */
+        }
+        cdl_photometry_release(f);
+        free(tf);
+    }
+}
+
+int main(void)
+{
+    test_isotropic_and_cone();
+    test_types_agree();
+    return check_finish();
+}
