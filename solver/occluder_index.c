@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "radiometry/constants.h"
+
 #define LEAF_SIZE 4
 
 typedef struct box3 {
@@ -326,18 +328,17 @@ void cdl_region_sphere_view(cdl_convex_region *r, cdl_vec3 apex, cdl_vec3 center
     r->plane_count = 0;
     cdl_vec3 a = cdl_vec3_scale(d, 1.0 / dist);
     double sin_a = radius / dist, cos_a = sqrt(fmax(0.0, 1.0 - sin_a * sin_a));
-    /* A regular 16-sided pyramid whose planes touch the tangent cone
-     * (half-angle asin(r/d)) contains it: plane normals cos(a) u_k - sin(a) axis. */
+    /* A regular 16-sided pyramid circumscribing the tangent cone (half-angle
+     * a = asin(r / d)): plane k has normal m = cos(a) u_k - sin(a) axis
+     * through the apex. A cone direction cos(a) axis + sin(a) u(psi) gives
+     * m . w = sin(a) cos(a) (cos(psi - psi_k) - 1) <= 0, zero only along
+     * u_k: every plane touches the cone along one line and contains it. */
     const int sides = 16;
     cdl_vec3 e1 = fabs(a.x) < 0.9 ? cdl_vec3_normalize(cdl_vec3_cross(a, cdl_vec3_make(1, 0, 0)))
                                   : cdl_vec3_normalize(cdl_vec3_cross(a, cdl_vec3_make(0, 1, 0)));
     cdl_vec3 e2 = cdl_vec3_cross(a, e1);
-    /* Circumscribing a cone with a k-gon needs the planes tilted to the
-     * cone's half-angle measured at the faces' mid-lines, which the plane
-     * through the tangent line achieves; between two tangent lines the
-     * pyramid lies outside the cone, as required. */
     for (int k = 0; k < sides; ++k) {
-        double phi = 2.0 * 3.14159265358979323846 * k / sides;
+        double phi = CDL_TWO_PI * k / sides;
         cdl_vec3 u = cdl_vec3_add(cdl_vec3_scale(e1, cos(phi)), cdl_vec3_scale(e2, sin(phi)));
         cdl_vec3 m = cdl_vec3_sub(cdl_vec3_scale(u, cos_a), cdl_vec3_scale(a, sin_a));
         cdl_region_add(r, m, cdl_vec3_dot(m, apex));

@@ -11,6 +11,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "radiometry/constants.h"
 #include "radiometry/rng.h"
 #include "solver/direct.h"
 #include "solver/occluder_index.h"
@@ -177,10 +178,10 @@ static cdl_status build_occluders(const cdl_scene_geometry *g, cdl_occluder_inde
             cdl_vec3 e1 = fabs(n.x) < 0.9 ? cdl_vec3_normalize(cdl_vec3_cross(n, cdl_vec3_make(1, 0, 0)))
                                           : cdl_vec3_normalize(cdl_vec3_cross(n, cdl_vec3_make(0, 1, 0)));
             cdl_vec3 e2 = cdl_vec3_cross(n, e1);
-            double R = s->radius / cos(3.14159265358979323846 / disk_sides);
+            double R = s->radius / cos(CDL_PI / disk_sides);
             PUSH_V(s->center);
             for (int k = 0; k < disk_sides; ++k) {
-                double a = 2.0 * 3.14159265358979323846 * k / disk_sides;
+                double a = CDL_TWO_PI * k / disk_sides;
                 PUSH_V(cdl_vec3_add(s->center, cdl_vec3_add(cdl_vec3_scale(e1, R * cos(a)), cdl_vec3_scale(e2, R * sin(a)))));
             }
             for (int k = 0; k < disk_sides; ++k) PUSH_T(base, base + 1 + k, base + 1 + (k + 1) % disk_sides, o);
