@@ -13,6 +13,7 @@
 #include "solver/grid.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -120,7 +121,7 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
 
     /* Estimate the count from the outer ring's area before meshing. */
     cdl_mesh2d mesh;
-    cdl_status st = cdl_scene_polygon_triangulate(&plane, &spec->outer, NULL, 0, 0.0, &mesh, err);
+    cdl_status st = cdl_scene_polygon_triangulate(&plane, &spec->outer, NULL, 0, 0.0, SIZE_MAX, &mesh, err);
     if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", spec->json_path);
     double outer_area = mesh.area;
     cdl_mesh2d_release(&mesh);
@@ -131,7 +132,12 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
                              "points over %.6g m^2)",
                              spec->json_path, CDL_GRID_MAX_POINTS, p, estimate, outer_area);
 
-    st = cdl_scene_polygon_triangulate(&plane, &spec->outer, spec->holes, spec->hole_count, p, &mesh, err);
+    /* A mesh has about half as many vertices as triangles: allow four times
+     * the estimate, plus room for grading down to small features, then stop
+     * (a vertex a hair's breadth from an edge would otherwise take minutes). */
+    double vertex_cap = fmin((double)CDL_GRID_MAX_POINTS, 2.0 * estimate + 10000.0);
+    st = cdl_scene_polygon_triangulate(&plane, &spec->outer, spec->holes, spec->hole_count, p, (size_t)vertex_cap,
+                                       &mesh, err);
     if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", spec->json_path);
     if (mesh.triangle_count > CDL_GRID_MAX_POINTS) {
         size_t n = mesh.triangle_count;

@@ -43,6 +43,14 @@ typedef struct cdl_mesh2d {
 cdl_status cdl_mesh2d_triangulate(cdl_ring2d outer, const cdl_ring2d *holes, size_t hole_count, double max_edge,
                                   cdl_mesh2d *out, cdl_error *err);
 
+/* As cdl_mesh2d_triangulate, but refinement gives up with CDL_ERR_INPUT once
+ * the mesh has more than max_vertices vertices. Tiny features (a vertex a
+ * hair's breadth from an edge, an edge far shorter than max_edge) make
+ * Delaunay refinement grade down to their size, which can take millions of
+ * points or, below double precision, never end. */
+cdl_status cdl_mesh2d_triangulate_bounded(cdl_ring2d outer, const cdl_ring2d *holes, size_t hole_count,
+                                          double max_edge, size_t max_vertices, cdl_mesh2d *out, cdl_error *err);
+
 void cdl_mesh2d_release(cdl_mesh2d *mesh);
 
 #ifdef __cplusplus

@@ -11,6 +11,7 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <exception>
 #include <list>
@@ -89,6 +90,13 @@ int fail(cdl_error *err, cdl_status st, const char *what)
 extern "C" cdl_status cdl_mesh2d_triangulate(cdl_ring2d outer, const cdl_ring2d *holes, size_t hole_count,
                                              double max_edge, cdl_mesh2d *out, cdl_error *err)
 {
+    return cdl_mesh2d_triangulate_bounded(outer, holes, hole_count, max_edge, SIZE_MAX, out, err);
+}
+
+extern "C" cdl_status cdl_mesh2d_triangulate_bounded(cdl_ring2d outer, const cdl_ring2d *holes, size_t hole_count,
+                                                     double max_edge, size_t max_vertices, cdl_mesh2d *out,
+                                                     cdl_error *err)
+{
     out->xy = nullptr;
     out->triangles = nullptr;
     out->vertex_count = out->triangle_count = 0;
@@ -104,7 +112,14 @@ extern "C" cdl_status cdl_mesh2d_triangulate(cdl_ring2d outer, const cdl_ring2d 
             return (cdl_status)fail(err, CDL_ERR_INPUT, "the polygon has no area (its points are collinear)");
         if (max_edge > 0.0) {
             // Refine every bounded face; the parity marking below drops holes.
-            CGAL::refine_Delaunay_mesh_2(cdt, Criteria(0.125, max_edge));
+            // Step by step, so that a runaway refinement can be stopped.
+            CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, Criteria(0.125, max_edge));
+            mesher.init(false);
+            while (mesher.step_by_step_refine_mesh())
+                if (cdt.number_of_vertices() > max_vertices)
+                    return (cdl_status)fail(err, CDL_ERR_INPUT,
+                                            "the mesh needs more points than allowed (is a vertex almost on an "
+                                            "edge, or an edge far shorter than the spacing?)");
         }
         mark_depths(cdt);
 

@@ -25,6 +25,7 @@
 #include "solver/scene_geometry.h"
 
 #include <float.h>
+#include <stdint.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -279,7 +280,7 @@ static cdl_status add_polygon(cdl_scene_geometry *g, cdl_geometry_piece *tmpl, c
         return cdl_error_set(err, CDL_ERR_INPUT, "invalid polygon (defect %d at ring %ld vertex %zu)",
                              (int)problem.defect, problem.ring, problem.vertex);
     cdl_mesh2d mesh;
-    cdl_status st = cdl_scene_polygon_triangulate(&plane, &s->outer, s->holes, s->hole_count, 0.0, &mesh, err);
+    cdl_status st = cdl_scene_polygon_triangulate(&plane, &s->outer, s->holes, s->hole_count, 0.0, SIZE_MAX, &mesh, err);
     if (st != CDL_OK) return st;
     /* Map the mesh's vertices back to the rings' own 3D points (the
      * projection is exact for them, and triangulation adds none). */
@@ -342,6 +343,18 @@ static cdl_status add_surface(cdl_scene_geometry *g, const cdl_surface_spec *s, 
     return cdl_error_set(err, CDL_ERR_INTERNAL, "unknown surface kind %d", (int)s->kind);
 }
 
+/* Pieces from `first` on must have an area a double can hold: a shape so
+ * small that its area underflows would divide flux by zero. */
+static cdl_status check_areas(const cdl_scene_geometry *g, size_t first, cdl_error *err)
+{
+    for (size_t i = first; i < g->piece_count; ++i) {
+        double a = g->pieces[i].piece.area;
+        if (!(a > 0.0) || !isfinite(a))
+            return cdl_error_set(err, CDL_ERR_INPUT, "expected a surface of non-zero, finite area, found %g m^2", a);
+    }
+    return CDL_OK;
+}
+
 cdl_status cdl_scene_geometry_build(const cdl_scene *scene, cdl_scene_geometry **out, cdl_error *err)
 {
     *out = NULL;
@@ -360,7 +373,9 @@ cdl_status cdl_scene_geometry_build(const cdl_scene *scene, cdl_scene_geometry *
         tmpl.reflectance = s->reflectance;
         tmpl.two_sided = s->two_sided;
         tmpl.luminance_cd_m2 = s->luminance_cd_m2;
+        size_t first = g->piece_count;
         st = add_surface(g, s, &tmpl, err);
+        if (st == CDL_OK) st = check_areas(g, first, err);
         if (st != CDL_OK) cdl_error_prefix(err, "%s: %s: ", file, s->json_path);
     }
     for (size_t i = 0; i < scene->luminaire_count && st == CDL_OK; ++i) {
@@ -375,6 +390,7 @@ cdl_status cdl_scene_geometry_build(const cdl_scene *scene, cdl_scene_geometry *
         tmpl.two_sided = 1;
         size_t first = g->piece_count;
         st = add_surface(g, &l->shape, &tmpl, err);
+        if (st == CDL_OK) st = check_areas(g, first, err);
         if (st != CDL_OK) {
             cdl_error_prefix(err, "%s: %s: ", file, l->shape.json_path);
             break;

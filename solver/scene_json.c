@@ -170,6 +170,11 @@ cdl_status cdl_scene_json_read_number(const cdl_scene_parse *ctx, const cJSON *n
     if (!node && !required) return CDL_OK;
     if (!cJSON_IsNumber(node) || !isfinite(node->valuedouble) || !in_range(node->valuedouble, range))
         return cdl_scene_json_fail(ctx, path, range_text(range), node);
+    if (fabs(node->valuedouble) > CDL_SCENE_MAX_MAGNITUDE) {
+        char expected[96];
+        snprintf(expected, sizeof expected, "%s of magnitude at most %g", range_text(range), CDL_SCENE_MAX_MAGNITUDE);
+        return cdl_scene_json_fail(ctx, path, expected, node);
+    }
     *out = node->valuedouble;
     return CDL_OK;
 }
@@ -237,10 +242,11 @@ cdl_status cdl_scene_json_read_vec3(const cdl_scene_parse *ctx, const cJSON *nod
     double c[3];
     int i = 0;
     for (const cJSON *e = node->child; e; e = e->next, ++i) {
-        if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble)) {
-            char item[CDL_SCENE_PATH_MAX];
+        if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble) || fabs(e->valuedouble) > CDL_SCENE_MAX_MAGNITUDE) {
+            char item[CDL_SCENE_PATH_MAX], expected[64];
             cdl_scene_json_path_index(item, path, (size_t)i);
-            return cdl_scene_json_fail(ctx, item, "a finite number", e);
+            snprintf(expected, sizeof expected, "a finite number of magnitude at most %g", CDL_SCENE_MAX_MAGNITUDE);
+            return cdl_scene_json_fail(ctx, item, expected, e);
         }
         c[i] = e->valuedouble;
     }

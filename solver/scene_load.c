@@ -358,7 +358,8 @@ static cdl_status read_grid(const cdl_scene_parse *ctx, const cJSON *node, const
         const cJSON *spacing = field(node, path, "spacing", p);
         out->spacing = 0.0;
         if (spacing && !(cJSON_IsString(spacing) && strcmp(spacing->valuestring, "auto") == 0) &&
-            (!cJSON_IsNumber(spacing) || !isfinite(spacing->valuedouble) || !(spacing->valuedouble > 0.0)))
+            (!cJSON_IsNumber(spacing) || !isfinite(spacing->valuedouble) || !(spacing->valuedouble > 0.0) ||
+             spacing->valuedouble > CDL_SCENE_MAX_MAGNITUDE))
             return cdl_scene_json_fail(ctx, p, "a spacing in metres > 0 or \"auto\"", spacing);
         if (cJSON_IsNumber(spacing)) out->spacing = spacing->valuedouble;
         break;

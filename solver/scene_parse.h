@@ -59,6 +59,12 @@ cdl_status cdl_scene_json_check_array(const cdl_scene_parse *ctx, const cJSON *n
 
 /* ---- values -------------------------------------------------------------- */
 
+/* Largest magnitude of any number in a scene (coordinates in metres,
+ * photometric values): far beyond any real scene (the sun's luminance is
+ * 1.6e9 cd/m^2), small enough that squares and products stay finite and
+ * coordinates fit Embree's single precision. */
+#define CDL_SCENE_MAX_MAGNITUDE 1e12
+
 typedef enum cdl_scene_range {
     CDL_RANGE_ANY,          /* any finite number */
     CDL_RANGE_NONNEGATIVE,  /* >= 0 */

@@ -44,6 +44,15 @@ static int within_box(const double *a, const double *b, const double *c)
            c[1] <= fmax(a[1], b[1]);
 }
 
+/* Distance from point c to the closed segment ab. */
+static double point_segment_distance(const double *a, const double *b, const double *c)
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
+    double t = len2 > 0.0 ? ((c[0] - a[0]) * dx + (c[1] - a[1]) * dy) / len2 : 0.0;
+    t = fmax(0.0, fmin(1.0, t));
+    return hypot(c[0] - (a[0] + t * dx), c[1] - (a[1] + t * dy));
+}
+
 /* Do the closed segments pq and rs share a point? */
 static int segments_meet(const double *p, const double *q, const double *r, const double *s)
 {
@@ -51,6 +60,14 @@ static int segments_meet(const double *p, const double *q, const double *r, cons
     if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return 1;
     return (d1 == 0 && within_box(p, q, r)) || (d2 == 0 && within_box(p, q, s)) ||
            (d3 == 0 && within_box(r, s, p)) || (d4 == 0 && within_box(r, s, q));
+}
+
+/* Do the segments pq and rs meet, or pass closer than tol? */
+static int segments_near(const double *p, const double *q, const double *r, const double *s, double tol)
+{
+    if (segments_meet(p, q, r, s)) return 1;
+    return point_segment_distance(p, q, r) <= tol || point_segment_distance(p, q, s) <= tol ||
+           point_segment_distance(r, s, p) <= tol || point_segment_distance(r, s, q) <= tol;
 }
 
 /* Crossing-number test of point pt against a ring of n 2D points. */
@@ -115,14 +132,17 @@ static int set_problem(cdl_polygon_problem *pr, cdl_polygon_defect defect, long 
     return 0;
 }
 
-static int find_crossing(edge2d *edges, size_t n, cdl_polygon_problem *problem)
+/* Two edges that are not neighbours in a ring must not meet, nor come
+ * closer than tol (a feature that small is an artefact, and Delaunay
+ * refinement would grade the mesh down to it). */
+static int find_crossing(edge2d *edges, size_t n, double tol, cdl_polygon_problem *problem)
 {
     qsort(edges, n, sizeof *edges, compare_edges);
     for (size_t i = 0; i < n; ++i)
-        for (size_t j = i + 1; j < n && edges[j].min_x <= edges[i].max_x; ++j) {
+        for (size_t j = i + 1; j < n && edges[j].min_x <= edges[i].max_x + tol; ++j) {
             const edge2d *e = &edges[i], *f = &edges[j];
-            if (f->min_y > e->max_y || f->max_y < e->min_y || edges_adjacent(e, f)) continue;
-            if (!segments_meet(e->a, e->b, f->a, f->b)) continue;
+            if (f->min_y > e->max_y + tol || f->max_y < e->min_y - tol || edges_adjacent(e, f)) continue;
+            if (!segments_near(e->a, e->b, f->a, f->b, tol)) continue;
             /* Report the edge that comes first in the file first. */
             int swap = f->ring < e->ring || (f->ring == e->ring && f->index < e->index);
             if (swap) {
@@ -154,6 +174,7 @@ static int check_in_plane(const cdl_polygon_plane *plane, const cdl_ring3 *outer
         return 0;
     }
     *ok = 0;
+    double tol = CDL_POLYGON_MIN_EDGE * plane->size;
     size_t k = 0;
     for (long r = -1; r < (long)hole_count; ++r) {
         const cdl_ring3 *ring = ring_at(outer, holes, r);
@@ -163,8 +184,9 @@ static int check_in_plane(const cdl_polygon_plane *plane, const cdl_ring3 *outer
         for (size_t i = 0; i < ring->count; ++i) {
             const double *a = &xy[2 * (k + (i + ring->count - 1) % ring->count)];
             const double *b = &xy[2 * (k + i)], *c = &xy[2 * (k + (i + 1) % ring->count)];
-            /* b folds back when a, b, c are collinear and c lies on b's side towards a. */
-            if (orient2d(a, b, c) == 0.0 && (a[0] - b[0]) * (c[0] - b[0]) + (a[1] - b[1]) * (c[1] - b[1]) > 0.0) {
+            /* b folds the ring back (or makes a needle too thin to mesh) when c
+             * lies on edge ab or a on edge bc, to within tol. */
+            if (point_segment_distance(a, b, c) <= tol || point_segment_distance(b, c, a) <= tol) {
                 set_problem(problem, CDL_POLYGON_SPIKE, r, i);
                 goto done;
             }
@@ -181,7 +203,7 @@ static int check_in_plane(const cdl_polygon_plane *plane, const cdl_ring3 *outer
         }
         k += ring->count;
     }
-    if (find_crossing(edges, total, problem)) goto done;
+    if (find_crossing(edges, total, tol, problem)) goto done;
     /* No edges meet, so one vertex decides where a whole ring lies. */
     for (size_t h = 0; h < hole_count; ++h) {
         const double *p = &xy[2 * start[h + 1]];
@@ -212,15 +234,6 @@ int cdl_scene_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size
     problem->vertex = problem->other_vertex = 0;
     problem->distance = 0.0;
 
-    for (long r = -1; r < (long)hole_count; ++r) {
-        const cdl_ring3 *ring = ring_at(outer, holes, r);
-        for (size_t i = 0; i < ring->count; ++i) {
-            cdl_vec3 prev = ring->points[(i + ring->count - 1) % ring->count];
-            if (cdl_vec3_distance(prev, ring->points[i]) == 0.0)
-                return set_problem(problem, CDL_POLYGON_REPEATED_VERTEX, r, i);
-        }
-    }
-
     cdl_vec3 lo = outer->points[0], hi = outer->points[0];
     for (size_t i = 1; i < outer->count; ++i) {
         cdl_vec3 p = outer->points[i];
@@ -228,6 +241,19 @@ int cdl_scene_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size
         hi = cdl_vec3_make(fmax(hi.x, p.x), fmax(hi.y, p.y), fmax(hi.z, p.z));
     }
     plane->size = cdl_vec3_distance(lo, hi);
+
+    for (long r = -1; r < (long)hole_count; ++r) {
+        const cdl_ring3 *ring = ring_at(outer, holes, r);
+        for (size_t i = 0; i < ring->count; ++i) {
+            cdl_vec3 prev = ring->points[(i + ring->count - 1) % ring->count];
+            double d = cdl_vec3_distance(prev, ring->points[i]);
+            if (!(d > CDL_POLYGON_MIN_EDGE * plane->size)) {
+                set_problem(problem, CDL_POLYGON_REPEATED_VERTEX, r, i);
+                problem->distance = d;
+                return 0;
+            }
+        }
+    }
     plane->origin = outer->points[0];
     cdl_vec3 area2 = vector_area_twice(outer);
     double area2_len = cdl_vec3_length(area2);
@@ -271,7 +297,7 @@ int cdl_scene_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size
 
 cdl_status cdl_scene_polygon_triangulate(const cdl_polygon_plane *plane, const cdl_ring3 *outer,
                                          const cdl_ring3 *holes, size_t hole_count, double max_edge,
-                                         cdl_mesh2d *out, cdl_error *err)
+                                         size_t max_vertices, cdl_mesh2d *out, cdl_error *err)
 {
     size_t total = outer->count;
     for (size_t h = 0; h < hole_count; ++h) total += holes[h].count;
@@ -290,7 +316,7 @@ cdl_status cdl_scene_polygon_triangulate(const cdl_polygon_plane *plane, const c
         for (size_t i = 0; i < ring->count; ++i, ++k)
             cdl_scene_polygon_project(plane, ring->points[i], &xy[2 * k], &xy[2 * k + 1]);
     }
-    cdl_status st = cdl_mesh2d_triangulate(rings[0], rings + 1, hole_count, max_edge, out, err);
+    cdl_status st = cdl_mesh2d_triangulate_bounded(rings[0], rings + 1, hole_count, max_edge, max_vertices, out, err);
     free(xy);
     free(rings);
     return st;

@@ -30,11 +30,11 @@ typedef struct cdl_polygon_plane {
 
 typedef enum cdl_polygon_defect {
     CDL_POLYGON_VALID,
-    CDL_POLYGON_REPEATED_VERTEX,   /* vertex equals the one before it */
-    CDL_POLYGON_SPIKE,             /* vertex folds the ring back onto its previous edge */
+    CDL_POLYGON_REPEATED_VERTEX,   /* vertex (almost) equals the one before it */
+    CDL_POLYGON_SPIKE,             /* vertex folds the ring back onto an edge (or a needle thinner than the minimum) */
     CDL_POLYGON_NO_AREA,           /* outer ring collinear (or too thin to have a normal) */
     CDL_POLYGON_NOT_PLANAR,        /* vertex off the outer ring's plane */
-    CDL_POLYGON_CROSSING,          /* two edges cross or touch */
+    CDL_POLYGON_CROSSING,          /* two edges cross, touch, or come closer than the minimum */
     CDL_POLYGON_HOLE_OUTSIDE,      /* a hole not inside the outer ring */
     CDL_POLYGON_HOLE_IN_HOLE       /* a hole inside another hole */
 } cdl_polygon_defect;
@@ -52,6 +52,10 @@ typedef struct cdl_polygon_problem {
 /* Relative planarity tolerance: vertices within this fraction of the outer
  * ring's size from its plane are accepted. */
 #define CDL_POLYGON_PLANARITY_TOLERANCE 1e-6
+/* Smallest feature, as a fraction of the outer ring's size: consecutive
+ * vertices closer than this are a repeated vertex, edges closer than this
+ * a crossing (CAD artefacts, which Delaunay refinement would grade down to). */
+#define CDL_POLYGON_MIN_EDGE 1e-9
 
 /* Check the polygon and compute its plane. Returns 1 when valid (then *plane
  * is set); 0 with *problem filled otherwise. Rings need >= 3 points. */
@@ -63,10 +67,11 @@ void cdl_scene_polygon_project(const cdl_polygon_plane *plane, cdl_vec3 p, doubl
 cdl_vec3 cdl_scene_polygon_lift(const cdl_polygon_plane *plane, double x, double y);
 
 /* Triangulate a checked polygon in its plane (mesh2d.h: max_edge <= 0 keeps
- * the ring vertices only). The 2D mesh is in plane coordinates; its
- * triangles are counter-clockwise seen from the front. */
+ * the ring vertices only; refinement stops with an error beyond
+ * max_vertices). The 2D mesh is in plane coordinates; its triangles are
+ * counter-clockwise seen from the front. */
 cdl_status cdl_scene_polygon_triangulate(const cdl_polygon_plane *plane, const cdl_ring3 *outer,
                                          const cdl_ring3 *holes, size_t hole_count, double max_edge,
-                                         cdl_mesh2d *out, cdl_error *err);
+                                         size_t max_vertices, cdl_mesh2d *out, cdl_error *err);
 
 #endif

@@ -86,10 +86,14 @@ static cdl_status report_polygon(const cdl_scene_parse *ctx, const char *path, c
     switch (pr->defect) {
     case CDL_POLYGON_VALID: break;
     case CDL_POLYGON_REPEATED_VERTEX:
-        return cdl_scene_json_failf(ctx, where, "a point different from the one before it", "the same point again");
+        if (pr->distance == 0.0)
+            return cdl_scene_json_failf(ctx, where, "a point different from the one before it", "the same point again");
+        return cdl_scene_json_failf(ctx, where, "a point different from the one before it (farther than 1e-9 of the "
+                                    "polygon's size)", "one %.3g m from it", pr->distance);
     case CDL_POLYGON_SPIKE:
         return cdl_scene_json_failf(ctx, where, "a vertex where the outline turns",
-                                    "one that folds the outline back onto its previous edge");
+                                    "one that folds the outline back onto an edge (or makes a spike thinner than "
+                                    "1e-9 of the polygon's size)");
     case CDL_POLYGON_NO_AREA:
         cdl_scene_json_path_key(where, path, "vertices");
         return cdl_scene_json_failf(ctx, where, "a polygon with an area", "points that all lie on one line");
@@ -98,7 +102,8 @@ static cdl_status report_polygon(const cdl_scene_parse *ctx, const char *path, c
                                     "one %.6g m away from that plane", pr->distance);
     case CDL_POLYGON_CROSSING:
         ring_vertex_path(other, path, pr->other_ring, pr->other_vertex);
-        return cdl_scene_json_failf(ctx, where, "a simple polygon (no two edges cross or touch)",
+        return cdl_scene_json_failf(ctx, where,
+                                    "a simple polygon (no two edges cross, touch or come within 1e-9 of its size)",
                                     "the edge starting here meets the edge starting at %s", other);
     case CDL_POLYGON_HOLE_OUTSIDE: {
         char holes[CDL_SCENE_PATH_MAX];

@@ -6,6 +6,7 @@
 
 #include "check.h"
 #include "solver/grid.h"
+#include "solver/mesh2d.h"
 
 static cdl_scene *load(const char *grids)
 {
@@ -209,8 +210,27 @@ static void test_points(void)
     cdl_scene_release(s);
 }
 
+/* Refinement that would need more vertices than allowed stops with an error. */
+static void test_bounded_refinement(void)
+{
+    const double square[] = {0, 0, 4, 0, 4, 4, 0, 4};
+    cdl_ring2d ring = {square, 4};
+    cdl_mesh2d m;
+    cdl_error err;
+    /* A 4 m square at 0.5 m needs well over 50 vertices (about 5 points per p^2, half as many vertices). */
+    cdl_error_clear(&err);
+    CHECK(cdl_mesh2d_triangulate_bounded(ring, NULL, 0, 0.5, 50, &m, &err) == CDL_ERR_INPUT);
+    CHECK(strstr(err.message, "the mesh needs more points than allowed") != NULL);
+    CHECK(m.xy == NULL && m.triangles == NULL);
+    CHECK_OK(cdl_mesh2d_triangulate_bounded(ring, NULL, 0, 0.5, 5000, &m, &err), &err);
+    CHECK(m.vertex_count > 50 && m.vertex_count <= 5000);
+    CHECK_REL(m.area, 16.0, 1e-14);
+    cdl_mesh2d_release(&m);
+}
+
 int main(void)
 {
+    test_bounded_refinement();
     test_auto_spacing();
     test_rect();
     test_polygon();

@@ -307,9 +307,26 @@ int main(void)
     test_boxes();
     test_disks_spheres_luminaires();
 
+    /* A shape whose area underflows is refused (its flux would divide by zero). */
+    cdl_scene *scene = NULL;
+    cdl_scene_geometry *g = NULL;
+    cdl_error err;
+    CHECK_OK(cdl_scene_load_string("{\"version\": 1, \"luminaires\": [{\"type\": \"area\", \"shape\": {\"type\": "
+                                   "\"disk\", \"center\": [0,0,0], \"normal\": [0,0,1], \"radius\": 1e-200},"
+                                   " \"flux_lm\": 10}], " GRIDS "}",
+                                   "tiny.json", &scene, &err),
+             &err);
+    if (scene) {
+        g = NULL;
+        cdl_error_clear(&err);
+        CHECK(cdl_scene_geometry_build(scene, &g, &err) == CDL_ERR_INPUT && g == NULL);
+        CHECK_MSG(strstr(err.message, "tiny.json: luminaires[0].shape: expected a surface of non-zero, finite area") != NULL,
+                  "%s", err.message);
+        cdl_scene_release(scene);
+    }
+
     /* An empty scene has no pieces and zero extent. */
-    cdl_scene *scene;
-    cdl_scene_geometry *g = build("{\"version\": 1, " GRIDS "}", &scene);
+    g = build("{\"version\": 1, " GRIDS "}", &scene);
     if (g) {
         CHECK(cdl_scene_geometry_piece_count(g) == 0 && cdl_scene_geometry_extent(g) == 0.0);
         CHECK(!cdl_scene_geometry_ray_occluded(g, cdl_vec3_make(0, 0, 0), cdl_vec3_make(0, 0, 1),
