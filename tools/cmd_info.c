@@ -232,8 +232,13 @@ static void print_text(const char *path, const cdl_photometry *p, const cdl_phot
                cdl_photometry_output_factor(p) != 1.0 ? " (output factor applied)" : "");
     if (cdl_photometry_output_factor(p) != 1.0)
         printf("%-16s%.4g (applied at render time, not in the table)\n", "output factor", cdl_photometry_output_factor(p));
-    printf("%-16s%.6g cd at C %.4g, gamma %.4g\n", "max intensity", s->max_intensity.cd, s->max_c_deg,
+    printf("%-16s%.6g cd at C %.4g, gamma %.4g", "max intensity", s->max_intensity.cd, s->max_c_deg,
            s->max_gamma_deg);
+    if (m->format == CDL_PHOTOMETRY_FORMAT_IES && t.type == CDL_PHOTOMETRIC_TYPE_C)
+        printf(" (IES H %.4g, V %.4g)", fmod(360.0 - s->max_c_deg, 360.0), s->max_gamma_deg);
+    else if (t.type != CDL_PHOTOMETRIC_TYPE_C)
+        printf(" (type %s H %.4g, V %.4g)", type_letter(t.type), s->max_h_deg, s->max_v_deg);
+    printf("\n");
     print_angle("beam angle", s->beam_angle_deg);
     print_angle("field angle", s->field_angle_deg);
     printf("%-16s%s", "opening", cdl_luminous_shape_name(m->opening.shape));
