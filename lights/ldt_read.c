@@ -314,6 +314,13 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
                                "%zu: the file is truncated",
                                r.source, end_line, need, np, ng, h.isym, have);
     }
+    /* A number takes at least two bytes: a table larger than the rest of the
+     * file can hold is refused before it is allocated. */
+    if (st == CDL_OK && (double)np * (double)ng > 0.5 * (double)(size - s.pos) + 1.0)
+        st = cdl_error_set(err, CDL_ERR_INPUT,
+                           "%s:%u: expected %zu intensities (%zu C-planes x %zu gamma angles for Isym %ld), but the "
+                           "rest of the file is too short to hold them",
+                           r.source, s.line, np * ng, np, ng, h.isym);
     if (st == CDL_OK && !(cd = malloc(np * ng * sizeof *cd))) st = oom(&r);
     double scale = h.cfli * set1->flux_lm / 1000.0;
     char what[96];
