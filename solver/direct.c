@@ -22,28 +22,13 @@ const char *cdl_light_strategy_name(cdl_light_strategy s)
     return "unknown";
 }
 
-/* Ray offsets. Embree stores positions as floats after recentring the
- * scene on its bounding-box centre, so the triangle a point lies on is known
- * to about 1.2e-7 x |p - centre|. An offset of 1e-6 x (|p - centre| + 1e-3 x
- * the scene extent) clears that by an order of magnitude, stays far below
- * any feature of a lighting scene, and scales with the scene, so the same
- * room at 1e-3 or 1e3 times the size gives the same answers. */
-#define RAY_EPSILON_RELATIVE 1e-6
-
-double cdl_direct_ray_epsilon(const cdl_direct_context *ctx, cdl_vec3 p)
-{
-    cdl_vec3 d = cdl_vec3_sub(p, ctx->center);
-    double m = fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
-    return RAY_EPSILON_RELATIVE * (m + 1e-3 * ctx->extent) + DBL_MIN;
-}
-
 /* Geometric tolerance of region tests around p: a surface must reach ten
  * ray epsilons into the region to count as an occluder, so surfaces that
  * only touch it (the floor under a grid point, the ceiling around a
  * recessed emitter) do not. */
 static double region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p)
 {
-    return 10.0 * cdl_direct_ray_epsilon(ctx, p);
+    return 10.0 * cdl_scene_geometry_ray_epsilon(ctx->geometry, p);
 }
 
 static void grow(cdl_vec3 *lo, cdl_vec3 *hi, cdl_vec3 p)
@@ -95,14 +80,6 @@ void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points,
     }
 }
 
-/* Origin of a ray leaving p towards dir: nudged off the receiving plane on
- * the side the ray goes, so a point lying on a surface does not see it. */
-static cdl_vec3 ray_origin(cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double eps)
-{
-    double side = cdl_vec3_dot(n, dir) >= 0.0 ? 1.0 : -1.0;
-    return cdl_vec3_madd(p, side * eps, n);
-}
-
 static void record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_near, double t_far)
 {
     if (log->count == log->capacity) {
@@ -119,23 +96,16 @@ static void record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_near
     log->rays[log->count++] = rec;
 }
 
+/* Is the segment from p towards the light blocked? (offsets: scene_geometry.h) */
 static int shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
                     cdl_direct_sample_stats *stats)
 {
-    double eps = cdl_direct_ray_epsilon(ctx, p);
-    cdl_vec3 o = ray_origin(p, n, dir, eps);
-    double t_far = INFINITY;
-    if (isfinite(distance)) {
-        /* Stop short of the light's own surface: the origin moved by up to
-         * eps, and the far point is known to the float precision of its own
-         * coordinates, which 4 epsilons there cover 32 times over. */
-        double eps_far = cdl_direct_ray_epsilon(ctx, cdl_vec3_madd(p, distance, dir));
-        t_far = distance - eps - 4.0 * eps_far;
-    }
-    if (!(t_far > eps)) return 0;
+    cdl_vec3 o;
+    double t_near, t_far;
+    if (!cdl_scene_geometry_shadow_ray(ctx->geometry, p, n, dir, distance, &o, &t_near, &t_far)) return 0;
     stats->rays++;
-    if (ctx->log) record_ray(ctx->log, o, dir, eps, t_far);
-    return cdl_ray_scene_occluded(ctx->rays, o, dir, eps, t_far);
+    if (ctx->log) record_ray(ctx->log, o, dir, t_near, t_far);
+    return cdl_ray_scene_occluded(ctx->rays, o, dir, t_near, t_far);
 }
 
 /* Is the region between p and the whole of the light clear of surfaces? */
@@ -178,7 +148,7 @@ static void sample_light(const cdl_direct_context *ctx, const cdl_direct_light *
                 double c = cdl_vec3_dot(n, s.to_light);
                 if (c > 0.0) {
                     double contribution = s.L.cd_m2 * c / s.pdf;
-                    int occluded = ctx->rays ? shadowed(ctx, p, n, s.to_light, s.distance, stats) : 0;
+                    int occluded = ctx->geometry ? shadowed(ctx, p, n, s.to_light, s.distance, stats) : 0;
                     if (hidden_only ? occluded : !occluded) f = contribution;
                 }
             }
@@ -282,7 +252,7 @@ void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strat
 double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
                                     cdl_direct_sample_stats *stats)
 {
-    if (!ctx->rays) return 1.0;
+    if (!ctx->geometry) return 1.0;
     int k = (int)ceil(sqrt((double)(ctx->ao_samples > 0 ? ctx->ao_samples : 1)));
     cdl_rng_key key = {ctx->seed, cdl_rng_stream_id(stream, 0x616f /* "ao" */, 0)};
     cdl_frame frame = cdl_frame_from_normal(n);

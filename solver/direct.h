@@ -27,6 +27,7 @@
 #include "radiometry/vec3.h"
 #include "solver/occluder_index.h"
 #include "solver/ray_scene.h"
+#include "solver/scene_geometry.h"
 
 /* How a light's contribution is obtained (per light, per grid). */
 typedef enum cdl_light_strategy {
@@ -78,10 +79,9 @@ typedef struct cdl_direct_light {
 } cdl_direct_light;
 
 typedef struct cdl_direct_context {
-    const cdl_ray_scene *rays;        /* NULL when the scene has no geometry */
+    const cdl_scene_geometry *geometry;  /* rays and their epsilons; NULL: nothing can occlude */
+    const cdl_ray_scene *rays;        /* the geometry's rays; NULL when there is no geometry */
     const cdl_occluder_index *occluders; /* NULL when the scene has no geometry */
-    double extent;                    /* scene size (bounding-box diagonal) for ray epsilons */
-    cdl_vec3 center;                  /* bounding-box centre of the scene */
     const cdl_direct_light *lights;
     size_t light_count;
     int samples;                      /* per partly hidden extended light (rounded up to a square) */
@@ -89,10 +89,6 @@ typedef struct cdl_direct_context {
     uint64_t seed;
     cdl_ray_log *log;                 /* NULL, or records every shadow ray (one thread only) */
 } cdl_direct_context;
-
-/* Epsilon for rays leaving p: scale-invariant (a fraction of the scene
- * extent) and at least several float ulps of |p| (Embree works in float). */
-double cdl_direct_ray_epsilon(const cdl_direct_context *ctx, cdl_vec3 p);
 
 /* Decide each light's strategy for a set of receiver points (a grid). */
 void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points, size_t count,

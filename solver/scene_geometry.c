@@ -491,13 +491,31 @@ cdl_vec3 cdl_scene_geometry_ray_origin(const cdl_scene_geometry *g, cdl_vec3 p, 
     return cdl_vec3_madd(p, side > 0.0 ? eps : -eps, n);
 }
 
+int cdl_scene_geometry_shadow_ray(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                                  cdl_vec3 *origin, double *t_near, double *t_far)
+{
+    double eps = cdl_scene_geometry_ray_epsilon(g, p);
+    double far = INFINITY;
+    if (isfinite(distance)) {
+        /* The origin moved up to eps; the far point is known to the float
+         * precision of its own coordinates, which 4 epsilons there cover. */
+        double eps_far = cdl_scene_geometry_ray_epsilon(g, cdl_vec3_madd(p, distance, dir));
+        far = distance - eps - 4.0 * eps_far;
+    }
+    if (!(far > eps)) return 0;
+    *origin = cdl_scene_geometry_ray_origin(g, p, n, dir);
+    *t_near = eps;
+    *t_far = far;
+    return 1;
+}
+
 int cdl_scene_geometry_ray_occluded(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,
                                     double distance)
 {
-    double eps = cdl_scene_geometry_ray_epsilon(g, p);
-    double t_far = isfinite(distance) ? distance - eps : INFINITY;
-    if (!(t_far > eps)) return 0;
-    return cdl_ray_scene_occluded(g->rays, cdl_scene_geometry_ray_origin(g, p, n, dir), dir, eps, t_far);
+    cdl_vec3 o;
+    double t_near, t_far;
+    if (!cdl_scene_geometry_shadow_ray(g, p, n, dir, distance, &o, &t_near, &t_far)) return 0;
+    return cdl_ray_scene_occluded(g->rays, o, dir, t_near, t_far);
 }
 
 int cdl_scene_geometry_segment_occluded(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 p_normal, cdl_vec3 q,

@@ -82,6 +82,15 @@ double cdl_scene_geometry_ray_epsilon(const cdl_scene_geometry *geometry, cdl_ve
  * intersect: the first hit along dir (unit) up to t_max; hit->t is the
  * distance from p. */
 cdl_vec3 cdl_scene_geometry_ray_origin(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 n, cdl_vec3 toward);
+
+/* The segment ray_occluded tests, for callers that query or record it
+ * themselves: origin, and t in (t_near, t_far) along dir. The far end stops
+ * short of `distance` by the origin's move plus 4 epsilons at the far point,
+ * so a ray aimed at a point on a surface (a sample on an area emitter, a
+ * luminaire set into a ceiling) never reports that surface. Returns 0 when
+ * the segment is too short to hold anything. */
+int cdl_scene_geometry_shadow_ray(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,
+                                  double distance, cdl_vec3 *origin, double *t_near, double *t_far);
 int cdl_scene_geometry_ray_occluded(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,
                                     double distance);
 int cdl_scene_geometry_segment_occluded(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 p_normal, cdl_vec3 q,

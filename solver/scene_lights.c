@@ -354,8 +354,9 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
         cdl_area_params p;
         memset(&p, 0, sizeof p);
         p.shape = gp->shape;
-        double L_nits = sp->has_luminance ? sp->luminance_cd_m2 : sp->flux_lm / (CDL_PI * gp->area); /* Phi = pi L A */
-        p.luminance = cdl_nits(L_nits * mf);
+        /* The piece carries the luminance: luminance_cd_m2, or flux_lm as
+         * L = Phi / (pi A), times the maintenance factor (scene_geometry.c). */
+        p.luminance = cdl_nits(gp->luminance_cd_m2);
         proto.owner = (uint32_t)piece;
         st = describe_area(&proto, &gp->shape, err);
         if (st == CDL_OK) st = cdl_emitter_create_area(&p, &e, err);

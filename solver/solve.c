@@ -358,14 +358,11 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     st = cdl_scene_lights_build(scene, geometry, &lights, err);
     if (st != CDL_OK) goto fail;
 
-    cdl_vec3 lo, hi;
-    cdl_scene_geometry_bounds(geometry, &lo, &hi);
     cdl_direct_context ctx;
     memset(&ctx, 0, sizeof ctx);
+    ctx.geometry = pieces > 0 ? geometry : NULL;
     ctx.rays = pieces > 0 ? cdl_scene_geometry_rays(geometry) : NULL;
     ctx.occluders = occluders;
-    ctx.extent = cdl_scene_geometry_extent(geometry);
-    ctx.center = pieces > 0 ? cdl_vec3_scale(cdl_vec3_add(lo, hi), 0.5) : cdl_vec3_make(0, 0, 0);
     ctx.lights = lights.lights;
     ctx.light_count = lights.count;
     ctx.samples = out->settings.direct_samples;

@@ -294,6 +294,18 @@ static void test_lambertian_emitters(void)
     for (int i = 0; i < 5; ++i) CHECK(sol.grids[0].E_stderr[i] == 0.0);
     done(scene, &sol);
 
+    /* The same rectangle given by flux (Phi = pi L A) and a maintenance
+     * factor: L = 0.8 x 3000 lm / (pi x 0.72 m^2). */
+    const char *by_flux =
+        "{\"version\": 1, \"luminaires\": ["
+        " {\"type\": \"area\", \"shape\": {\"type\": \"rect\", \"origin\": [0, 0, 1.7], \"u\": [0, 0.6, 0], "
+        "\"v\": [1.2, 0, 0]}, \"flux_lm\": 3000, \"maintenance_factor\": 0.8}],"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}]}],"
+        " \"solver\": {\"method\": \"direct\"}}";
+    if (!solve_json(by_flux, &scene, &sol, 1)) return;
+    CHECK_REL(sol.grids[0].E[0], CDL_PI * (0.8 * 3000.0 / (CDL_PI * a * b)) * cf_parallel_corner(a, b, h), 1e-10);
+    done(scene, &sol);
+
     /* Disk on axis: E = pi L r^2 / (r^2 + h^2). */
     const char *disk =
         "{\"version\": 1, \"luminaires\": [{\"type\": \"area\", \"shape\": {\"type\": \"disk\", \"center\": [0, 0, 2], "
