@@ -56,19 +56,32 @@ int cdl_emitter_eval_positional(const cdl_emitter *e, cdl_vec3 position, cdl_emi
                                 cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out)
 {
     cdl_vec3 w = cdl_vec3_sub(position, p);
-    /* sqrt of the dot product where that cannot over- or underflow, the
-     * scaled length otherwise */
     double d2 = cdl_vec3_dot(w, w);
-    double d = (d2 > 1e-290 && d2 < 1e290) ? sqrt(d2) : cdl_vec3_length(w);
+    out->E = cdl_lux(0.0);
+    if (d2 > 1e-290 && d2 < 1e290) {
+        /* The common case, one square root and one division: with
+         * k = 1 / d, to_light = w k and E = I cos k^2 (a few ulps from
+         * I cos / d / d). */
+        double d = sqrt(d2), k = 1.0 / d;
+        out->to_light = cdl_vec3_scale(w, k);
+        out->distance = d;
+        double cos_theta = cdl_vec3_dot(n, out->to_light);
+        if (!(cos_theta > 0.0)) return 0;
+        cdl_luminous_intensity I = intensity_towards(e, cdl_vec3_neg(out->to_light));
+        /* Inverse-square and cosine law E = I cos(theta) / d^2 (Lambert,
+         * Photometria 1760). */
+        out->E = cdl_lux(I.cd * cos_theta * k * k);
+        return out->E.lx > 0.0;
+    }
+    /* Distances whose square leaves the double range: the scaled length and
+     * the overflow-safe form of conversions.c. */
+    double d = cdl_vec3_length(w);
     out->to_light = d > 0.0 ? cdl_vec3_scale(w, 1.0 / d) : cdl_vec3_make(0.0, 0.0, 0.0);
     out->distance = d;
-    out->E = cdl_lux(0.0);
     if (!(d > 0.0) || !isfinite(d)) return 0;
     double cos_theta = cdl_vec3_dot(n, out->to_light);
     if (!(cos_theta > 0.0)) return 0;
     cdl_luminous_intensity I = intensity_towards(e, cdl_vec3_neg(out->to_light));
-    /* Inverse-square and cosine law E = I cos(theta) / d^2 (Lambert,
-     * Photometria 1760), in the overflow-safe form of conversions.c. */
     out->E = cdl_illuminance_from_intensity(I, cos_theta, cdl_metres(d));
     return out->E.lx > 0.0;
 }

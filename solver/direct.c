@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "radiometry/rng.h"
 #include "radiometry/sampling.h"
@@ -166,16 +167,18 @@ size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, 
     size_t count = 0;
     for (size_t l = 0; l < ctx->light_count; ++l) {
         const cdl_direct_light *light = &ctx->lights[l];
-        if (light->has_cone) {
-            /* The ball (seen from the light under half-angle asin(r/d)) meets
-             * the cone iff the angle from the axis to the ball's centre is
-             * less than the cone's half-angle plus the ball's. */
+        if (light->has_cone && light->cone_angle < 0.5 * CDL_PI) {
+            /* The ball, seen from the light under the half-angle b with
+             * sin b = r / d, meets the cone (half-angle a) iff the angle t
+             * from the axis to the ball's centre is below a + b, i.e. iff
+             * cos t > cos(a + b) = cos a cos b - sin a sin b; a and b are
+             * both below pi / 2, so a + b < pi and the cosine decides. */
             cdl_vec3 v = cdl_vec3_sub(center, light->cone_position);
-            double d = cdl_vec3_length(v);
+            double d = sqrt(cdl_vec3_dot(v, v));
             if (d > radius) {
-                double c = cdl_vec3_dot(v, light->cone_axis) / d;
-                double to_centre = acos(fmax(-1.0, fmin(1.0, c)));
-                if (to_centre > light->cone_angle + asin(radius / d)) continue;
+                double sin_b = radius / d, cos_b = sqrt(1.0 - sin_b * sin_b);
+                double cos_ab = light->cone_cos * cos_b - light->cone_sin * sin_b;
+                if (cdl_vec3_dot(v, light->cone_axis) <= cos_ab * d) continue;
             }
         }
         active[count++] = (uint32_t)l;

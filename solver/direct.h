@@ -75,7 +75,7 @@ typedef struct cdl_direct_light {
     int has_cone;
     cdl_vec3 cone_position, cone_axis;
     double cone_angle;                /* radians */
-    double cone_cos;                  /* cos(cone_angle) */
+    double cone_cos, cone_sin;        /* cos and sin of cone_angle */
 } cdl_direct_light;
 
 typedef struct cdl_direct_context {

@@ -479,7 +479,8 @@ double cdl_scene_geometry_extent(const cdl_scene_geometry *g)
 double cdl_scene_geometry_ray_epsilon(const cdl_scene_geometry *g, cdl_vec3 p)
 {
     cdl_vec3 d = cdl_vec3_sub(p, g->centre);
-    double m = fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
+    double ax = fabs(d.x), ay = fabs(d.y), az = fabs(d.z);
+    double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az); /* p finite: no NaN to guard */
     return EPSILON_EXTENT_FRACTION * g->extent + EPSILON_FLOAT_FRACTION * m;
 }
 

@@ -245,6 +245,7 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
         light.has_cone = 1;
         light.cone_angle = acos(fmax(-1.0, fmin(1.0, cos_min)));
         light.cone_cos = cos_min;
+        light.cone_sin = sin(light.cone_angle);
     }
     cdl_direct_light *nl = realloc(L->lights, (L->count + 1) * sizeof *nl);
     if (!nl) {

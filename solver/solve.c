@@ -242,8 +242,12 @@ static void *worker_main(void *arg)
         cdl_vec3 lo = grid->points[start], hi = grid->points[start];
         for (size_t i = start + 1; i < end; ++i) {
             cdl_vec3 q = grid->points[i];
-            lo = cdl_vec3_make(fmin(lo.x, q.x), fmin(lo.y, q.y), fmin(lo.z, q.z));
-            hi = cdl_vec3_make(fmax(hi.x, q.x), fmax(hi.y, q.y), fmax(hi.z, q.z));
+            lo.x = q.x < lo.x ? q.x : lo.x;
+            lo.y = q.y < lo.y ? q.y : lo.y;
+            lo.z = q.z < lo.z ? q.z : lo.z;
+            hi.x = q.x > hi.x ? q.x : hi.x;
+            hi.y = q.y > hi.y ? q.y : hi.y;
+            hi.z = q.z > hi.z ? q.z : hi.z;
         }
         size_t active = cdl_direct_select_lights(job->ctx, cdl_vec3_scale(cdl_vec3_add(lo, hi), 0.5),
                                                  0.5 * cdl_vec3_distance(lo, hi), w->active);
