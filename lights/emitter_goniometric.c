@@ -82,9 +82,41 @@ static cdl_luminous_flux gonio_flux(const cdl_emitter *e)
     return cdl_lumens(cdl_photometry_flux(g->photometry).lm * g->factor);
 }
 
+/* The hot path of direct illuminance, for the common rotationally
+ * symmetric table: the same E = I cos / d^2 as cdl_emitter_eval_positional
+ * with gonio_intensity, computed in one pass (one square root, one
+ * division, no azimuth); other tables and extreme distances take the
+ * general path. */
 static int gonio_eval_delta(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out)
 {
-    return cdl_emitter_eval_positional(e, as_gonio(e)->position, gonio_intensity, p, n, out);
+    const goniometric_emitter *g = as_gonio(e);
+    cdl_vec3 w = cdl_vec3_sub(g->position, p);
+    double d2 = cdl_vec3_dot(w, w);
+    if (!g->rotational || !(d2 > 1e-290 && d2 < 1e290))
+        return cdl_emitter_eval_positional(e, g->position, gonio_intensity, p, n, out);
+    double d = sqrt(d2), k = 1.0 / d;
+    out->to_light = cdl_vec3_scale(w, k);
+    out->distance = d;
+    out->E = cdl_lux(0.0);
+    double cos_theta = cdl_vec3_dot(n, out->to_light);
+    if (!(cos_theta > 0.0)) return 0;
+    /* cos(gamma) of the direction light -> p, -to_light, in the luminaire's
+     * frame: -(-to_light . z_luminaire). */
+    double c = cdl_vec3_dot(g->col[2], out->to_light);
+    if (g->has_cone && c <= g->cone_cos) return 0;
+    double gamma_deg;
+    if (fabs(c) < 0.7) {
+        gamma_deg = acos(c) * CDL_RAD_TO_DEG;
+    } else {
+        /* near the poles from sin(gamma), which acos would lose */
+        double x = cdl_vec3_dot(g->col[0], out->to_light), y = cdl_vec3_dot(g->col[1], out->to_light);
+        double s = asin(fmin(1.0, sqrt(x * x + y * y))) * CDL_RAD_TO_DEG;
+        gamma_deg = c > 0.0 ? s : 180.0 - s;
+    }
+    double I = cdl_photometry_intensity_c_gamma(g->photometry, 0.0, gamma_deg).cd * g->factor;
+    /* Inverse-square and cosine law E = I cos(theta) / d^2 (Lambert, Photometria 1760). */
+    out->E = cdl_lux(I * cos_theta * k * k);
+    return out->E.lx > 0.0;
 }
 
 static int gonio_cone(const cdl_emitter *e, cdl_vec3 *position, cdl_vec3 *axis, double *cos_min)

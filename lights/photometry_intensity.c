@@ -92,7 +92,7 @@ double cdl_photometry_eval_hv(const cdl_photometry *p, double h, double v)
 {
     if (!isfinite(h) || !isfinite(v)) return 0.0;
     if (p->type == CDL_PHOTOMETRIC_TYPE_C) {
-        h = cdl_photometry_reduce_c(p->symmetry, h);
+        if (p->nh > 1) h = cdl_photometry_reduce_c(p->symmetry, h); /* one plane: C does not matter */
     } else {
         if (p->h_mirror) h = fabs(h);
         if (p->v_mirror) v = fabs(v);
@@ -180,11 +180,14 @@ cdl_luminous_intensity cdl_photometry_intensity_c_gamma(const cdl_photometry *p,
     if (p->type == CDL_PHOTOMETRIC_TYPE_C) {
         if (!isfinite(c_deg) || !isfinite(gamma_deg)) return cdl_candelas(0.0);
         /* gamma outside [0, 180] names the same direction as its reflection through the pole */
-        double g = fmod(gamma_deg, 360.0);
-        if (g < 0.0) g += 360.0;
-        if (g > 180.0) {
-            g = 360.0 - g;
-            c_deg += 180.0;
+        double g = gamma_deg;
+        if (!(g >= 0.0 && g <= 180.0)) {
+            g = fmod(g, 360.0);
+            if (g < 0.0) g += 360.0;
+            if (g > 180.0) {
+                g = 360.0 - g;
+                c_deg += 180.0;
+            }
         }
         return cdl_candelas(cdl_photometry_eval_hv(p, c_deg, g));
     }

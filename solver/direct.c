@@ -29,7 +29,7 @@ const char *cdl_light_strategy_name(cdl_light_strategy s)
  * recessed emitter) do not. */
 static double region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p)
 {
-    return 10.0 * cdl_scene_geometry_ray_epsilon(ctx->geometry, p);
+    return 10.0 * cdl_ray_offsets_epsilon(&ctx->offsets, p);
 }
 
 static void grow(cdl_vec3 *lo, cdl_vec3 *hi, cdl_vec3 p)
@@ -103,7 +103,7 @@ static int shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_v
 {
     cdl_vec3 o;
     double t_near, t_far;
-    if (!cdl_scene_geometry_shadow_ray(ctx->geometry, p, n, dir, distance, &o, &t_near, &t_far)) return 0;
+    if (!cdl_ray_offsets_shadow_ray(&ctx->offsets, p, n, dir, distance, &o, &t_near, &t_far)) return 0;
     stats->rays++;
     if (ctx->log) record_ray(ctx->log, o, dir, t_near, t_far);
     return cdl_ray_scene_occluded(ctx->rays, o, dir, t_near, t_far);
@@ -191,9 +191,16 @@ static double delta_contribution(const cdl_direct_context *ctx, const cdl_direct
                                  cdl_vec3 p, cdl_vec3 n, cdl_direct_sample_stats *stats)
 {
     if (light->has_cone) {
-        /* Outside the emission cone: no light, no lookup. */
+        /* Outside the emission cone: no light, no lookup. For cones up to a
+         * hemisphere (cos >= 0) the test needs no square root:
+         * along <= cos |v|  <=>  along <= 0 or along^2 <= cos^2 |v|^2. */
         cdl_vec3 v = cdl_vec3_sub(p, light->cone_position);
-        if (cdl_vec3_dot(v, light->cone_axis) <= light->cone_cos * sqrt(cdl_vec3_dot(v, v))) return 0.0;
+        double along = cdl_vec3_dot(v, light->cone_axis);
+        if (light->cone_cos >= 0.0) {
+            if (along <= 0.0 || along * along <= light->cone_cos2 * cdl_vec3_dot(v, v)) return 0.0;
+        } else if (along <= light->cone_cos * sqrt(cdl_vec3_dot(v, v))) {
+            return 0.0;
+        }
     }
     cdl_delta_light d;
     if (!cdl_emitter_eval_delta(light->emitter, p, n, &d) || !(d.E.lx > 0.0)) return 0.0;

@@ -52,6 +52,8 @@ typedef struct cdl_ray_log {
     int overflow;                     /* 1 if a ray could not be recorded (out of memory) */
 } cdl_ray_log;
 
+#define CDL_DIRECT_OUTLINE_MAX (CDL_REGION_MAX_PLANES - 2)
+
 /* A light as the direct solver sees it. */
 typedef struct cdl_direct_light {
     const cdl_emitter *emitter;
@@ -62,8 +64,9 @@ typedef struct cdl_direct_light {
     int upper_only;                   /* environment: sky above the horizon of `up` only */
     cdl_vec3 up;
     /* A convex outline bounding the emitter (area emitters), for the
-     * per-point visibility region; outline_count = 0 when there is none. */
-    cdl_vec3 outline[CDL_REGION_MAX_PLANES - 2];
+     * per-point visibility region; outline_count = 0 when there is none.
+     * Kept out of line so that the records the per-point loop walks stay small. */
+    cdl_vec3 *outline;                /* up to CDL_DIRECT_OUTLINE_MAX points, owned by whoever built the light */
     int outline_count;
     int outline_is_sphere;            /* use center/radius instead */
     cdl_vec3 sphere_center;
@@ -76,10 +79,12 @@ typedef struct cdl_direct_light {
     cdl_vec3 cone_position, cone_axis;
     double cone_angle;                /* radians */
     double cone_cos, cone_sin;        /* cos and sin of cone_angle */
+    double cone_cos2;                 /* cos^2 of cone_angle */
 } cdl_direct_light;
 
 typedef struct cdl_direct_context {
     const cdl_scene_geometry *geometry;  /* rays and their epsilons; NULL: nothing can occlude */
+    cdl_ray_offsets offsets;          /* the geometry's ray offsets (when geometry != NULL) */
     const cdl_ray_scene *rays;        /* the geometry's rays; NULL when there is no geometry */
     const cdl_occluder_index *occluders; /* NULL when the scene has no geometry */
     const cdl_direct_light *lights;

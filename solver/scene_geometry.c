@@ -476,38 +476,39 @@ double cdl_scene_geometry_extent(const cdl_scene_geometry *g)
     return g->extent;
 }
 
+void cdl_scene_geometry_ray_offsets(const cdl_scene_geometry *g, cdl_ray_offsets *o)
+{
+    o->centre = g->centre;
+    o->extent_term = EPSILON_EXTENT_FRACTION * g->extent;
+    o->float_fraction = EPSILON_FLOAT_FRACTION;
+}
+
 double cdl_scene_geometry_ray_epsilon(const cdl_scene_geometry *g, cdl_vec3 p)
 {
-    cdl_vec3 d = cdl_vec3_sub(p, g->centre);
-    double ax = fabs(d.x), ay = fabs(d.y), az = fabs(d.z);
-    double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az); /* p finite: no NaN to guard */
-    return EPSILON_EXTENT_FRACTION * g->extent + EPSILON_FLOAT_FRACTION * m;
+    cdl_ray_offsets o;
+    cdl_scene_geometry_ray_offsets(g, &o);
+    return cdl_ray_offsets_epsilon(&o, p);
+}
+
+/* p moved eps along n, to the side `toward` points to. */
+static cdl_vec3 offset_origin(cdl_vec3 p, cdl_vec3 n, cdl_vec3 toward, double eps)
+{
+    double side = cdl_vec3_dot(n, toward);
+    if (side == 0.0) return p;
+    return cdl_vec3_madd(p, side > 0.0 ? eps : -eps, n);
 }
 
 cdl_vec3 cdl_scene_geometry_ray_origin(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 n, cdl_vec3 toward)
 {
-    double side = cdl_vec3_dot(n, toward);
-    if (side == 0.0) return p;
-    double eps = cdl_scene_geometry_ray_epsilon(g, p);
-    return cdl_vec3_madd(p, side > 0.0 ? eps : -eps, n);
+    return offset_origin(p, n, toward, cdl_scene_geometry_ray_epsilon(g, p));
 }
 
 int cdl_scene_geometry_shadow_ray(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
                                   cdl_vec3 *origin, double *t_near, double *t_far)
 {
-    double eps = cdl_scene_geometry_ray_epsilon(g, p);
-    double far = INFINITY;
-    if (isfinite(distance)) {
-        /* The origin moved up to eps; the far point is known to the float
-         * precision of its own coordinates, which 4 epsilons there cover. */
-        double eps_far = cdl_scene_geometry_ray_epsilon(g, cdl_vec3_madd(p, distance, dir));
-        far = distance - eps - 4.0 * eps_far;
-    }
-    if (!(far > eps)) return 0;
-    *origin = cdl_scene_geometry_ray_origin(g, p, n, dir);
-    *t_near = eps;
-    *t_far = far;
-    return 1;
+    cdl_ray_offsets o;
+    cdl_scene_geometry_ray_offsets(g, &o);
+    return cdl_ray_offsets_shadow_ray(&o, p, n, dir, distance, origin, t_near, t_far);
 }
 
 int cdl_scene_geometry_ray_occluded(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,

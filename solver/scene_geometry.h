@@ -12,6 +12,7 @@
 #define CANDELA_SOLVER_SCENE_GEOMETRY_H
 
 #include <stddef.h>
+#include <math.h>
 #include <stdint.h>
 
 #include "lights/emitter.h"
@@ -56,6 +57,46 @@ double cdl_scene_geometry_extent(const cdl_scene_geometry *geometry);
  * count (0 for spheres, with NULL arrays). Valid while the geometry lives. */
 size_t cdl_scene_geometry_piece_triangles(const cdl_scene_geometry *geometry, size_t geom_id, const double **xyz,
                                           size_t *vertex_count, const uint32_t **triangles);
+
+/* The ray offsets of a scene, for callers that build many rays themselves
+ * (the direct solver's hot loop): the functions below are these, inlined. */
+typedef struct cdl_ray_offsets {
+    cdl_vec3 centre;          /* bounding-box centre (where the ray scene works) */
+    double extent_term;       /* 1e-5 x extent */
+    double float_fraction;    /* 2^-16 */
+} cdl_ray_offsets;
+
+void cdl_scene_geometry_ray_offsets(const cdl_scene_geometry *geometry, cdl_ray_offsets *offsets);
+
+/* epsilon(p) = extent_term + float_fraction x |p - centre|_inf */
+static inline double cdl_ray_offsets_epsilon(const cdl_ray_offsets *o, cdl_vec3 p)
+{
+    double ax = fabs(p.x - o->centre.x), ay = fabs(p.y - o->centre.y), az = fabs(p.z - o->centre.z);
+    double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az); /* p finite: no NaN to guard */
+    return o->extent_term + o->float_fraction * m;
+}
+
+/* The shadow segment of cdl_scene_geometry_shadow_ray (documented there). */
+static inline int cdl_ray_offsets_shadow_ray(const cdl_ray_offsets *o, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,
+                                             double distance, cdl_vec3 *origin, double *t_near, double *t_far)
+{
+    double eps = cdl_ray_offsets_epsilon(o, p);
+    double far = INFINITY;
+    if (isfinite(distance)) {
+        /* The origin moves up to eps; the far point q is known to the float
+         * precision of its own coordinates, which 4 epsilons there cover;
+         * |q - c| <= |p - c| + distance bounds epsilon(q) by eps + 2^-16 distance. */
+        double eps_far = eps + o->float_fraction * distance;
+        far = distance - eps - 4.0 * eps_far;
+    }
+    if (!(far > eps)) return 0;
+    /* off the surface p may lie on, to the side the ray goes */
+    double side = cdl_vec3_dot(n, dir);
+    *origin = side == 0.0 ? p : cdl_vec3_madd(p, side > 0.0 ? eps : -eps, n);
+    *t_near = eps;
+    *t_far = far;
+    return 1;
+}
 
 /* Ray epsilon that works at every scale: a small fraction of the scene
  * extent plus the float resolution at the magnitude of p (measured from the

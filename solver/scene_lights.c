@@ -109,7 +109,7 @@ static cdl_status outline_of_triangles(cdl_direct_light *l, const cdl_shape *s, 
         pts[2 * i + 1] = cdl_vec3_dot(d, e2);
     }
     int h = convex_hull_2d(pts, (int)s->vertex_count, hull);
-    const int max_outline = (int)(sizeof l->outline / sizeof l->outline[0]);
+    const int max_outline = CDL_DIRECT_OUTLINE_MAX;
     if (h >= 3 && h <= max_outline) {
         for (int i = 0; i < h; ++i)
             l->outline[i] = cdl_vec3_add(o, cdl_vec3_add(cdl_vec3_scale(e1, hull[2 * i]), cdl_vec3_scale(e2, hull[2 * i + 1])));
@@ -135,6 +135,8 @@ static cdl_status outline_of_triangles(cdl_direct_light *l, const cdl_shape *s, 
 static cdl_status describe_area(cdl_direct_light *l, const cdl_shape *s, cdl_error *err)
 {
     l->has_closed_form = 1;
+    l->outline = malloc(CDL_DIRECT_OUTLINE_MAX * sizeof *l->outline);
+    if (!l->outline) return cdl_error_out_of_memory(err);
     switch (s->kind) {
     case CDL_SHAPE_RECT: {
         cdl_vec3 c[4] = {s->origin, cdl_vec3_add(s->origin, s->u), cdl_vec3_add(cdl_vec3_add(s->origin, s->u), s->v),
@@ -236,6 +238,8 @@ static size_t find_luminaire_piece(const cdl_scene_geometry *g, size_t k)
     return SIZE_MAX;
 }
 
+/* Append a light; takes the emitter and the prototype's outline, releasing
+ * both if it fails. */
 static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kind, const cdl_direct_light *proto,
                             cdl_error *err)
 {
@@ -246,22 +250,26 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
         light.cone_angle = acos(fmax(-1.0, fmin(1.0, cos_min)));
         light.cone_cos = cos_min;
         light.cone_sin = sin(light.cone_angle);
+        light.cone_cos2 = cos_min * cos_min;
     }
     cdl_direct_light *nl = realloc(L->lights, (L->count + 1) * sizeof *nl);
     if (!nl) {
         cdl_emitter_release(e);
+        free(light.outline);
         return cdl_error_out_of_memory(err);
     }
     L->lights = nl;
     cdl_emitter **ne = realloc(L->emitters, (L->count + 1) * sizeof *ne);
     if (!ne) {
         cdl_emitter_release(e);
+        free(light.outline);
         return cdl_error_out_of_memory(err);
     }
     L->emitters = ne;
     const char **nk = realloc(L->kinds, (L->count + 1) * sizeof *nk);
     if (!nk) {
         cdl_emitter_release(e);
+        free(light.outline);
         return cdl_error_out_of_memory(err);
     }
     L->kinds = nk;
@@ -393,7 +401,10 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
         break;
     }
     }
-    if (st != CDL_OK) return fail_at(err, scene, sp->json_path, st);
+    if (st != CDL_OK) {
+        free(proto.outline);
+        return fail_at(err, scene, sp->json_path, st);
+    }
     return add_light(L, e, luminaire_kind_name(sp->kind), &proto, err);
 }
 
@@ -436,7 +447,10 @@ cdl_status cdl_scene_lights_build(const cdl_scene *scene, const cdl_scene_geomet
         cdl_emitter *e = NULL;
         cdl_status st = describe_area(&proto, &gp->shape, err);
         if (st == CDL_OK) st = cdl_emitter_create_area(&p, &e, err);
-        if (st == CDL_OK) st = add_light(out, e, "emitting surface", &proto, err);
+        if (st == CDL_OK)
+            st = add_light(out, e, "emitting surface", &proto, err); /* owns the outline, also on failure */
+        else
+            free(proto.outline);
         if (st != CDL_OK) {
             fail_at(err, scene, ss->json_path, st);
             cdl_scene_lights_release(out);
@@ -449,7 +463,10 @@ cdl_status cdl_scene_lights_build(const cdl_scene *scene, const cdl_scene_geomet
 void cdl_scene_lights_release(cdl_scene_lights *L)
 {
     if (!L) return;
-    for (size_t i = 0; i < L->count; ++i) cdl_emitter_release(L->emitters[i]);
+    for (size_t i = 0; i < L->count; ++i) {
+        cdl_emitter_release(L->emitters[i]);
+        free(L->lights[i].outline);
+    }
     for (size_t i = 0; i < L->photometry_count; ++i) cdl_photometry_release(L->photometries[i]);
     free(L->lights);
     free(L->emitters);

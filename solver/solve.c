@@ -365,6 +365,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     cdl_direct_context ctx;
     memset(&ctx, 0, sizeof ctx);
     ctx.geometry = pieces > 0 ? geometry : NULL;
+    if (ctx.geometry) cdl_scene_geometry_ray_offsets(geometry, &ctx.offsets);
     ctx.rays = pieces > 0 ? cdl_scene_geometry_rays(geometry) : NULL;
     ctx.occluders = occluders;
     ctx.lights = lights.lights;
