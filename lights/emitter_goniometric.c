@@ -113,7 +113,7 @@ static int gonio_eval_delta(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_de
         double s = asin(fmin(1.0, sqrt(x * x + y * y))) * CDL_RAD_TO_DEG;
         gamma_deg = c > 0.0 ? s : 180.0 - s;
     }
-    double I = cdl_photometry_intensity_c_gamma(g->photometry, 0.0, gamma_deg).cd * g->factor;
+    double I = cdl_photometry_intensity_one_plane(g->photometry, gamma_deg) * g->factor;
     /* Inverse-square and cosine law E = I cos(theta) / d^2 (Lambert, Photometria 1760). */
     out->E = cdl_lux(I * cos_theta * k * k);
     return out->E.lx > 0.0;

@@ -127,6 +127,12 @@ cdl_luminous_intensity cdl_photometry_intensity(const cdl_photometry *photometry
 cdl_luminous_intensity cdl_photometry_intensity_c_gamma(const cdl_photometry *photometry, double c_deg,
                                                         double gamma_deg);
 
+/* For a type C table with a single plane (rotational symmetry) and gamma in
+ * [0, 180]: I(gamma) in candela, the same value as
+ * cdl_photometry_intensity_c_gamma(p, any C, gamma). The direct solver's
+ * hot path; the caller checks the table's type and symmetry. */
+double cdl_photometry_intensity_one_plane(const cdl_photometry *photometry, double gamma_deg);
+
 /* Total flux: the exact integral of the interpolated distribution over the sphere. */
 cdl_luminous_flux cdl_photometry_flux(const cdl_photometry *photometry);
 

@@ -35,7 +35,7 @@ double cdl_photometry_reduce_c(cdl_photometry_symmetry s, double c)
 
 /* Cell index i and fraction t with x in [a[i], a[i+1]]; n >= 2 and x is
  * clamped into [a[0], a[n-1]]. */
-static size_t locate(const double *a, size_t n, int uniform, double inv_step, double x, double *t)
+static inline size_t locate(const double *a, size_t n, int uniform, double inv_step, double x, double *t)
 {
     if (x <= a[0]) {
         *t = 0.0;
@@ -68,7 +68,7 @@ static size_t locate(const double *a, size_t n, int uniform, double inv_step, do
 }
 
 /* Clamp x into [lo, hi] when it is within the edge tolerance; returns 0 when outside. */
-static int in_range(double *x, double lo, double hi)
+static inline int in_range(double *x, double lo, double hi)
 {
     if (*x < lo) {
         if (*x < lo - EDGE_TOL_DEG) return 0;
@@ -82,7 +82,7 @@ static int in_range(double *x, double lo, double hi)
 }
 
 /* Linear interpolation of row i at inner fraction (j, u). */
-static double row_value(const cdl_photometry *p, size_t i, size_t j, double u)
+static inline double row_value(const cdl_photometry *p, size_t i, size_t j, double u)
 {
     const double *r = p->cd + i * p->nv;
     return r[j] + u * (r[j + 1] - r[j]);
@@ -173,6 +173,16 @@ cdl_luminous_intensity cdl_photometry_intensity(const cdl_photometry *p, cdl_vec
     double h, v;
     if (!cdl_photometry_direction_to_hv(p->type, direction, &h, &v)) return cdl_candelas(0.0);
     return cdl_candelas(cdl_photometry_eval_hv(p, h, v));
+}
+
+double cdl_photometry_intensity_one_plane(const cdl_photometry *p, double gamma_deg)
+{
+    /* eval_hv for a table with one plane, without the azimuth handling */
+    double v = gamma_deg;
+    if (!in_range(&v, p->v[0], p->v[p->nv - 1])) return 0.0;
+    double u;
+    size_t j = locate(p->v, p->nv, p->v_uniform, p->v_inv_step, v, &u);
+    return row_value(p, 0, j, u);
 }
 
 cdl_luminous_intensity cdl_photometry_intensity_c_gamma(const cdl_photometry *p, double c_deg, double gamma_deg)
