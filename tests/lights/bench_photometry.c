@@ -27,8 +27,10 @@ int main(int argc, char **argv)
     const char *dir = argc > 1 ? argv[1] : CANDELA_PHOTOMETRIC_DIR;
     DIR *d = opendir(dir);
     if (!d) {
-        fprintf(stderr, "bench_photometry: the photometric corpus folder %s is absent; nothing to measure. FAILING.\n", dir);
-        return 1;
+        /* 77: ctest reports the benchmark as skipped, with this reason */
+        fprintf(stderr, "SKIPPED: bench_photometry: the photometric corpus folder %s is absent; nothing to measure.\n",
+                dir);
+        return 77;
     }
     entry *files = NULL;
     size_t n = 0, cap = 0, largest = 0;
