@@ -105,6 +105,18 @@ int cdl_emitter_is_delta(const cdl_emitter *emitter)
     return emitter->ops->eval_delta != NULL;
 }
 
+void cdl_emitter_eval_delta_many(const cdl_emitter *emitter, const cdl_vec3 *p, const cdl_vec3 *n, size_t count,
+                                 cdl_delta_light *out)
+{
+    if (emitter->ops->eval_delta_many) {
+        emitter->ops->eval_delta_many(emitter, p, n, count, out);
+        return;
+    }
+    for (size_t i = 0; i < count; ++i) {
+        if (!cdl_emitter_eval_delta(emitter, p[i], n[i], &out[i])) out[i].E = cdl_lux(0.0);
+    }
+}
+
 int cdl_emitter_emission_cone(const cdl_emitter *emitter, cdl_vec3 *position, cdl_vec3 *axis, double *cos_min)
 {
     return emitter->ops->cone ? emitter->ops->cone(emitter, position, axis, cos_min) : 0;

@@ -191,6 +191,12 @@ typedef struct cdl_delta_light {
  * non-delta emitters. */
 int cdl_emitter_eval_delta(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out);
 
+/* cdl_emitter_eval_delta for count receivers (p[i], n[i]) at once, the
+ * same values; out[i].E is 0 where no light arrives. One dispatch per
+ * call: the direct solver's hot loop. */
+void cdl_emitter_eval_delta_many(const cdl_emitter *emitter, const cdl_vec3 *p, const cdl_vec3 *n, size_t count,
+                                 cdl_delta_light *out);
+
 /* The cone outside which a positional delta emitter sends no light: from
  * *position, only directions w (unit) with dot(w, *axis) > *cos_min carry
  * light. A spot: its axis and half angle (hemisphere for cos^n); a

@@ -531,7 +531,7 @@ static void area_destroy(cdl_emitter *e)
 }
 
 static const cdl_emitter_ops area_ops = {area_flux, area_intensity, NULL, area_exact, area_sample, area_radiance,
-                                         area_destroy, NULL};
+                                         area_destroy, NULL, NULL};
 
 static cdl_status build_triangles(area_emitter *a, const cdl_shape *s, cdl_error *err)
 {

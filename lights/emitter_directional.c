@@ -43,7 +43,7 @@ static int directional_eval_delta(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, 
 }
 
 static const cdl_emitter_ops directional_ops = {directional_flux, NULL, directional_eval_delta, NULL, NULL, NULL,
-                                                NULL, NULL};
+                                                NULL, NULL, NULL};
 
 cdl_status cdl_emitter_create_directional(const cdl_directional_params *p, cdl_emitter **out, cdl_error *err)
 {

@@ -212,7 +212,7 @@ static void environment_destroy(cdl_emitter *e)
 }
 
 static const cdl_emitter_ops environment_ops = {environment_flux, NULL, NULL, environment_exact,
-                                                environment_sample, environment_radiance, environment_destroy, NULL};
+                                                environment_sample, environment_radiance, environment_destroy, NULL, NULL};
 
 static cdl_status build_image(environment_emitter *env, const cdl_environment_params *p, cdl_error *err)
 {

@@ -39,6 +39,7 @@ typedef struct goniometric_emitter {
     int rotational;   /* type C table with one plane: I depends on gamma only */
     int has_cone;     /* light only where gamma < cone_gamma (see gonio_cone) */
     double cone_cos;  /* cos(cone_gamma) */
+    double cone_cos2; /* its square */
 } goniometric_emitter;
 
 static const goniometric_emitter *as_gonio(const cdl_emitter *e)
@@ -84,25 +85,26 @@ static cdl_luminous_flux gonio_flux(const cdl_emitter *e)
 
 /* The hot path of direct illuminance, for the common rotationally
  * symmetric table: the same E = I cos / d^2 as cdl_emitter_eval_positional
- * with gonio_intensity, computed in one pass (one square root, one
- * division, no azimuth); other tables and extreme distances take the
- * general path. */
-static int gonio_eval_delta(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out)
+ * with gonio_intensity, computed in one pass: the emission cone first
+ * (no square root), then one square root, one division, no azimuth. */
+static inline int gonio_rotational_eval(const goniometric_emitter *g, cdl_vec3 n, double d2, cdl_vec3 w,
+                                        cdl_delta_light *out)
 {
-    const goniometric_emitter *g = as_gonio(e);
-    cdl_vec3 w = cdl_vec3_sub(g->position, p);
-    double d2 = cdl_vec3_dot(w, w);
-    if (!g->rotational || !(d2 > 1e-290 && d2 < 1e290))
-        return cdl_emitter_eval_positional(e, g->position, gonio_intensity, p, n, out);
+    out->E = cdl_lux(0.0);
+    /* cos(gamma) |w| of the direction light -> p, -w, in the luminaire's
+     * frame: -(-w . z_luminaire) = w . z_luminaire */
+    double along = cdl_vec3_dot(g->col[2], w);
+    if (g->has_cone && g->cone_cos >= 0.0 && (along <= 0.0 || along * along <= g->cone_cos2 * d2)) {
+        out->to_light = cdl_vec3_make(0.0, 0.0, 0.0);
+        out->distance = 0.0;
+        return 0;
+    }
     double d = sqrt(d2), k = 1.0 / d;
     out->to_light = cdl_vec3_scale(w, k);
     out->distance = d;
-    out->E = cdl_lux(0.0);
     double cos_theta = cdl_vec3_dot(n, out->to_light);
     if (!(cos_theta > 0.0)) return 0;
-    /* cos(gamma) of the direction light -> p, -to_light, in the luminaire's
-     * frame: -(-to_light . z_luminaire). */
-    double c = cdl_vec3_dot(g->col[2], out->to_light);
+    double c = along * k;
     if (g->has_cone && c <= g->cone_cos) return 0;
     double gamma_deg;
     if (fabs(c) < 0.7) {
@@ -117,6 +119,30 @@ static int gonio_eval_delta(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_de
     /* Inverse-square and cosine law E = I cos(theta) / d^2 (Lambert, Photometria 1760). */
     out->E = cdl_lux(I * cos_theta * k * k);
     return out->E.lx > 0.0;
+}
+
+static int gonio_eval_delta(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out)
+{
+    const goniometric_emitter *g = as_gonio(e);
+    cdl_vec3 w = cdl_vec3_sub(g->position, p);
+    double d2 = cdl_vec3_dot(w, w);
+    if (!g->rotational || !(d2 > 1e-290 && d2 < 1e290))
+        return cdl_emitter_eval_positional(e, g->position, gonio_intensity, p, n, out);
+    return gonio_rotational_eval(g, n, d2, w, out);
+}
+
+static void gonio_eval_delta_many(const cdl_emitter *e, const cdl_vec3 *p, const cdl_vec3 *n, size_t count,
+                                  cdl_delta_light *out)
+{
+    const goniometric_emitter *g = as_gonio(e);
+    for (size_t i = 0; i < count; ++i) {
+        cdl_vec3 w = cdl_vec3_sub(g->position, p[i]);
+        double d2 = cdl_vec3_dot(w, w);
+        if (g->rotational && d2 > 1e-290 && d2 < 1e290)
+            gonio_rotational_eval(g, n[i], d2, w, &out[i]);
+        else if (!cdl_emitter_eval_positional(e, g->position, gonio_intensity, p[i], n[i], &out[i]))
+            out[i].E = cdl_lux(0.0);
+    }
 }
 
 static int gonio_cone(const cdl_emitter *e, cdl_vec3 *position, cdl_vec3 *axis, double *cos_min)
@@ -159,7 +185,7 @@ static int gamma_cutoff(const cdl_photometry *ph, double *cutoff_deg)
 }
 
 static const cdl_emitter_ops gonio_ops = {gonio_flux, gonio_intensity, gonio_eval_delta, NULL, NULL, NULL, NULL,
-                                          gonio_cone};
+                                          gonio_cone, gonio_eval_delta_many};
 
 /* Columns of Rz(c) Ry(b) Rx(a) (angles in radians), each rotation
  * right-handed about a fixed world axis: R e_k for k = x, y, z. */
@@ -237,6 +263,7 @@ cdl_status cdl_emitter_create_goniometric(const cdl_goniometric_params *p, cdl_e
     if (gamma_cutoff(p->photometry, &cut)) {
         g->has_cone = 1;
         g->cone_cos = cos(cut * CDL_DEG_TO_RAD);
+        g->cone_cos2 = g->cone_cos * g->cone_cos;
     }
     *out = &g->base;
     return CDL_OK;

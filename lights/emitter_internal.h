@@ -25,6 +25,9 @@ typedef struct cdl_emitter_ops {
     void (*destroy)(cdl_emitter *e);
     /* Positional delta emitters whose light is confined to a cone (may be NULL). */
     int (*cone)(const cdl_emitter *e, cdl_vec3 *position, cdl_vec3 *axis, double *cos_min);
+    /* Delta emitters: eval_delta for many receivers (may be NULL: a loop over eval_delta). */
+    void (*eval_delta_many)(const cdl_emitter *e, const cdl_vec3 *p, const cdl_vec3 *n, size_t count,
+                            cdl_delta_light *out);
 } cdl_emitter_ops;
 
 struct cdl_emitter {

@@ -39,7 +39,7 @@ static int point_eval_delta(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_de
     return cdl_emitter_eval_positional(e, as_point(e)->position, point_intensity, p, n, out);
 }
 
-static const cdl_emitter_ops point_ops = {point_flux, point_intensity, point_eval_delta, NULL, NULL, NULL, NULL, NULL};
+static const cdl_emitter_ops point_ops = {point_flux, point_intensity, point_eval_delta, NULL, NULL, NULL, NULL, NULL, NULL};
 
 cdl_status cdl_emitter_create_point(const cdl_point_params *p, cdl_emitter **out, cdl_error *err)
 {

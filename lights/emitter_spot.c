@@ -94,7 +94,7 @@ static int spot_cone(const cdl_emitter *e, cdl_vec3 *position, cdl_vec3 *axis, d
 }
 
 static const cdl_emitter_ops spot_ops = {spot_flux, spot_intensity, spot_eval_delta, NULL, NULL, NULL, NULL,
-                                         spot_cone};
+                                         spot_cone, NULL};
 
 cdl_status cdl_emitter_create_spot(const cdl_spot_params *p, cdl_emitter **out, cdl_error *err)
 {

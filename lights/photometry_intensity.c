@@ -62,7 +62,8 @@ static inline size_t locate(const double *a, size_t n, int uniform, double inv_s
         }
         i = lo;
     }
-    double u = (x - a[i]) / (a[i + 1] - a[i]);
+    /* evenly spaced: multiply by 1 / step (within an ulp of dividing) */
+    double u = uniform ? (x - a[i]) * inv_step : (x - a[i]) / (a[i + 1] - a[i]);
     *t = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
     return i;
 }

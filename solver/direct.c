@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
@@ -186,9 +187,9 @@ size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, 
     return count;
 }
 
-/* Exact illuminance from a delta light, 0 if it is shadowed. */
-static double delta_contribution(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_light_strategy st,
-                                 cdl_vec3 p, cdl_vec3 n, cdl_direct_sample_stats *stats)
+/* Exact unshadowed illuminance from a delta light, and the direction and
+ * distance its shadow ray needs; 0 when the light does not reach p. */
+static double delta_unshadowed(const cdl_direct_light *light, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *d)
 {
     if (light->has_cone) {
         /* Outside the emission cone: no light, no lookup. For cones up to a
@@ -202,10 +203,18 @@ static double delta_contribution(const cdl_direct_context *ctx, const cdl_direct
             return 0.0;
         }
     }
+    if (!cdl_emitter_eval_delta(light->emitter, p, n, d) || !(d->E.lx > 0.0)) return 0.0;
+    return d->E.lx;
+}
+
+/* Exact illuminance from a delta light, 0 if it is shadowed. */
+static double delta_contribution(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_light_strategy st,
+                                 cdl_vec3 p, cdl_vec3 n, cdl_direct_sample_stats *stats)
+{
     cdl_delta_light d;
-    if (!cdl_emitter_eval_delta(light->emitter, p, n, &d) || !(d.E.lx > 0.0)) return 0.0;
-    if (st == CDL_STRATEGY_DELTA_SHADOWED && shadowed(ctx, p, n, d.to_light, d.distance, stats)) return 0.0;
-    return d.E.lx;
+    double E = delta_unshadowed(light, p, n, &d);
+    if (E > 0.0 && st == CDL_STRATEGY_DELTA_SHADOWED && shadowed(ctx, p, n, d.to_light, d.distance, stats)) return 0.0;
+    return E;
 }
 
 /* Illuminance from an area emitter or environment: closed form where nothing
@@ -257,6 +266,89 @@ void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strat
     }
     *E_out = E;
     *var_out = var;
+}
+
+void cdl_direct_scratch_release(cdl_direct_scratch *scratch)
+{
+    free(scratch->contribution);
+    free(scratch->rays);
+    free(scratch->ray_slot);
+    memset(scratch, 0, sizeof *scratch);
+}
+
+static cdl_status scratch_reserve(cdl_direct_scratch *s, size_t slots, cdl_error *err)
+{
+    if (slots <= s->capacity) return CDL_OK;
+    double *c = realloc(s->contribution, slots * sizeof *c);
+    if (c) s->contribution = c;
+    cdl_ray_record *r = realloc(s->rays, slots * sizeof *r);
+    if (r) s->rays = r;
+    uint32_t *k = realloc(s->ray_slot, slots * sizeof *k);
+    if (k) s->ray_slot = k;
+    if (!c || !r || !k) return cdl_error_out_of_memory(err);
+    s->capacity = slots;
+    return CDL_OK;
+}
+
+cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                                        const uint32_t *active, size_t active_count, const uint64_t *streams,
+                                        const cdl_vec3 *points, const cdl_vec3 *normals, size_t count, double *E,
+                                        double *variance, cdl_direct_sample_stats *stats,
+                                        cdl_direct_scratch *scratch, cdl_error *err)
+{
+    size_t lights = active ? active_count : ctx->light_count;
+    if (count > CDL_DIRECT_CHUNK_MAX)
+        return cdl_error_set(err, CDL_ERR_INTERNAL, "direct chunk of %zu points (at most %d)", count,
+                             CDL_DIRECT_CHUNK_MAX);
+    cdl_status st = scratch_reserve(scratch, count * lights + 1, err);
+    if (st != CDL_OK) return st;
+    size_t pending = 0;
+    /* 1. Every light's contribution to every point, light by light (one
+     *    dispatch per light); delta lights' shadow rays wait. */
+    cdl_delta_light delta[CDL_DIRECT_CHUNK_MAX];
+    for (size_t i = 0; i < count; ++i) variance[i] = 0.0;
+    for (size_t a = 0; a < lights; ++a) {
+        size_t l = active ? active[a] : a;
+        cdl_light_strategy strategy = strategies[l];
+        if (strategy == CDL_STRATEGY_DELTA_EXACT || strategy == CDL_STRATEGY_DELTA_SHADOWED) {
+            cdl_emitter_eval_delta_many(ctx->lights[l].emitter, points, normals, count, delta);
+            for (size_t i = 0; i < count; ++i) {
+                double e = delta[i].E.lx > 0.0 ? delta[i].E.lx : 0.0;
+                scratch->contribution[i * lights + a] = e;
+                cdl_ray_record *r = &scratch->rays[pending];
+                if (e > 0.0 && strategy == CDL_STRATEGY_DELTA_SHADOWED &&
+                    cdl_ray_offsets_shadow_ray(&ctx->offsets, points[i], normals[i], delta[i].to_light,
+                                               delta[i].distance, &r->origin, &r->t_near, &r->t_far)) {
+                    r->dir = delta[i].to_light;
+                    scratch->ray_slot[pending++] = (uint32_t)(i * lights + a);
+                }
+            }
+        } else {
+            for (size_t i = 0; i < count; ++i) {
+                double e = 0.0;
+                uint64_t light_stream = cdl_rng_stream_id(streams[i], (uint64_t)l, 0x6c69676874ull /* "light" */);
+                extended_contribution(ctx, &ctx->lights[l], strategy, light_stream, points[i], normals[i], &e,
+                                      &variance[i], stats);
+                scratch->contribution[i * lights + a] = e;
+            }
+        }
+    }
+    /* 2. The shadow rays, one after another. */
+    for (size_t k = 0; k < pending; ++k) {
+        const cdl_ray_record *r = &scratch->rays[k];
+        if (ctx->log) record_ray(ctx->log, r->origin, r->dir, r->t_near, r->t_far);
+        if (cdl_ray_scene_occluded(ctx->rays, r->origin, r->dir, r->t_near, r->t_far))
+            scratch->contribution[scratch->ray_slot[k]] = 0.0;
+    }
+    stats->rays += pending;
+    /* 3. Each point's sum in light order, as cdl_direct_illuminance forms it
+     *    (adding the zeros of dark lights changes no bit). */
+    for (size_t i = 0; i < count; ++i) {
+        double sum = 0.0;
+        for (size_t a = 0; a < lights; ++a) sum += scratch->contribution[i * lights + a];
+        E[i] = sum;
+    }
+    return CDL_OK;
 }
 
 double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,

@@ -118,6 +118,31 @@ void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strat
                             const uint32_t *active, size_t active_count, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
                             double *E, double *variance, cdl_direct_sample_stats *stats);
 
+/* Most points cdl_direct_illuminance_chunk takes at once. */
+#define CDL_DIRECT_CHUNK_MAX 64
+
+/* Scratch space for cdl_direct_illuminance_chunk, one per thread. */
+typedef struct cdl_direct_scratch {
+    double *contribution;             /* points x active lights */
+    cdl_ray_record *rays;             /* pending shadow rays */
+    uint32_t *ray_slot;               /* their slot in `contribution` */
+    size_t capacity;                  /* slots */
+} cdl_direct_scratch;
+
+void cdl_direct_scratch_release(cdl_direct_scratch *scratch);
+
+/* cdl_direct_illuminance for `count` (<= CDL_DIRECT_CHUNK_MAX) points at
+ * once, with the same result bit for bit: every light's contribution to
+ * every point is found first (light by light),
+ * the delta lights' shadow rays are then traced one after another (as a
+ * plain loop of occlusion queries would), and each point's sum is formed in
+ * light order. streams[i] identifies point i for the random numbers. */
+cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                                        const uint32_t *active, size_t active_count, const uint64_t *streams,
+                                        const cdl_vec3 *points, const cdl_vec3 *normals, size_t count, double *E,
+                                        double *variance, cdl_direct_sample_stats *stats,
+                                        cdl_direct_scratch *scratch, cdl_error *err);
+
 /* Cosine-weighted unoccluded fraction of the hemisphere about n at p. */
 double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
                                     cdl_direct_sample_stats *stats);

@@ -223,10 +223,14 @@ typedef struct grid_job {
     size_t chunk;
 } grid_job;
 
+
 typedef struct worker_state {
     grid_job *job;
     cdl_direct_sample_stats stats;
     uint32_t *active;             /* light indices for the current chunk */
+    cdl_direct_scratch scratch;
+    cdl_status status;            /* CDL_OK unless the worker failed */
+    cdl_error err;
 } worker_state;
 
 static void *worker_main(void *arg)
@@ -251,18 +255,22 @@ static void *worker_main(void *arg)
         }
         size_t active = cdl_direct_select_lights(job->ctx, cdl_vec3_scale(cdl_vec3_add(lo, hi), 0.5),
                                                  0.5 * cdl_vec3_distance(lo, hi), w->active);
+        uint64_t streams[CDL_DIRECT_CHUNK_MAX];
+        double var[CDL_DIRECT_CHUNK_MAX];
+        for (size_t i = start; i < end; ++i)
+            streams[i - start] =
+                cdl_rng_stream_id((uint64_t)job->grid_index, (uint64_t)i, 0x6772696470ull /* "gridp" */);
+        w->status = cdl_direct_illuminance_chunk(job->ctx, job->strategies, w->active, active, streams,
+                                                 grid->points + start, grid->normals + start, end - start,
+                                                 job->gs->E + start, var, &w->stats, &w->scratch, &w->err);
+        if (w->status != CDL_OK) break;
         for (size_t i = start; i < end; ++i) {
-            uint64_t stream = cdl_rng_stream_id((uint64_t)job->grid_index, (uint64_t)i, 0x6772696470ull /* "gridp" */);
-            double E, var;
-            cdl_direct_illuminance(job->ctx, job->strategies, w->active, active, stream, grid->points[i],
-                                   grid->normals[i], &E, &var, &w->stats);
-            job->gs->E[i] = E;
-            job->gs->E_direct[i] = E;
+            job->gs->E_direct[i] = job->gs->E[i];
             job->gs->E_indirect[i] = 0.0;
-            job->gs->E_stderr[i] = sqrt(var);
+            job->gs->E_stderr[i] = sqrt(var[i - start]);
             if (job->want_ao)
-                job->gs->ao[i] = cdl_direct_ambient_occlusion(job->ctx, stream, grid->points[i], grid->normals[i],
-                                                              &w->stats);
+                job->gs->ao[i] = cdl_direct_ambient_occlusion(job->ctx, streams[i - start], grid->points[i],
+                                                              grid->normals[i], &w->stats);
         }
     }
     return NULL;
@@ -293,15 +301,21 @@ static cdl_status run_grid(grid_job *job, int threads, cdl_direct_sample_stats *
     }
     worker_main(&ws[0]);
     for (int i = 1; i <= started; ++i) pthread_join(tid[i], NULL);
+    cdl_status st = CDL_OK;
     for (int i = 0; i < threads; ++i) {
         total->rays += ws[i].stats.rays;
         total->exact_evaluations += ws[i].stats.exact_evaluations;
         total->sampled_evaluations += ws[i].stats.sampled_evaluations;
+        if (st == CDL_OK && ws[i].status != CDL_OK) {
+            st = ws[i].status;
+            if (err) *err = ws[i].err;
+        }
+        cdl_direct_scratch_release(&ws[i].scratch);
     }
     free(active);
     free(ws);
     free(tid);
-    return CDL_OK;
+    return st;
 }
 
 /* ---- the solve ------------------------------------------------------------------ */
