@@ -642,6 +642,79 @@ static void test_plan_no_rays(void)
     done(scene, &sol);
 }
 
+
+/* Emitting surfaces. A closed box room whose ceiling face glows at L: a
+ * point on the floor sees the whole ceiling (the walls are beside it, not
+ * between), so E = pi L F with F the sum of the four corner configuration
+ * factors of the ceiling rectangle. An inward-emitting sphere is the
+ * integrating sphere: every point inside, facing any way, sees luminance L
+ * over its whole hemisphere, so E = pi L exactly. The cos^n spot: I0 cos^n. */
+static void test_emitting_surfaces(void)
+{
+    const double L = 700.0;
+    const char *room =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [0, 0, 0], \"max\": [5, 4, 3], \"inward\": true,"
+        " \"reflectance\": 0, \"luminance_cd_m2\": 700, \"open\": []},"
+        " {\"type\": \"rect\", \"origin\": [0, 0, 3], \"u\": [5, 0, 0], \"v\": [0, 4, 0], \"reflectance\": 0}],"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [1.5, 1.0, 0], \"n\": [0, 0, 1]}]}],"
+        " \"solver\": {\"method\": \"direct\"}}";
+    /* Every face of the box glows (luminance on a box applies to all faces).
+     * The extra rect shares the ceiling's plane and must not count as an
+     * occluder of the ceiling's light. The floor point's hemisphere is
+     * covered exactly by the ceiling and the four walls (the summation rule
+     * of configuration factors), so E = pi L x 1. */
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (solve_json(room, &scene, &sol, 1)) {
+        CHECK_REL(sol.grids[0].E[0], CDL_PI * L, 1e-9);
+        done(scene, &sol);
+    }
+    /* Only the ceiling glows: a luminous ceiling over a dark room. */
+    const char *ceiling =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [0, 0, 0], \"max\": [5, 4, 3], \"inward\": true,"
+        " \"reflectance\": 0, \"open\": [\"ceiling\"]},"
+        " {\"type\": \"rect\", \"origin\": [0, 4, 3], \"u\": [5, 0, 0], \"v\": [0, -4, 0], \"reflectance\": 0,"
+        " \"luminance_cd_m2\": 700}],"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [1.5, 1.0, 0], \"n\": [0, 0, 1]},"
+        " {\"p\": [2.5, 2.0, 1.2], \"n\": [0, 0, 1]}]}], \"solver\": {\"method\": \"direct\"}}";
+    if (solve_json(ceiling, &scene, &sol, 1)) {
+        /* the ceiling rect (normal (5,0,0) x (0,-4,0) = -z: facing down) split at the
+         * foot of the normal through each point into four corner rectangles */
+        double a1 = 1.5, a2 = 5.0 - 1.5, b1 = 1.0, b2 = 4.0 - 1.0, h = 3.0;
+        double F = cf_parallel_corner(a1, b1, h) + cf_parallel_corner(a2, b1, h) + cf_parallel_corner(a1, b2, h) +
+                   cf_parallel_corner(a2, b2, h);
+        CHECK_REL(sol.grids[0].E[0], CDL_PI * L * F, 1e-10);
+        a1 = 2.5; a2 = 2.5; b1 = 2.0; b2 = 2.0; h = 1.8;
+        F = 4.0 * cf_parallel_corner(a1, b1, h);
+        CHECK_REL(sol.grids[0].E[1], CDL_PI * L * F, 1e-10);
+        CHECK(sol.grids[0].E_stderr[0] == 0.0 && sol.rays == 0);
+        done(scene, &sol);
+    }
+    const char *sphere =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 2, \"inward\": true,"
+        " \"reflectance\": 0, \"luminance_cd_m2\": 250}],"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]},"
+        " {\"p\": [0.7, -0.3, 1.1], \"n\": [1, 0, 0]}, {\"p\": [-1.2, 0.4, -0.9], \"n\": [0.3, -0.4, -0.866]}]}],"
+        " \"solver\": {\"method\": \"direct\"}}";
+    if (solve_json(sphere, &scene, &sol, 1)) {
+        for (int i = 0; i < 3; ++i) CHECK_REL(sol.grids[0].E[i], CDL_PI * 250.0, 1e-12);
+        done(scene, &sol);
+    }
+    /* cos^n spot: I0 cos^n(alpha), nothing behind. */
+    const char *cosn =
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"spot\", \"position\": [0, 0, 0], \"direction\": [0, 0, -1],"
+        " \"intensity_cd\": 400, \"exponent\": 3}], \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": ["
+        " {\"p\": [0, 0, -2], \"n\": [0, 0, 1]}, {\"p\": [1.2855752193730785, 0, -1.532088886237956], \"n\": [-0.6427876096865394, 0, 0.766044443118978]},"
+        " {\"p\": [2, 0, 0.5], \"n\": [-1, 0, 0]}]}], \"solver\": {\"method\": \"direct\"}}";
+    if (solve_json(cosn, &scene, &sol, 1)) {
+        CHECK_REL(sol.grids[0].E[0], 400.0 / 4.0, 1e-12);
+        double c = cos(40.0 * CDL_DEG_TO_RAD); /* the second point: 2 m away at 40 degrees, facing the spot */
+        CHECK_REL(sol.grids[0].E[1], 400.0 * c * c * c / 4.0, 1e-12);
+        CHECK(sol.grids[0].E[2] == 0.0);      /* above the spot's horizon */
+        done(scene, &sol);
+    }
+}
+
 int main(void)
 {
     test_inverse_square_cosine();
@@ -657,5 +730,6 @@ int main(void)
     test_method_refusals();
     test_image_environment();
     test_plan_no_rays();
+    test_emitting_surfaces();
     return check_finish();
 }
