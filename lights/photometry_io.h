@@ -6,12 +6,10 @@
 
 #include "lights/photometry_internal.h"
 #include "lights/photometry_lexer.h"
+#include "radiometry/file_bytes.h"
 
 /* Largest photometric or tilt file read: real files are below 2 MB. */
 #define CDL_PHOTOMETRY_MAX_FILE_BYTES ((size_t)256 * 1024 * 1024)
-
-/* Read a whole file (NUL-terminated copy, *size without the NUL). */
-cdl_status cdl_photometry_load_bytes(const char *path, size_t limit, char **data, size_t *size, cdl_error *err);
 
 /* The parsers fill an allocated object `p`; `name` names the input in messages. */
 cdl_status cdl_ies_read(const char *data, size_t size, const char *name, const cdl_photometry_read_options *options,

@@ -1,45 +1,11 @@
 /* photometry_read.c - reading a photometric file: load, detect the format
  * from the content, parse, check consistency, apply --strict. */
 #include <ctype.h>
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "lights/photometry_io.h"
-
-cdl_status cdl_photometry_load_bytes(const char *path, size_t limit, char **data, size_t *size, cdl_error *err)
-{
-    *data = NULL;
-    *size = 0;
-    struct stat st;
-    if (stat(path, &st) != 0)
-        return cdl_error_set(err, CDL_ERR_INPUT, "%s: cannot open: %s", path, strerror(errno));
-    if (!S_ISREG(st.st_mode)) return cdl_error_set(err, CDL_ERR_INPUT, "%s: expected a file, found a directory or device", path);
-    if ((unsigned long long)st.st_size > (unsigned long long)limit)
-        return cdl_error_set(err, CDL_ERR_INPUT, "%s: expected a photometric file of at most %zu bytes, found %lld bytes",
-                             path, limit, (long long)st.st_size);
-    FILE *f = fopen(path, "rb");
-    if (!f) return cdl_error_set(err, CDL_ERR_INPUT, "%s: cannot open: %s", path, strerror(errno));
-    size_t cap = (size_t)st.st_size + 1;
-    char *buf = malloc(cap);
-    if (!buf) {
-        fclose(f);
-        return cdl_error_out_of_memory(err);
-    }
-    size_t n = fread(buf, 1, cap - 1, f);
-    int failed = ferror(f);
-    fclose(f);
-    if (failed) {
-        free(buf);
-        return cdl_error_set(err, CDL_ERR_INTERNAL, "%s: read error", path);
-    }
-    buf[n] = '\0';
-    *data = buf;
-    *size = n;
-    return CDL_OK;
-}
 
 static int starts_with_nocase(const char *s, size_t len, const char *prefix)
 {
@@ -122,7 +88,7 @@ cdl_status cdl_photometry_read_file(const char *path, const cdl_photometry_read_
     *out = NULL;
     char *data = NULL;
     size_t size = 0;
-    cdl_status st = cdl_photometry_load_bytes(path, CDL_PHOTOMETRY_MAX_FILE_BYTES, &data, &size, err);
+    cdl_status st = cdl_file_read_bytes(path, "photometric file", CDL_PHOTOMETRY_MAX_FILE_BYTES, &data, &size, err);
     if (st != CDL_OK) return st;
     st = cdl_photometry_read_memory(data, size, path, options, out, err);
     free(data);

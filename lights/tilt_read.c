@@ -61,7 +61,7 @@ cdl_status cdl_tilt_read_file(const char *ies_name, const char *file, cdl_photom
     else snprintf(path, sizeof path, "%.*s/%s", (int)(slash - ies_name), ies_name, file);
     char *data = NULL;
     size_t size = 0;
-    cdl_status st = cdl_photometry_load_bytes(path, CDL_PHOTOMETRY_MAX_FILE_BYTES, &data, &size, err);
+    cdl_status st = cdl_file_read_bytes(path, "tilt file", CDL_PHOTOMETRY_MAX_FILE_BYTES, &data, &size, err);
     if (st != CDL_OK) return st;
     cdl_photometry_scanner s;
     cdl_photometry_scanner_init(&s, data, cdl_photometry_text_length(data, size), 0, 1, 1);

@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "radiometry/file_bytes.h"
 #include "solver/scene_file.h"
 
 /* ---- growing arrays ------------------------------------------------------ */
@@ -748,7 +749,8 @@ cdl_status cdl_mesh_file_read(const char *path, cdl_mesh_data *out, cdl_error *e
                              path, strrchr(path, '.') ? strrchr(path, '.') : "no extension");
     char *data = NULL;
     size_t size = 0;
-    if (cdl_scene_file_read_bytes(path, "mesh file", &data, &size, err) != CDL_OK) return CDL_ERR_INPUT;
+    cdl_status read = cdl_file_read_bytes(path, "mesh file", CDL_SCENE_MAX_FILE_BYTES, &data, &size, err);
+    if (read != CDL_OK) return read;
     cdl_status st = cdl_mesh_file_parse(data, size, format, path, out, err);
     free(data);
     return st;

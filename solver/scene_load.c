@@ -32,6 +32,7 @@
 #include <string.h>
 
 #include "solver/grid.h"
+#include "radiometry/file_bytes.h"
 #include "solver/scene_file.h"
 #include "solver/scene_parse.h"
 
@@ -562,7 +563,8 @@ cdl_status cdl_scene_load(const char *path, cdl_scene **out, cdl_error *err)
     *out = NULL;
     char *text = NULL;
     size_t size = 0;
-    if (cdl_scene_file_read_bytes(path, "scene file", &text, &size, err) != CDL_OK) return CDL_ERR_INPUT;
+    cdl_status read = cdl_file_read_bytes(path, "scene file", CDL_SCENE_MAX_FILE_BYTES, &text, &size, err);
+    if (read != CDL_OK) return read;
     const char *nul = memchr(text, '\0', size);
     if (nul) {
         size_t line, column;

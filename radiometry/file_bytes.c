@@ -1,5 +1,5 @@
-/* scene_file.c - read a whole file, with messages that name it. */
-#include "solver/scene_file.h"
+/* file_bytes.c - read a whole file. */
+#include "radiometry/file_bytes.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -7,7 +7,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
-cdl_status cdl_scene_file_read_bytes(const char *path, const char *what, char **data, size_t *size, cdl_error *err)
+cdl_status cdl_file_read_bytes(const char *path, const char *what, size_t limit, char **data, size_t *size,
+                               cdl_error *err)
 {
     *data = NULL;
     *size = 0;
@@ -16,9 +17,9 @@ cdl_status cdl_scene_file_read_bytes(const char *path, const char *what, char **
         return cdl_error_set(err, CDL_ERR_INPUT, "%s: cannot open the %s: %s", path, what, strerror(errno));
     if (!S_ISREG(info.st_mode))
         return cdl_error_set(err, CDL_ERR_INPUT, "%s: expected a %s, found a directory or device", path, what);
-    if ((unsigned long long)info.st_size > (unsigned long long)CDL_SCENE_MAX_FILE_BYTES)
+    if ((unsigned long long)info.st_size > (unsigned long long)limit)
         return cdl_error_set(err, CDL_ERR_INPUT, "%s: expected a %s of at most %zu bytes, found %lld bytes", path, what,
-                             CDL_SCENE_MAX_FILE_BYTES, (long long)info.st_size);
+                             limit, (long long)info.st_size);
     FILE *fp = fopen(path, "rb");
     if (!fp) return cdl_error_set(err, CDL_ERR_INPUT, "%s: cannot open the %s: %s", path, what, strerror(errno));
     size_t capacity = (size_t)info.st_size + 1;
@@ -32,7 +33,7 @@ cdl_status cdl_scene_file_read_bytes(const char *path, const char *what, char **
     fclose(fp);
     if (failed) {
         free(buffer);
-        return cdl_error_set(err, CDL_ERR_INPUT, "%s: cannot read the %s", path, what);
+        return cdl_error_set(err, CDL_ERR_INTERNAL, "%s: cannot read the %s", path, what);
     }
     buffer[n] = '\0';
     *data = buffer;
