@@ -124,6 +124,33 @@ static cdl_vec3 vector_area_twice(const cdl_ring3 *ring)
     return sum;
 }
 
+/* Twice the vector area of the largest triangle found greedily among the
+ * ring's points: the first point, the point farthest from it, and the point
+ * farthest from the line through those two. Zero when all points lie on
+ * one line; otherwise normal to the plane of a planar ring even when the
+ * ring's own vector area cancels (a bow tie). */
+static cdl_vec3 spanning_area_twice(const cdl_ring3 *ring)
+{
+    cdl_vec3 a = ring->points[0], b = a, best = cdl_vec3_make(0, 0, 0);
+    double far = 0.0, widest = 0.0;
+    for (size_t i = 1; i < ring->count; ++i) {
+        double d = cdl_vec3_distance(a, ring->points[i]);
+        if (d > far) {
+            far = d;
+            b = ring->points[i];
+        }
+    }
+    for (size_t i = 1; i < ring->count; ++i) {
+        cdl_vec3 c = cdl_vec3_cross(cdl_vec3_sub(b, a), cdl_vec3_sub(ring->points[i], a));
+        double w = cdl_vec3_length(c);
+        if (w > widest) {
+            widest = w;
+            best = c;
+        }
+    }
+    return best;
+}
+
 static int set_problem(cdl_polygon_problem *pr, cdl_polygon_defect defect, long ring, size_t vertex)
 {
     pr->defect = defect;
@@ -256,9 +283,16 @@ int cdl_scene_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size
     }
     plane->origin = outer->points[0];
     cdl_vec3 area2 = vector_area_twice(outer);
-    double area2_len = cdl_vec3_length(area2);
-    if (!(area2_len > NO_AREA_TOLERANCE * plane->size * plane->size))
-        return set_problem(problem, CDL_POLYGON_NO_AREA, -1, 0);
+    double area2_len = cdl_vec3_length(area2), min_area2 = NO_AREA_TOLERANCE * plane->size * plane->size;
+    int cancelled = !(area2_len > min_area2);
+    if (cancelled) {
+        /* No net area. Points on one line have no plane either; an outline
+         * whose lobes cancel (a bow tie) has one, and the checks in that
+         * plane below then name the edges that cross. */
+        area2 = spanning_area_twice(outer);
+        area2_len = cdl_vec3_length(area2);
+        if (!(area2_len > min_area2)) return set_problem(problem, CDL_POLYGON_NO_AREA, -1, 0);
+    }
     plane->normal = cdl_vec3_scale(area2, 1.0 / area2_len);
 
     /* Distances from the plane with that normal through the outer ring's
@@ -292,6 +326,9 @@ int cdl_scene_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size
         /* Out of memory: the polygon cannot be judged; let triangulation report it. */
         return 1;
     }
+    /* A ring without net area that passed the in-plane checks (within their
+     * tolerances) still has no usable normal. */
+    if (ok && cancelled) return set_problem(problem, CDL_POLYGON_NO_AREA, -1, 0);
     return ok;
 }
 

@@ -83,9 +83,13 @@ static const error_case cases[] = {
      "surfaces[0].vertices[3]: expected a point in the plane of the polygon's outer ring"},
     {SURFACE("\"type\": \"polygon\", \"vertices\": [[0,0,0],[4,0,0],[4,4,0],[2,-1,0],[0,4,0]], \"reflectance\": 0"),
      "surfaces[0].vertices[0]: expected a simple polygon (no two edges cross, touch or come within 1e-9 of its size), found the edge starting here meets the edge starting at surfaces[0].vertices[3]"},
-    /* A bow tie whose lobes cancel has no net area. */
+    /* A bow tie whose lobes cancel has no net area, but it is not a line:
+     * the message names the crossing edges, not "points on one line". */
     {SURFACE("\"type\": \"polygon\", \"vertices\": [[0,0,0],[4,0,0],[0,4,0],[4,4,0]], \"reflectance\": 0"),
-     "surfaces[0].vertices: expected a polygon with an area"},
+     "surfaces[0].vertices[1]: expected a simple polygon (no two edges cross, touch or come within 1e-9 of its size), found the edge starting here meets the edge starting at surfaces[0].vertices[3]"},
+    /* The same bow tie tilted out of the axes planes, as a grid. */
+    {GRID_CASE("\"name\": \"bow\", \"type\": \"polygon\", \"vertices\": [[0,0,0],[4,0,3],[0,4,0],[4,4,3]]"),
+     "grids[1].vertices[1]: expected a simple polygon (no two edges cross, touch or come within 1e-9 of its size), found the edge starting here meets the edge starting at grids[1].vertices[3]"},
     {SURFACE("\"type\": \"polygon\", \"vertices\": [[0,0,0],[4,0,0],[4,0,0],[0,4,0]], \"reflectance\": 0"),
      "surfaces[0].vertices[2]: expected a point different from the one before it"},
     {SURFACE("\"type\": \"polygon\", \"vertices\": [[0,0,0],[4,0,0],[2,0,0],[0,4,0]], \"reflectance\": 0"),
