@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "lights/photometry.h"
 #include "radiometry/constants.h"
 #include "solver/exr_image.h"
 #include "solver/solve.h"
@@ -715,6 +716,206 @@ static void test_emitting_surfaces(void)
     }
 }
 
+/* Directional light (DESIGN.md: parallel light, illuminance_lx normal to the
+ * beam, shadowed by surfaces) over a floor with a unit box on it: a lit
+ * point gets E_n x MF x cos(theta) (Lambert's cosine law), a point whose ray
+ * towards the light (-direction) meets the box gets nothing. The reference
+ * decides shadow by the slab test of that ray against the box (Kay and
+ * Kajiya 1986), independently of the solver's ray tracing; points within
+ * 1e-6 m of a shadow edge (either answer acceptable) are skipped. */
+static int ray_meets_box(cdl_vec3 p, cdl_vec3 w, cdl_vec3 lo, cdl_vec3 hi)
+{
+    const double o[3] = {p.x, p.y, p.z}, d[3] = {w.x, w.y, w.z}, l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+    double t0 = 0.0, t1 = INFINITY;
+    for (int k = 0; k < 3; ++k) {
+        if (d[k] == 0.0) {
+            if (o[k] < l[k] || o[k] > h[k]) return 0;
+            continue;
+        }
+        double a = (l[k] - o[k]) / d[k], b = (h[k] - o[k]) / d[k];
+        if (a > b) {
+            double t = a;
+            a = b;
+            b = t;
+        }
+        t0 = fmax(t0, a);
+        t1 = fmin(t1, b);
+    }
+    return t0 < t1;
+}
+
+static void test_directional_shadow(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [-5, -5, 0], \"u\": [10, 0, 0], "
+        "\"v\": [0, 10, 0], \"reflectance\": 0},"
+        " {\"type\": \"box\", \"min\": [-0.5, -0.5, 0], \"max\": [0.5, 0.5, 1], \"reflectance\": 0}],"
+        " \"luminaires\": [{\"type\": \"directional\", \"direction\": [0.3, 0.2, -1], \"illuminance_lx\": 80000,"
+        " \"maintenance_factor\": 0.9}],"
+        " \"grids\": [{\"name\": \"floor\", \"type\": \"rect\", \"origin\": [-3, -3, 0], \"u\": [6, 0, 0], "
+        "\"v\": [0, 6, 0], \"nu\": 48, \"nv\": 48}, {\"name\": \"faces\", \"type\": \"points\", \"points\": ["
+        " {\"p\": [0, 0, 1], \"n\": [0, 0, 1]}, {\"p\": [-0.5, 0, 0.5], \"n\": [-1, 0, 0]},"
+        " {\"p\": [0.5, 0, 0.5], \"n\": [1, 0, 0]}]}], \"solver\": {\"method\": \"direct\"}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 2)) return;
+    const cdl_vec3 to_light = cdl_vec3_normalize(cdl_vec3_make(-0.3, -0.2, 1.0));
+    const double lit = 80000.0 * 0.9 * to_light.z; /* floor normal +z */
+    const cdl_grid_solution *g = &sol.grids[0];
+    int shadowed = 0, skipped = 0, wrong = 0;
+    for (size_t i = 0; i < g->grid.count; ++i) {
+        cdl_vec3 p = g->grid.points[i];
+        const double m = 1e-6;
+        int in_small = ray_meets_box(p, to_light, cdl_vec3_make(-0.5 + m, -0.5 + m, m), cdl_vec3_make(0.5 - m, 0.5 - m, 1 - m));
+        int in_large = ray_meets_box(p, to_light, cdl_vec3_make(-0.5 - m, -0.5 - m, -m), cdl_vec3_make(0.5 + m, 0.5 + m, 1 + m));
+        if (in_small != in_large) {
+            skipped++;
+            continue;
+        }
+        double expected = in_small ? 0.0 : lit;
+        shadowed += in_small;
+        if (expected == 0.0 ? g->E[i] != 0.0 : fabs(g->E[i] - expected) > 1e-12 * expected) {
+            if (wrong++ < 5) fprintf(stderr, "(%g, %g): E = %.17g, expected %.17g\n", p.x, p.y, g->E[i], expected);
+        }
+    }
+    CHECK_MSG(wrong == 0, "%d floor points wrong", wrong);
+    /* The box and its shadow: the hull of the unit footprint and the top
+     * moved by (0.3, 0.2), 1 + 0.3 + 0.2 = 1.5 m^2, about 96 cells of
+     * 0.125 m (give or take the cells along its outline). */
+    CHECK_MSG(shadowed >= 80 && shadowed <= 112 && skipped < 10, "%d shadowed, %d skipped", shadowed, skipped);
+    /* On the box itself: the top faces the light through nothing; the -x
+     * face (the light comes from -x) gets E_n MF cos; the +x face is behind. */
+    const double *F = sol.grids[1].E;
+    CHECK_REL(F[0], lit, 1e-12);
+    CHECK_REL(F[1], 80000.0 * 0.9 * -to_light.x * -1.0 * -1.0, 1e-12);
+    CHECK(F[2] == 0.0);
+    /* Exact with one shadow ray per point, never sampled. */
+    for (size_t i = 0; i < g->grid.count; ++i) CHECK(g->E_stderr[i] == 0.0);
+    CHECK(strstr(sol.plan_json, "exact, one shadow ray per point") != NULL);
+    done(scene, &sol);
+}
+
+/* A uniform sky partly hidden: an upper-hemisphere sky of luminance L over a
+ * point on the ground at distance a from a long wall of height h. The wall
+ * (an infinitely long strip, from the point's plane up to angle atan(h / a))
+ * takes the configuration factor F = (1 - a / sqrt(a^2 + h^2)) / 2 from the
+ * sky (Hottel's crossed strings for a strip element; Modest, Radiative Heat
+ * Transfer, ch. 4), so E = pi L (1 - F). The wall is 200 m long: the part
+ * an infinite one would add beyond |y| = 100 m is a h^2 / (3 pi 100^3) ~
+ * 1e-7 of the hemisphere, far below the sampling error. The solver must
+ * sample here (exact minus sampled hidden part) and agree within 4
+ * standard errors. */
+static void test_sky_behind_wall(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [1, -100, 0], \"u\": [0, 200, 0], "
+        "\"v\": [0, 0, 1], \"reflectance\": 0}],"
+        " \"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 1000, \"hemisphere\": \"upper\"}],"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]},"
+        " {\"p\": [-1, 0, 0], \"n\": [0, 0, 1]}, {\"p\": [3, 0, 0], \"n\": [0, 0, 1]}]}],"
+        " \"solver\": {\"method\": \"direct\", \"direct_samples\": 4096}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    const double a[2] = {1.0, 2.0}, h = 1.0;
+    for (int i = 0; i < 2; ++i) {
+        double F = 0.5 * (1.0 - a[i] / sqrt(a[i] * a[i] + h * h));
+        double expected = CDL_PI * 1000.0 * (1.0 - F);
+        double E = sol.grids[0].E[i], se = sol.grids[0].E_stderr[i];
+        CHECK_MSG(se > 0.0 && se < 0.01 * expected, "point %d: stderr %g", i, se);
+        CHECK_MSG(fabs(E - expected) <= 4.0 * se, "point %d: E = %g, expected %g +- %g", i, E, expected, 4.0 * se);
+    }
+    /* Behind the wall (facing up, the wall beside it): the same F at a = 2. */
+    double F = 0.5 * (1.0 - 2.0 / sqrt(5.0));
+    CHECK_MSG(fabs(sol.grids[0].E[2] - CDL_PI * 1000.0 * (1.0 - F)) <= 4.0 * sol.grids[0].E_stderr[2],
+              "behind: E = %g +- %g", sol.grids[0].E[2], sol.grids[0].E_stderr[2]);
+    CHECK(strstr(sol.plan_json, "sampled where partly hidden") != NULL);
+    done(scene, &sol);
+}
+
+/* A goniometric luminaire whose IES file takes its TILT table from a
+ * separate file (tests/data/photometric/ies_tilt_file.*: rotationally
+ * symmetric, I(gamma = 0) = 300 cd, tilt factors 1, 0.95, 0.85, 0.7 at 0, 30,
+ * 60, 90 degrees), installed tilted: the tilt factor at the installed tilt
+ * (the angle of the turned nadir from -z), linear between table angles
+ * (LM-63-2019, 5.4), multiplies the intensity, as do multiplier and
+ * maintenance factor; flux_lm first rescales the table to that flux. Probes
+ * on the turned nadir (gamma = 0), facing the luminaire: E = I / d^2. */
+static void test_goniometric_tilt_and_flux(void)
+{
+    const char *ies = CANDELA_SOURCE_DIR "/tests/data/photometric/ies_tilt_file.ies";
+    cdl_photometry *ph = NULL;
+    cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_error err;
+    CHECK_OK(cdl_photometry_read_file(ies, &opt, &ph, &err), &err);
+    if (!ph) return;
+    double table_flux = cdl_photometry_flux(ph).lm;
+    cdl_photometry_release(ph);
+    char json[2][2048];
+    /* 1: nadir turned 30 degrees towards +x, 2 m away, MF 0.8.
+     * 2: 45 degrees about x turns the nadir towards +y; flux_lm and multiplier. */
+    snprintf(json[0], sizeof json[0],
+             "{\"version\": 1, \"luminaires\": [{\"type\": \"goniometric\", \"file\": \"%s\", \"position\": [0, 0, 3],"
+             " \"rotation\": [0, -30, 0], \"maintenance_factor\": 0.8}],"
+             " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": ["
+             " {\"p\": [1, 0, 1.2679491924311228], \"n\": [-0.5, 0, 0.8660254037844386]}]}],"
+             " \"solver\": {\"method\": \"direct\"}}",
+             ies);
+    snprintf(json[1], sizeof json[1],
+             "{\"version\": 1, \"luminaires\": [{\"type\": \"goniometric\", \"file\": \"%s\", \"position\": [0, 0, 3],"
+             " \"rotation\": [45, 0, 0], \"flux_lm\": 2400, \"multiplier\": 0.5}],"
+             " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": ["
+             " {\"p\": [0, 1.4142135623730951, 1.5857864376269049], \"n\": [0, -0.70710678118654757, 0.70710678118654757]}]}],"
+             " \"solver\": {\"method\": \"direct\"}}",
+             ies);
+    /* 300 cd x tilt factor 0.95 (at 30 degrees) x 0.8 at 2 m; then the table
+     * rescaled to 2400 lm, tilt factor halfway between 0.95 and 0.85 (45
+     * degrees), multiplier 0.5, at 2 m. */
+    const double expected[2] = {300.0 * 0.95 * 0.8 / 4.0, 300.0 * (2400.0 / table_flux) * 0.9 * 0.5 / 4.0};
+    for (int k = 0; k < 2; ++k) {
+        cdl_scene *scene;
+        cdl_solution sol;
+        if (!solve_json(json[k], &scene, &sol, 1)) return;
+        CHECK_REL(sol.grids[0].E[0], expected[k], 1e-12);
+        done(scene, &sol);
+    }
+}
+
+/* An environment image without a Y channel: luminance is the Rec. 709 luma
+ * 0.2126 R + 0.7152 G + 0.0722 B, times scale and maintenance factor
+ * (DESIGN.md). A uniform RGB image is a uniform sphere of that luminance: pi
+ * L on any plane, here estimated by sampling (images are always sampled),
+ * within 4 standard errors. */
+static void test_environment_rgb_scale(void)
+{
+    enum { W = 16, H = 8 };
+    static float R[W * H], G[W * H], B[W * H];
+    for (int i = 0; i < W * H; ++i) {
+        R[i] = 1000.0f;
+        G[i] = 2000.0f;
+        B[i] = 500.0f;
+    }
+    cdl_exr_channel ch[3] = {{"R", R}, {"G", G}, {"B", B}};
+    cdl_error err;
+    CHECK_OK(cdl_exr_write(CANDELA_TEST_TMPDIR "/solve_rgb_sky.exr", W, H, ch, 3, NULL, 0, &err), &err);
+    const char *json =
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"environment\", \"file\": \"solve_rgb_sky.exr\", \"scale\": 2.5,"
+        " \"maintenance_factor\": 0.6}], \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": ["
+        " {\"p\": [0, 0, 0], \"n\": [0, 0, 1]}, {\"p\": [0, 0, 0], \"n\": [0.6, 0, -0.8]}]}],"
+        " \"solver\": {\"method\": \"direct\", \"direct_samples\": 65536}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    double L = (0.2126 * 1000.0 + 0.7152 * 2000.0 + 0.0722 * 500.0) * 2.5 * 0.6;
+    for (int i = 0; i < 2; ++i) {
+        double E = sol.grids[0].E[i], se = sol.grids[0].E_stderr[i];
+        /* per sample 4 pi L cos over half the sphere: sd 1.29 pi L; 65536 samples: 0.5 % */
+        CHECK_MSG(se > 0.0 && se < 0.01 * CDL_PI * L, "point %d: stderr %g", i, se);
+        CHECK_MSG(fabs(E - CDL_PI * L) <= 4.0 * se, "point %d: E = %g, expected %g +- %g", i, E, CDL_PI * L, 4.0 * se);
+    }
+    done(scene, &sol);
+}
+
 int main(void)
 {
     test_inverse_square_cosine();
@@ -731,5 +932,9 @@ int main(void)
     test_image_environment();
     test_plan_no_rays();
     test_emitting_surfaces();
+    test_directional_shadow();
+    test_sky_behind_wall();
+    test_goniometric_tilt_and_flux();
+    test_environment_rgb_scale();
     return check_finish();
 }
