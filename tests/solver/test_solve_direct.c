@@ -787,7 +787,7 @@ static void test_directional_shadow(void)
      * face (the light comes from -x) gets E_n MF cos; the +x face is behind. */
     const double *F = sol.grids[1].E;
     CHECK_REL(F[0], lit, 1e-12);
-    CHECK_REL(F[1], 80000.0 * 0.9 * -to_light.x * -1.0 * -1.0, 1e-12);
+    CHECK_REL(F[1], 80000.0 * 0.9 * cdl_vec3_dot(cdl_vec3_make(-1, 0, 0), to_light), 1e-12);
     CHECK(F[2] == 0.0);
     /* Exact with one shadow ray per point, never sampled. */
     for (size_t i = 0; i < g->grid.count; ++i) CHECK(g->E_stderr[i] == 0.0);
