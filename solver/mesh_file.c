@@ -310,9 +310,13 @@ static cdl_status parse_obj(const char *data, size_t size, const char *name, cdl
                                   tok, len);
         }
     }
-    if (max_index > (long long)b.mesh.vertex_count)
-        return builder_free(&b), fail_at(err, name, max_index_line, "vertex indices up to the number of vertices",
-                                          "index %lld of %zu vertices", max_index, b.mesh.vertex_count);
+    if (max_index > (long long)b.mesh.vertex_count) {
+        /* The message first: freeing the builder zeroes its vertex count. */
+        cdl_status st = fail_at(err, name, max_index_line, "vertex indices up to the number of vertices",
+                                "index %lld of %zu vertices", max_index, b.mesh.vertex_count);
+        builder_free(&b);
+        return st;
+    }
     return builder_finish(&b, name, out, err);
 }
 

@@ -86,7 +86,7 @@ int main(void)
     cdl_mesh_data_release(&m);
 
     /* Broken OBJ files: the message names file and line. */
-    check_broken(CDL_MESH_OBJ, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", 0, "bad.mesh:4: expected vertex indices up to");
+    check_broken(CDL_MESH_OBJ, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", 0, "bad.mesh:4: expected vertex indices up to the number of vertices, found index 4 of 3 vertices");
     check_broken(CDL_MESH_OBJ, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", 0, "bad.mesh:4: expected a vertex reference");
     check_broken(CDL_MESH_OBJ, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n", 0, "bad.mesh:4: expected a relative index");
     check_broken(CDL_MESH_OBJ, "# c\nv 0 zero 0\n", 0, "bad.mesh:2: expected a finite number, found \"zero\"");
