@@ -29,6 +29,7 @@ typedef struct ies_reader {
     cdl_error *err;
     cdl_photometry_scanner s;
     cdl_photometry_scanner table_start; /* after the ballast line */
+    unsigned values_line;               /* line of the first candela value: where table-wide errors point */
 } ies_reader;
 
 static cdl_status oom(ies_reader *r) { return cdl_error_out_of_memory(r->err); }
@@ -253,6 +254,11 @@ static cdl_status read_records(ies_reader *r, ies_header *h)
                              "%s:%u: expected %s 1 (type C), 2 (type B) or 3 (type A), found %ld: unknown "
                              "photometric type",
                              src, h->line_a[5], names_a[5], h->type);
+    /* types A/B: H is a latitude (B) or a longitude (A) of a two-angle grid; one H encloses no solid angle */
+    if (h->type != 1 && h->nh < 2)
+        return cdl_error_set(r->err, CDL_ERR_INPUT,
+                             "%s:%u: expected %s >= 2 for type %c data (one angle encloses no solid angle), found %ld",
+                             src, h->line_a[4], names_a[4], h->type == 2 ? 'B' : 'A', h->nh);
 
     static const char *const names_b[3][3] = {
         {"the ballast factor (record B, field 1)", "the ballast-lamp photometric factor (record B, field 2)",
@@ -344,6 +350,7 @@ static cdl_status read_values(ies_reader *r, const ies_header *h, const double *
             double x;
             cdl_token_kind k = cdl_photometry_take_number(&r->s, &x);
             unsigned line = r->s.tok_line;
+            if (i == 0 && j == 0) r->values_line = line;
             if (k == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * h->multiplier)) {
                 cd[i * h->nv + j] = x * h->multiplier;
                 continue;
@@ -465,7 +472,7 @@ static cdl_status build_type_c(ies_reader *r, const ies_header *h, const double 
     }
     if (st == CDL_OK) {
         st = cdl_photometry_set_table(r->p, CDL_PHOTOMETRIC_TYPE_C, sym, c, out_n, v, nv, table, r->err);
-        if (st != CDL_OK) cdl_error_prefix(r->err, "%s: ", r->source);
+        if (st != CDL_OK) cdl_error_prefix(r->err, "%s:%u: ", r->source, r->values_line);
     }
     free(c);
     free(table);
@@ -597,7 +604,7 @@ cdl_status cdl_ies_read(const char *data, size_t size, const char *name, const c
         if (st == CDL_OK) {
             st = cdl_photometry_set_table(p, h.type == 2 ? CDL_PHOTOMETRIC_TYPE_B : CDL_PHOTOMETRIC_TYPE_A,
                                           CDL_PHOTOMETRY_SYMMETRY_INFER, hz, nh, v, nv, cd, err);
-            if (st != CDL_OK) cdl_error_prefix(err, "%s: ", r.source);
+            if (st != CDL_OK) cdl_error_prefix(err, "%s:%u: ", r.source, r.values_line);
         }
     }
     free(v);

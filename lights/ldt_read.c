@@ -324,11 +324,13 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
     if (st == CDL_OK && !(cd = malloc(np * ng * sizeof *cd))) st = oom(&r);
     double scale = h.cfli * set1->flux_lm / 1000.0;
     char what[96];
+    unsigned values_line = s.line; /* line of the first intensity: where table-wide errors point */
     for (size_t i = 0; i < np && st == CDL_OK; ++i)
         for (size_t j = 0; j < ng && st == CDL_OK; ++j) {
             double x;
             cdl_token_kind k = cdl_photometry_take_number(&s, &x);
             unsigned line = s.tok_line;
+            if (i == 0 && j == 0) values_line = line;
             if (k == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * scale)) {
                 cd[i * ng + j] = x * scale;
                 continue;
@@ -370,7 +372,7 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
         if (st == CDL_OK) {
             if (sym == CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL) planes[0] = 0.0;
             st = cdl_photometry_set_table(p, CDL_PHOTOMETRIC_TYPE_C, sym, planes, np, g, ng, cd, err);
-            if (st != CDL_OK) cdl_error_prefix(err, "%s: ", r.source);
+            if (st != CDL_OK) cdl_error_prefix(err, "%s:%u: ", r.source, values_line);
         }
     }
     if (st == CDL_OK) fill_opening(m);

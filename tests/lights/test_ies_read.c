@@ -448,6 +448,15 @@ static void test_errors(void)
     /* multiplier 0 */
     p = read_text("IESNA:LM-63-2002\nTILT=NONE\n1 -1 0 2 1 1 2 0 0 0\n1 1 10\n0 90\n0\n10 5\n", &err);
     CHECK(!p && strstr(err.message, "candela multiplier"));
+    /* type B with a single horizontal angle (a latitude): no solid angle, at record A */
+    p = read_text("IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 3 1 2 2 0 0 0\n1 1 10\n-90 0 90\n0\n10 5 1\n", &err);
+    CHECK_MSG(!p && strstr(err.message, "mem.ies:3: expected the number of horizontal angles") &&
+                  strstr(err.message, ">= 2 for type B data") && strstr(err.message, "found 1"),
+              "%s", err.message);
+    /* values each finite whose integral overflows: at the line of the first candela value */
+    p = read_text("IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 3 1 1 2 0 0 0\n1 1 10\n0 45 90\n0\n1e308 1e308 1e308\n", &err);
+    CHECK_MSG(!p && strstr(err.message, "mem.ies:7: expected candela values whose flux is a finite number, found"),
+              "%s", err.message);
     /* an absurd table size is refused before any allocation */
     p = read_text("IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 900000000 900000000 1 2 0 0 0\n1 1 10\n0 90\n", &err);
     CHECK(!p && err.status == CDL_ERR_INPUT);
