@@ -411,6 +411,7 @@ cdl_status cdl_photometry_add_keyword(cdl_photometry *p, const char *key, size_t
     }
     p->meta.keywords[n].key = kc;
     p->meta.keywords[n].value = vc;
+    p->meta.keywords[n].line = 0;
     p->meta.keyword_count = n + 1;
     return CDL_OK;
 }
@@ -449,6 +450,7 @@ cdl_status cdl_photometry_copy_metadata(cdl_photometry *dst, const cdl_photometr
         const cdl_photometry_keyword *k = &src->meta.keywords[i];
         if (cdl_photometry_add_keyword(dst, k->key, strlen(k->key), k->value, strlen(k->value)) != CDL_OK)
             return CDL_ERR_INTERNAL;
+        dst->meta.keywords[i].line = k->line;
     }
     if (src->meta.tilt_count &&
         cdl_photometry_set_tilt(dst, src->meta.tilt_geometry, src->tilt_angles, src->tilt_factors,

@@ -246,7 +246,7 @@ static void test_fixtures(void)
     /* the stated LORL disagrees: a warning, an error with --strict */
     CHECK_OK(cdl_photometry_read_file(FIXTURES "warn_lorl.ldt", &o, &p, &err), &err);
     if (p) {
-        CHECK(pc_has_warning(p, "stated light output ratio LORL 50 %"));
+        CHECK(pc_has_warning(p, "warn_lorl.ldt:23: stated light output ratio LORL 50 %"));
         cdl_photometry_release(p);
     }
     o.strict = 1;
