@@ -29,6 +29,9 @@ typedef struct ies_reader {
     cdl_error *err;
     cdl_photometry_scanner s;
     cdl_photometry_scanner table_start; /* after the ballast line */
+    unsigned values_line;               /* line of the first candela value: where table-wide errors point */
+    unsigned last_row_line;             /* line of the first value of the last horizontal angle's row */
+    unsigned v_line, h_line;            /* lines of the last vertical and the last horizontal angle */
 } ies_reader;
 
 static cdl_status oom(ies_reader *r) { return cdl_error_out_of_memory(r->err); }
@@ -131,8 +134,11 @@ static cdl_status read_header(ies_reader *r, const char *data, size_t size, char
             version = version_of_tag(line, len, &standard);
             cdl_photometry_copy_text(m->version_tag, sizeof m->version_tag, line, len);
             if (!standard &&
-                cdl_photometry_add_warning(r->p, "%s:1: non-standard version tag '%s', read as LM-63-%d", r->source,
-                                           m->version_tag, version) != CDL_OK)
+                cdl_photometry_add_warning(r->p,
+                                           "%s:1: expected a standard version tag (IESNA91, IESNA:LM-63-1995, "
+                                           "IESNA:LM-63-2002 or IES:LM-63-2019), found the non-standard version tag "
+                                           "'%s': read as LM-63-%d",
+                                           r->source, m->version_tag, version) != CDL_OK)
                 return oom(r);
             continue;
         }
@@ -146,8 +152,10 @@ static cdl_status read_header(ies_reader *r, const char *data, size_t size, char
             return CDL_OK;
         }
         if (len == 0) continue;
+        size_t before = m->keyword_count;
         cdl_status st = read_keyword_line(r, line, len, version);
         if (st != CDL_OK) return st;
+        if (m->keyword_count > before) m->keywords[m->keyword_count - 1].line = number;
     }
     return cdl_error_set(r->err, CDL_ERR_INPUT,
                          "%s:%u: expected a 'TILT=' line (TILT=NONE, TILT=INCLUDE or TILT=<file>) after the "
@@ -253,6 +261,11 @@ static cdl_status read_records(ies_reader *r, ies_header *h)
                              "%s:%u: expected %s 1 (type C), 2 (type B) or 3 (type A), found %ld: unknown "
                              "photometric type",
                              src, h->line_a[5], names_a[5], h->type);
+    /* types A/B: H is a latitude (B) or a longitude (A) of a two-angle grid; one H encloses no solid angle */
+    if (h->type != 1 && h->nh < 2)
+        return cdl_error_set(r->err, CDL_ERR_INPUT,
+                             "%s:%u: expected %s >= 2 for type %c data (one angle encloses no solid angle), found %ld",
+                             src, h->line_a[4], names_a[4], h->type == 2 ? 'B' : 'A', h->nh);
 
     static const char *const names_b[3][3] = {
         {"the ballast factor (record B, field 1)", "the ballast-lamp photometric factor (record B, field 2)",
@@ -310,12 +323,13 @@ static void count_hint(const ies_reader *r, const ies_header *h, char *out, size
 }
 
 static cdl_status read_angles(ies_reader *r, const ies_header *h, size_t done, const char *kind, long n, double lo,
-                              double hi, double *x)
+                              double hi, double *x, unsigned *last_line)
 {
     char what[96];
     for (long i = 0; i < n; ++i) {
         cdl_token_kind k = cdl_photometry_take_number(&r->s, &x[i]);
         unsigned line = r->s.tok_line;
+        *last_line = line;
         if (k == CDL_TOKEN_END) return truncated(r, h, done + (size_t)i, r->s.line);
         if (k != CDL_TOKEN_NUMBER || x[i] < lo || x[i] > hi || (i > 0 && !(x[i] > x[i - 1])))
             snprintf(what, sizeof what, "%s angle %ld of %ld", kind, i + 1, n);
@@ -344,6 +358,8 @@ static cdl_status read_values(ies_reader *r, const ies_header *h, const double *
             double x;
             cdl_token_kind k = cdl_photometry_take_number(&r->s, &x);
             unsigned line = r->s.tok_line;
+            if (i == 0 && j == 0) r->values_line = line;
+            if (i == h->nh - 1 && j == 0) r->last_row_line = line;
             if (k == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * h->multiplier)) {
                 cd[i * h->nv + j] = x * h->multiplier;
                 continue;
@@ -432,18 +448,22 @@ static cdl_status build_type_c(ies_reader *r, const ies_header *h, const double 
                     at = j;
                 }
             if (worst > 0.0 &&
-                cdl_photometry_add_warning(r->p, "%s: the H = 0 and H = 360 rows differ (largest difference %g cd "
-                                                 "at V = %g: %g vs %g); the H = 0 row is used",
-                                           r->source, worst, v[at], r0[at], r1[at]) != CDL_OK)
+                cdl_photometry_add_warning(r->p,
+                                           "%s:%u: the H = 0 and H = 360 rows differ: expected the H = 360 row to "
+                                           "repeat the H = 0 row, found a largest difference of %g cd at V = %g "
+                                           "(%g vs %g); the H = 0 row is used",
+                                           r->source, r->last_row_line, worst, v[at], r0[at], r1[at]) != CDL_OK)
                 st = oom(r);
             --n;
         } else if (n > 1) {
             double gap = first + 360.0 - last, step = 0.0;
             for (size_t i = 1; i < n; ++i) step = fmax(step, hz[i] - hz[i - 1]);
             if (gap > step + 1e-9 &&
-                cdl_photometry_add_warning(r->p, "%s: horizontal angles run %g..%g, not a symmetric range nor a "
-                                                 "full circle: the %g degree gap to %g is interpolated across",
-                                           r->source, first, last, gap, first + 360.0) != CDL_OK)
+                cdl_photometry_add_warning(r->p,
+                                           "%s:%u: expected horizontal angles 0, 0..90, 0..180, 90..270 or a full "
+                                           "circle, found horizontal angles %g..%g: the %g degree gap to %g "
+                                           "is interpolated across",
+                                           r->source, r->h_line, first, last, gap, first + 360.0) != CDL_OK)
                 st = oom(r);
         }
         /* C = (360 - H) mod 360, in increasing C: H = 0 first, then the rest reversed */
@@ -465,7 +485,7 @@ static cdl_status build_type_c(ies_reader *r, const ies_header *h, const double 
     }
     if (st == CDL_OK) {
         st = cdl_photometry_set_table(r->p, CDL_PHOTOMETRIC_TYPE_C, sym, c, out_n, v, nv, table, r->err);
-        if (st != CDL_OK) cdl_error_prefix(r->err, "%s: ", r->source);
+        if (st != CDL_OK) cdl_error_prefix(r->err, "%s:%u: ", r->source, r->values_line);
     }
     free(c);
     free(table);
@@ -483,6 +503,7 @@ static cdl_status fill_metadata(ies_reader *r, const ies_header *h)
     m->candela_multiplier = h->multiplier;
     m->ballast_factor = h->ballast;
     m->input_watts = h->watts > 0.0 ? h->watts : 0.0;
+    r->p->lamp_flux_line = h->line_a[1];
     if (m->ies_version <= 1995) {
         if (h->factor2 > 0.0) {
             m->ballast_lamp_factor = h->factor2;
@@ -574,30 +595,33 @@ cdl_status cdl_ies_read(const char *data, size_t size, const char *name, const c
     if (!v || !hz || !cd) st = oom(&r);
     const char *vname = h.type == 1 ? "vertical (type C)" : h.type == 2 ? "vertical (type B)" : "vertical (type A)";
     const char *hname = h.type == 1 ? "horizontal (type C)" : h.type == 2 ? "horizontal (type B)" : "horizontal (type A)";
-    if (st == CDL_OK) st = read_angles(&r, &h, 0, vname, h.nv, lo_v, hi_v, v);
-    if (st == CDL_OK) st = read_angles(&r, &h, (size_t)h.nv, hname, h.nh, lo_h, hi_h, hz);
+    if (st == CDL_OK) st = read_angles(&r, &h, 0, vname, h.nv, lo_v, hi_v, v, &r.v_line);
+    if (st == CDL_OK) st = read_angles(&r, &h, (size_t)h.nv, hname, h.nh, lo_h, hi_h, hz, &r.h_line);
     if (st == CDL_OK) st = read_values(&r, &h, v, hz, cd);
     if (st == CDL_OK) st = check_trailing(&r);
     if (st == CDL_OK) st = fill_metadata(&r, &h);
     if (st == CDL_OK && h.type == 1) {
         if ((v[0] != 0.0 && v[0] != 90.0) || (v[nv - 1] != 90.0 && v[nv - 1] != 180.0))
-            if (cdl_photometry_add_warning(p, "%s: vertical angles run %g..%g; LM-63 expects 0 or 90 to 90 or 180, "
-                                              "and the intensity outside is taken as zero",
-                                           r.source, v[0], v[nv - 1]) != CDL_OK)
+            if (cdl_photometry_add_warning(p,
+                                           "%s:%u: expected vertical angles from 0 or 90 to 90 or 180 (LM-63), found "
+                                           "vertical angles %g..%g; the intensity outside is taken as zero",
+                                           r.source, r.v_line, v[0], v[nv - 1]) != CDL_OK)
                 st = oom(&r);
         if (st == CDL_OK) st = build_type_c(&r, &h, v, hz, cd);
     } else if (st == CDL_OK) {
         int ok_h = (hz[0] == -90.0 || hz[0] == 0.0) && hz[nh - 1] == 90.0;
         int ok_v = (v[0] == -90.0 || v[0] == 0.0) && v[nv - 1] == 90.0;
         if ((!ok_h || !ok_v) &&
-            cdl_photometry_add_warning(p, "%s: type %c angles run H %g..%g, V %g..%g; LM-63 expects -90 or 0 to 90 "
-                                          "for both, and the intensity outside is taken as zero",
-                                       r.source, h.type == 2 ? 'B' : 'A', hz[0], hz[nh - 1], v[0], v[nv - 1]) != CDL_OK)
+            cdl_photometry_add_warning(p,
+                                       "%s:%u: expected type %c angles from -90 or 0 to 90 for both H and V (LM-63), "
+                                       "found H %g..%g, V %g..%g; the intensity outside is taken as zero",
+                                       r.source, r.h_line, h.type == 2 ? 'B' : 'A', hz[0], hz[nh - 1], v[0],
+                                       v[nv - 1]) != CDL_OK)
             st = oom(&r);
         if (st == CDL_OK) {
             st = cdl_photometry_set_table(p, h.type == 2 ? CDL_PHOTOMETRIC_TYPE_B : CDL_PHOTOMETRIC_TYPE_A,
                                           CDL_PHOTOMETRY_SYMMETRY_INFER, hz, nh, v, nv, cd, err);
-            if (st != CDL_OK) cdl_error_prefix(err, "%s: ", r.source);
+            if (st != CDL_OK) cdl_error_prefix(err, "%s:%u: ", r.source, r.values_line);
         }
     }
     free(v);

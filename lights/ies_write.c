@@ -175,7 +175,9 @@ static void write_keywords(cdl_text *out, const cdl_photometry *p, int version, 
                      s->type, s->flux_lm, s->watts);
             keyword(out, "OTHER", line);
         }
-        if (m->lamp_set_count > 1)
+        if (m->lamp_set_count == 2)
+            cdl_photometry_note(lost, "EULUMDAT lamp set 2 (alternative equipment) kept only as [OTHER] text");
+        else if (m->lamp_set_count > 2)
             cdl_photometry_note(lost, "EULUMDAT lamp sets 2..%zu (alternative equipment) kept only as [OTHER] text",
                                 m->lamp_set_count);
         cdl_photometry_note(lost, "EULUMDAT direct ratios (lines 27-36) and luminaire dimensions (lines 13-15) have "

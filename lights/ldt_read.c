@@ -188,12 +188,13 @@ static int stored(long isym, double c)
 }
 
 static cdl_status read_angles(ldt_reader *r, cdl_photometry_scanner *s, const char *kind, long n, double hi,
-                              double *x)
+                              double *x, unsigned *first_line)
 {
     char what[96];
     for (long i = 0; i < n; ++i) {
         cdl_token_kind k = cdl_photometry_take_number(s, &x[i]);
         unsigned line = s->tok_line;
+        if (i == 0) *first_line = line;
         if (k != CDL_TOKEN_NUMBER || x[i] < 0.0 || x[i] > hi || (i > 0 && !(x[i] > x[i - 1])))
             snprintf(what, sizeof what, "%s angle %ld of %ld", kind, i + 1, n);
         if (k != CDL_TOKEN_NUMBER) return cdl_photometry_token_error(s, k, r->source, what, r->err);
@@ -260,6 +261,10 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
     m->absolute = set1->count < 0;
     m->rated_lamp_flux_lm = m->absolute ? 0.0 : set1->flux_lm;
     m->input_watts = set1->watts;
+    /* fixed lines of the header (FORMAT_NOTES section 2) */
+    p->lamp_flux_line = 29;
+    p->lorl_line = 23;
+    p->dff_line = 22;
     if (!(set1->flux_lm > 0.0))
         return cdl_error_set(err, CDL_ERR_INPUT,
                              "%s:29: expected the lamp flux of set 1 > 0 (intensities are in cd/klm of it), found %g",
@@ -285,10 +290,12 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
     double *planes = malloc(mc * sizeof *planes), *cd = NULL;
     size_t np = 0;
     if (!c || !g || !planes) st = oom(&r);
-    if (st == CDL_OK) st = read_angles(&r, &s, "C", h.mc, 360.0, c);
-    if (st == CDL_OK) st = read_angles(&r, &s, "gamma", h.ng, 180.0, g);
+    unsigned c_line = 0, g_line = 0;
+    if (st == CDL_OK) st = read_angles(&r, &s, "C", h.mc, 360.0, c, &c_line);
+    if (st == CDL_OK) st = read_angles(&r, &s, "gamma", h.ng, 180.0, g, &g_line);
     if (st == CDL_OK && c[0] != 0.0 &&
-        cdl_photometry_add_warning(p, "%s: the C-plane list starts at %g, not 0", r.source, c[0]) != CDL_OK)
+        cdl_photometry_add_warning(p, "%s:%u: expected the C-plane list to start at 0, found %g", r.source, c_line,
+                                   c[0]) != CDL_OK)
         st = oom(&r);
     if (st == CDL_OK) {
         if (h.isym == 1) {
@@ -324,11 +331,13 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
     if (st == CDL_OK && !(cd = malloc(np * ng * sizeof *cd))) st = oom(&r);
     double scale = h.cfli * set1->flux_lm / 1000.0;
     char what[96];
+    unsigned values_line = s.line; /* line of the first intensity: where table-wide errors point */
     for (size_t i = 0; i < np && st == CDL_OK; ++i)
         for (size_t j = 0; j < ng && st == CDL_OK; ++j) {
             double x;
             cdl_token_kind k = cdl_photometry_take_number(&s, &x);
             unsigned line = s.tok_line;
+            if (i == 0 && j == 0) values_line = line;
             if (k == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * scale)) {
                 cd[i * ng + j] = x * scale;
                 continue;
@@ -370,7 +379,7 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
         if (st == CDL_OK) {
             if (sym == CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL) planes[0] = 0.0;
             st = cdl_photometry_set_table(p, CDL_PHOTOMETRIC_TYPE_C, sym, planes, np, g, ng, cd, err);
-            if (st != CDL_OK) cdl_error_prefix(err, "%s: ", r.source);
+            if (st != CDL_OK) cdl_error_prefix(err, "%s:%u: ", r.source, values_line);
         }
     }
     if (st == CDL_OK) fill_opening(m);

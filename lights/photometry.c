@@ -129,7 +129,7 @@ static cdl_status check_type_c_symmetry(cdl_photometry_symmetry s, const double 
     switch (s) {
     case CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL:
         if (n != 1)
-            return cdl_error_set(err, CDL_ERR_INPUT, "rotational symmetry needs exactly one C-plane, found %zu", n);
+            return cdl_error_set(err, CDL_ERR_INPUT, "expected exactly one C-plane for rotational symmetry, found %zu", n);
         return CDL_OK;
     case CDL_PHOTOMETRY_SYMMETRY_QUADRANT: lo = 0.0; hi = 90.0; break;
     case CDL_PHOTOMETRY_SYMMETRY_BILATERAL_C0_C180: lo = 0.0; hi = 180.0; break;
@@ -137,16 +137,17 @@ static cdl_status check_type_c_symmetry(cdl_photometry_symmetry s, const double 
     case CDL_PHOTOMETRY_SYMMETRY_NONE:
         if (n >= 2 && c[n - 1] - c[0] >= 360.0)
             return cdl_error_set(err, CDL_ERR_INPUT,
-                                 "a full-circle table holds each C-plane once: C = %g and C = %g are the same plane",
+                                 "expected each C-plane once in a full-circle table, found C = %g and C = %g (the "
+                                 "same plane)",
                                  c[0], c[n - 1]);
         return CDL_OK;
     default:
-        return cdl_error_set(err, CDL_ERR_INPUT, "symmetry '%s' does not apply to type C data",
+        return cdl_error_set(err, CDL_ERR_INPUT, "expected a type C symmetry, found '%s' (a type A/B symmetry)",
                              cdl_photometry_symmetry_name(s));
     }
     if (n < 2 || c[0] != lo || c[n - 1] != hi)
-        return cdl_error_set(err, CDL_ERR_INPUT, "%s symmetry needs C-planes from %g to %g, found %g to %g",
-                             cdl_photometry_symmetry_name(s), lo, hi, c[0], c[n - 1]);
+        return cdl_error_set(err, CDL_ERR_INPUT, "expected C-planes from %g to %g for %s symmetry, found %g to %g",
+                             lo, hi, cdl_photometry_symmetry_name(s), c[0], c[n - 1]);
     return CDL_OK;
 }
 
@@ -193,7 +194,7 @@ cdl_status cdl_photometry_set_table(cdl_photometry *p, cdl_photometric_type type
         if ((st = check_ascending(v, nv, -vmax, vmax, "vertical angle", err)) != CDL_OK) return st;
         if (nh < 2)
             return cdl_error_set(err, CDL_ERR_INPUT,
-                                 "type %c data needs at least 2 horizontal angles, found %zu",
+                                 "expected at least 2 horizontal angles for type %c data, found %zu",
                                  type == CDL_PHOTOMETRIC_TYPE_B ? 'B' : 'A', nh);
         int hm = h[0] == 0.0 && h[nh - 1] == 90.0;
         int vm = v[0] == 0.0 && v[nv - 1] == 90.0;
@@ -202,8 +203,8 @@ cdl_status cdl_photometry_set_table(cdl_photometry *p, cdl_photometric_type type
                                            : vm     ? CDL_PHOTOMETRY_SYMMETRY_VERTICAL
                                                     : CDL_PHOTOMETRY_SYMMETRY_NONE;
         if (symmetry != CDL_PHOTOMETRY_SYMMETRY_INFER && symmetry != inferred)
-            return cdl_error_set(err, CDL_ERR_INPUT, "symmetry '%s' does not match the angle ranges (they mean '%s')",
-                                 cdl_photometry_symmetry_name(symmetry), cdl_photometry_symmetry_name(inferred));
+            return cdl_error_set(err, CDL_ERR_INPUT, "expected symmetry '%s' (what the angle ranges mean), found '%s'",
+                                 cdl_photometry_symmetry_name(inferred), cdl_photometry_symmetry_name(symmetry));
         symmetry = inferred;
         p->h_mirror = hm;
         p->v_mirror = vm;
@@ -410,6 +411,7 @@ cdl_status cdl_photometry_add_keyword(cdl_photometry *p, const char *key, size_t
     }
     p->meta.keywords[n].key = kc;
     p->meta.keywords[n].value = vc;
+    p->meta.keywords[n].line = 0;
     p->meta.keyword_count = n + 1;
     return CDL_OK;
 }
@@ -448,6 +450,7 @@ cdl_status cdl_photometry_copy_metadata(cdl_photometry *dst, const cdl_photometr
         const cdl_photometry_keyword *k = &src->meta.keywords[i];
         if (cdl_photometry_add_keyword(dst, k->key, strlen(k->key), k->value, strlen(k->value)) != CDL_OK)
             return CDL_ERR_INTERNAL;
+        dst->meta.keywords[i].line = k->line;
     }
     if (src->meta.tilt_count &&
         cdl_photometry_set_tilt(dst, src->meta.tilt_geometry, src->tilt_angles, src->tilt_factors,

@@ -228,6 +228,7 @@ typedef struct cdl_photometry_lamp_set {
 typedef struct cdl_photometry_keyword {
     char *key;          /* without brackets, e.g. "MANUFAC", "_ABSOLUTELUMENS"; "" for free text */
     char *value;        /* [MORE] continuations joined with '\n' */
+    unsigned line;      /* line of the file where the keyword starts; 0 when not read from a file */
 } cdl_photometry_keyword;
 
 typedef enum cdl_tilt_kind { CDL_TILT_NONE = 0, CDL_TILT_INCLUDE, CDL_TILT_FILE } cdl_tilt_kind;

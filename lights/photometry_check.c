@@ -9,6 +9,7 @@
  *    flux stated in a keyword ([_ABSOLUTELUMENS], [_TOTALLUMINAIRELUMENS]).
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "lights/photometry_io.h"
@@ -24,18 +25,29 @@
 
 static const char *const luminaire_flux_keywords[] = {"_ABSOLUTELUMENS", "_TOTALLUMINAIRELUMENS", "_LUMINAIRELUMENS"};
 
+/* "FILE:LINE" of the header value a warning is about, or "FILE" when the line is unknown. */
+static const char *where(char *buf, size_t size, const char *name, unsigned line)
+{
+    if (line) snprintf(buf, size, "%s:%u", name, line);
+    else snprintf(buf, size, "%s", name);
+    return buf;
+}
+
 cdl_status cdl_photometry_check_consistency(cdl_photometry *p, const char *name)
 {
     const cdl_photometry_metadata *m = &p->meta;
     double flux = p->flux_lm;
     cdl_status st = CDL_OK;
+    char at[1100];
     if (!m->absolute && m->rated_lamp_flux_lm > 0.0) {
         double lor = flux / m->rated_lamp_flux_lm;
         if (lor > 1.0 + LOR_TOLERANCE)
             st = cdl_photometry_add_warning(
-                p, "%s: output ratio above 1: the table integrates to %.6g lm, %.1f %% of the rated lamp flux %.6g lm%s",
-                name, flux, 100.0 * lor, m->rated_lamp_flux_lm,
-                lor > 1.5 ? " (is the number of lamps or the lumens per lamp wrong?)" : "");
+                p,
+                "%s: output ratio above 1: the table integrates to %.6g lm, %.1f %% of the rated lamp flux %.6g lm "
+                "(expected at most 100 %%)%s",
+                where(at, sizeof at, name, p->lamp_flux_line), flux, 100.0 * lor, m->rated_lamp_flux_lm,
+                lor > 1.5 ? "; is the number of lamps or the lumens per lamp wrong?" : "");
     }
     if (st == CDL_OK && m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT && m->ldt_lorl_percent > 0.0) {
         /* cd/klm tables integrate to LORL: Phi / Phi_lamp = LORL / 100 */
@@ -44,20 +56,29 @@ cdl_status cdl_photometry_check_consistency(cdl_photometry *p, const char *name)
         if (stated > 0.0 && fabs(flux - stated) > CDL_PHOTOMETRY_FLUX_TOLERANCE * stated)
             st = cdl_photometry_add_warning(p,
                                             "%s: stated light output ratio LORL %.4g %% disagrees with the table, "
-                                            "which integrates to %.4g %% of the lamp flux (%.6g lm instead of %.6g lm)",
-                                            name, m->ldt_lorl_percent, 100.0 * flux / lamp, flux, stated);
+                                            "which integrates to %.4g %% of the lamp flux (expected lamp flux x LORL "
+                                            "= %.6g lm within %.0f %%, found %.6g lm)",
+                                            where(at, sizeof at, name, p->lorl_line), m->ldt_lorl_percent,
+                                            100.0 * flux / lamp, stated, 100.0 * CDL_PHOTOMETRY_FLUX_TOLERANCE, flux);
     }
     if (st == CDL_OK && m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT && flux > 0.0) {
         double down = 100.0 * cdl_photometry_zone_flux(p, 0.0, 90.0).lm / flux;
         if (fabs(down - m->ldt_dff_percent) > DFF_TOLERANCE_POINTS)
             st = cdl_photometry_add_warning(p,
                                             "%s: stated downward flux fraction DFF %.4g %% disagrees with the table "
-                                            "(%.4g %%)",
-                                            name, m->ldt_dff_percent, down);
+                                            "(expected the table's %.4g %% within %.0f points)",
+                                            where(at, sizeof at, name, p->dff_line), m->ldt_dff_percent, down,
+                                            DFF_TOLERANCE_POINTS);
     }
     if (st == CDL_OK && m->format == CDL_PHOTOMETRY_FORMAT_IES && m->absolute) {
         for (size_t k = 0; k < sizeof luminaire_flux_keywords / sizeof *luminaire_flux_keywords; ++k) {
-            const char *v = cdl_photometry_keyword_value(p, luminaire_flux_keywords[k]);
+            const char *v = NULL;
+            unsigned line = 0;
+            for (size_t i = 0; i < m->keyword_count && !v; ++i)
+                if (cdl_photometry_strcaseeq(m->keywords[i].key, luminaire_flux_keywords[k])) {
+                    v = m->keywords[i].value;
+                    line = m->keywords[i].line;
+                }
             if (!v) continue;
             double stated;
             const char *t = v;
@@ -67,9 +88,10 @@ cdl_status cdl_photometry_check_consistency(cdl_photometry *p, const char *name)
             if (fabs(flux - stated) > CDL_PHOTOMETRY_FLUX_TOLERANCE * stated)
                 st = cdl_photometry_add_warning(p,
                                                 "%s: the integrated flux %.6g lm is far from the luminaire flux %g "
-                                                "lm stated in [%s] (%+.1f %%)",
-                                                name, flux, stated, luminaire_flux_keywords[k],
-                                                100.0 * (flux - stated) / stated);
+                                                "lm stated in [%s] (%+.1f %%; expected within %.0f %%)",
+                                                where(at, sizeof at, name, line), flux, stated,
+                                                luminaire_flux_keywords[k], 100.0 * (flux - stated) / stated,
+                                                100.0 * CDL_PHOTOMETRY_FLUX_TOLERANCE);
             break;
         }
     }

@@ -32,6 +32,9 @@ struct cdl_photometry {
     double *tilt_angles, *tilt_factors; /* owned; meta.tilt_* point here */
     char **warnings;
     size_t warning_count, warning_capacity;
+    /* Lines of the file the header-versus-table warnings point at (0: not read from a file). */
+    unsigned lamp_flux_line;      /* IES record A field 2 (lumens per lamp); EULUMDAT line 29 (set 1 flux) */
+    unsigned lorl_line, dff_line; /* EULUMDAT lines 23 and 22 */
 };
 
 /* A zeroed object with neutral metadata (factors 1). NULL when out of memory. */

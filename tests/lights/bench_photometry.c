@@ -1,6 +1,9 @@
 /* bench_photometry - read and summarise every file of the photometric corpus
- * and report files per second and MB per second (no time limit is asserted:
- * machines differ). Also times the largest file alone. */
+ * and report files per second and MB per second (throughput is reported, not
+ * asserted: machines differ). Times the largest file alone and fails when
+ * reading it takes 50 ms or more, the bound the photometry issue sets for the
+ * corpus's 1.3 MB file (it reads in about 6 ms on a 2-core CI machine, so
+ * the bound holds with a wide margin under load). */
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -85,18 +88,35 @@ int main(int argc, char **argv)
         printf("%s: %zu files x %d rounds in %.3f s: %.0f files/s, %.1f MB/s\n",
                pass == 0 ? "read" : "read + summarise", n, rounds, t, files_done / t, bytes / t / 1e6);
     }
-    /* the largest file alone, best of 5 */
-    double best = 1e30;
-    for (int k = 0; k < 5; ++k) {
+    /* the largest file alone, best of 5: read, then read and summarise */
+    double best = 1e30, best_summary = 1e30;
+    for (int k = 0; k < 10; ++k) {
         double t0 = now();
         cdl_photometry *p = NULL;
         cdl_error err;
-        cdl_photometry_read_file(files[largest].path, &o, &p, &err);
+        int ok = cdl_photometry_read_file(files[largest].path, &o, &p, &err) == CDL_OK;
+        if (ok && k >= 5) {
+            cdl_photometry_summary s;
+            cdl_photometry_summarize(p, &s);
+        }
         double t = now() - t0;
         cdl_photometry_release(p);
-        if (t < best) best = t;
+        if (!ok) {
+            fprintf(stderr, "bench_photometry: %s\n", err.message);
+            ++failures;
+            break;
+        }
+        if (k < 5 && t < best) best = t;
+        if (k >= 5 && t < best_summary) best_summary = t;
     }
-    printf("largest file %s (%.2f MB): read in %.1f ms\n", files[largest].path, files[largest].bytes / 1e6, 1e3 * best);
+    printf("largest file %s (%.2f MB): read in %.1f ms, read and summarised in %.1f ms\n", files[largest].path,
+           files[largest].bytes / 1e6, 1e3 * best, 1e3 * best_summary);
+    const double read_bound_s = 0.050;
+    if (files[largest].bytes >= 1e6 && best >= read_bound_s) {
+        fprintf(stderr, "bench_photometry: reading %s took %.1f ms, not under %.0f ms\n", files[largest].path,
+                1e3 * best, 1e3 * read_bound_s);
+        ++failures;
+    }
     free(files);
     return failures ? 1 : 0;
 }

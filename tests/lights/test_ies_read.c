@@ -296,7 +296,7 @@ static void test_horizontal_ranges(void)
         CHECK(t.symmetry == CDL_PHOTOMETRY_SYMMETRY_NONE && t.horizontal_count == 4);
         CHECK_REL(I(p, 270.0, 30.0), 110.0, 0.0);
         CHECK_REL(I(p, 90.0, 30.0), 130.0, 0.0);
-        CHECK(pc_has_warning(p, "H = 0 and H = 360 rows differ")); /* rows 100 and 140 */
+        CHECK(pc_has_warning(p, "mem.ies:12: the H = 0 and H = 360 rows differ")); /* rows 100 and 140, the last on line 12 */
         cdl_photometry_release(p);
     }
     /* 0..270 step 90 (no closing row): wraps 270 -> 360 = 0 without a warning */
@@ -309,7 +309,8 @@ static void test_horizontal_ranges(void)
     /* an irregular range leaves a gap: read, with a warning */
     p = horizontal("0 45 100", 3, &err);
     if (p) {
-        CHECK(pc_has_warning(p, "interpolated across"));
+        CHECK(pc_has_warning(p, "mem.ies:7: expected horizontal angles 0, 0..90") &&
+              pc_has_warning(p, "interpolated across"));
         cdl_photometry_release(p);
     }
     /* out of range */
@@ -448,6 +449,15 @@ static void test_errors(void)
     /* multiplier 0 */
     p = read_text("IESNA:LM-63-2002\nTILT=NONE\n1 -1 0 2 1 1 2 0 0 0\n1 1 10\n0 90\n0\n10 5\n", &err);
     CHECK(!p && strstr(err.message, "candela multiplier"));
+    /* type B with a single horizontal angle (a latitude): no solid angle, at record A */
+    p = read_text("IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 3 1 2 2 0 0 0\n1 1 10\n-90 0 90\n0\n10 5 1\n", &err);
+    CHECK_MSG(!p && strstr(err.message, "mem.ies:3: expected the number of horizontal angles") &&
+                  strstr(err.message, ">= 2 for type B data") && strstr(err.message, "found 1"),
+              "%s", err.message);
+    /* values each finite whose integral overflows: at the line of the first candela value */
+    p = read_text("IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 3 1 1 2 0 0 0\n1 1 10\n0 45 90\n0\n1e308 1e308 1e308\n", &err);
+    CHECK_MSG(!p && strstr(err.message, "mem.ies:7: expected candela values whose flux is a finite number, found"),
+              "%s", err.message);
     /* an absurd table size is refused before any allocation */
     p = read_text("IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 900000000 900000000 1 2 0 0 0\n1 1 10\n0 90\n", &err);
     CHECK(!p && err.status == CDL_ERR_INPUT);
@@ -457,13 +467,15 @@ static void test_warnings_and_strict(void)
 {
     cdl_error err;
     cdl_photometry *p = read_fixture("warn_seam.ies", 0, &err);
-    CHECK(p && pc_has_warning(p, "H = 0 and H = 360 rows differ"));
+    /* named at the line where the H = 360 row starts */
+    CHECK(p && pc_has_warning(p, "warn_seam.ies:13: the H = 0 and H = 360 rows differ: expected the H = 360 row"));
     if (p) CHECK_REL(I(p, 0.0, 0.0), 100.0, 0.0); /* the H = 0 row wins */
     cdl_photometry_release(p);
     p = read_fixture("warn_seam.ies", 1, &err);
     CHECK(!p && strstr(err.message, "H = 0 and H = 360") && strstr(err.message, "--strict"));
     p = read_fixture("warn_output_ratio.ies", 0, &err);
-    CHECK(p && pc_has_warning(p, "output ratio above 1"));
+    CHECK(p && pc_has_warning(p, "warn_output_ratio.ies:5: output ratio above 1") &&
+          pc_has_warning(p, "expected at most 100 %"));
     cdl_photometry_release(p);
     p = read_fixture("warn_output_ratio.ies", 1, &err);
     CHECK(!p && strstr(err.message, "output ratio above 1"));
@@ -472,9 +484,12 @@ static void test_warnings_and_strict(void)
     CHECK(p && pc_has_warning(p, "after the candela table"));
     cdl_photometry_release(p);
     /* a stated luminaire flux far from the table */
-    p = read_text("IESNA:LM-63-2002\n[_ABSOLUTELUMENS] 5000\nTILT=NONE\n1 -1 1 2 1 1 2 0 0 0\n1 1 10\n0 90\n0\n10 5\n",
+    p = read_text("IESNA:LM-63-2002\n[TEST] x\n\n[_ABSOLUTELUMENS] 5000\nTILT=NONE\n1 -1 1 2 1 1 2 0 0 0\n1 1 10\n0 90\n0\n"
+                  "10 5\n",
                   &err);
-    CHECK(p && pc_has_warning(p, "far from the luminaire flux"));
+    /* named at the keyword's line (4: after a blank line) */
+    CHECK(p && pc_has_warning(p, "mem.ies:4: the integrated flux") && pc_has_warning(p, "far from the luminaire flux"));
+    if (p) CHECK(cdl_photometry_get_metadata(p)->keywords[1].line == 4);
     cdl_photometry_release(p);
 }
 

@@ -246,13 +246,15 @@ static void test_fixtures(void)
     /* the stated LORL disagrees: a warning, an error with --strict */
     CHECK_OK(cdl_photometry_read_file(FIXTURES "warn_lorl.ldt", &o, &p, &err), &err);
     if (p) {
-        CHECK(pc_has_warning(p, "stated light output ratio LORL 50 %"));
+        CHECK(pc_has_warning(p, "warn_lorl.ldt:23: stated light output ratio LORL 50 %"));
         cdl_photometry_release(p);
     }
     o.strict = 1;
     p = NULL;
     CHECK(cdl_photometry_read_file(FIXTURES "warn_lorl.ldt", &o, &p, &err) == CDL_ERR_INPUT && !p);
 }
+
+static double huge_value(double c, double g) { return (void)c, (void)g, 1e308; }
 
 static void test_bad_angles(void)
 {
@@ -270,6 +272,14 @@ static void test_bad_angles(void)
     text = make_ldt(&s2, flat);
     p = read_text(text, &err);
     CHECK(!p && strstr(err.message, "Isym 2 stores the C-planes from C0 to C180"));
+    free(text);
+    /* finite intensities whose integral overflows: named at the first intensity's line
+     * (26 header lines, 6 for the lamp set, 10 direct ratios, 1 C angle, 19 gamma angles) */
+    ldt_spec s4 = {1, 1, 0.0, (const double[]){0.0}, 19, g19, 1, {1}, {1000.0}, 1.0, 0.0, 0.0, NULL};
+    text = make_ldt(&s4, huge_value);
+    p = read_text(text, &err);
+    CHECK_MSG(!p && strstr(err.message, "mem.ldt:63: expected candela values whose flux is a finite number"), "%s",
+              err.message);
     free(text);
     /* lamp flux 0: intensities in cd/klm of nothing */
     ldt_spec s3 = {1, 1, 0.0, (const double[]){0.0}, 19, g19, 1, {1}, {0.0}, 1.0, 0.0, 0.0, NULL};

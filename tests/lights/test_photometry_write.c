@@ -40,6 +40,7 @@ static double quad(double c, double g)
 }
 static double rot(double c, double g) { return (void)c, 300.0 - g; }
 static double bil90(double c, double g) { return 200.0 + 80.0 * sin(c * CDL_DEG_TO_RAD) + g; }
+static double bil0(double c, double g) { return 200.0 + 80.0 * cos(c * CDL_DEG_TO_RAD) + g; }
 static double asym(double c, double g) { return 200.0 + 80.0 * sin(c * CDL_DEG_TO_RAD) + 30.0 * cos(c * CDL_DEG_TO_RAD) + g; }
 
 static char *format(const cdl_photometry *p, int ldt, int version, cdl_photometry_notes *notes)
@@ -108,6 +109,7 @@ static void test_compact_symmetry(void)
         size_t nh;
     } cases[] = {{rot, "0", 1, 1},
                  {quad, "0 22.5 45 67.5 90", 4, 5},
+                 {bil0, "0 22.5 45 67.5 90 112.5 135 157.5 180", 2, 9},
                  {bil90, "90 112.5 135 157.5 180 202.5 225 247.5 270", 3, 9},
                  {asym, "0 22.5 45 67.5 90 112.5 135 157.5 180 202.5", 0, 17}};
     for (size_t k = 0; k < sizeof cases / sizeof *cases; ++k) {

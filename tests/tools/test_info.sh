@@ -45,7 +45,7 @@ rm -f /tmp/candela_info_err.$$
 out=$("$CANDELA" info "$fix/warn_seam.ies" 2>&1); st=$?
 check "a warning does not fail" '[ $st -eq 0 ] && [[ "$out" == *"H = 0 and H = 360 rows differ"* ]]'
 err=$("$CANDELA" info --strict "$fix/warn_seam.ies" 2>&1 >/dev/null); st=$?
-check "--strict makes it an error" '[ $st -eq 1 ] && [[ "$err" == *"an error with --strict"* ]]'
+check "--strict makes it an error, at the H = 360 row's line" '[ $st -eq 1 ] && [[ "$err" == *"warn_seam.ies:13: "*"expected"*"found"*"an error with --strict"* ]]'
 "$CANDELA" info --strict "$fix/warn_lorl.ldt" >/dev/null 2>&1; st=$?
 check "--strict: stated LORL disagrees" '[ $st -eq 1 ]'
 "$CANDELA" info --strict "$fix/warn_output_ratio.ies" >/dev/null 2>&1; st=$?

@@ -37,5 +37,14 @@ for path in "$dir"/*; do
   check "$f: converts to $other and back" '[ $st1 -eq 0 ] && [ $st2 -eq 0 ]'
 done
 check "the corpus has files ($count)" '[ $count -gt 10 ]'
+
+# EULUMDAT -> IES: what IES cannot hold is said on stderr; the alternative
+# lamp sets survive as [OTHER] text
+for m in "ldt_gldf_two_lamp_sets_CRLF.ldt:lamp set 2 (alternative" "ldt_dlip_three_lamp_sets.ldt:lamp sets 2..3 (alternative"; do
+  f=${m%%:*}; want=${m#*:}
+  err=$("$CANDELA" convert "$dir/$f" "$tmp/sets.ies" 2>&1 >/dev/null); st=$?
+  check "$f: IES cannot hold the other lamp sets, said on stderr ($err)" '[ $st -eq 0 ] && [[ "$err" == *"IES cannot hold: EULUMDAT $want"* ]] && [[ "$err" == *"direct ratios"* ]]'
+  check "$f: lamp set 2 kept as [OTHER]" 'grep -q "^\[OTHER\] Alternative lamp set 2: " "$tmp/sets.ies"'
+done
 echo "$count files checked"
 exit $fail
