@@ -503,6 +503,10 @@ static cdl_status fill_metadata(ies_reader *r, const ies_header *h)
     m->candela_multiplier = h->multiplier;
     m->ballast_factor = h->ballast;
     m->input_watts = h->watts > 0.0 ? h->watts : 0.0;
+    if (h->watts < 0.0 &&
+        cdl_photometry_add_warning(r->p, "%s:%u: expected input watts >= 0 (0 when unknown), found %g; read as unknown",
+                                   r->source, h->line_b[2], h->watts) != CDL_OK)
+        return oom(r);
     r->p->lamp_flux_line = h->line_a[1];
     if (m->ies_version <= 1995) {
         if (h->factor2 > 0.0) {

@@ -51,6 +51,16 @@ static detected_format detect(const char *data, size_t size)
     return tag || tilt ? FORMAT_IES : FORMAT_UNKNOWN;
 }
 
+static detected_format format_from_extension(const char *name)
+{
+    const char *dot = strrchr(name, '.');
+    if (!dot || strchr(dot, '/')) return FORMAT_UNKNOWN;
+    size_t len = strlen(dot);
+    if (starts_with_nocase(dot, len, ".LDT") && len == 4) return FORMAT_LDT;
+    if (starts_with_nocase(dot, len, ".IES") && len == 4) return FORMAT_IES;
+    return FORMAT_UNKNOWN;
+}
+
 cdl_status cdl_photometry_read_memory(const void *bytes, size_t size, const char *name,
                                       const cdl_photometry_read_options *options, cdl_photometry **out,
                                       cdl_error *err)
@@ -62,6 +72,9 @@ cdl_status cdl_photometry_read_memory(const void *bytes, size_t size, const char
     const char *data = bytes;
     size = cdl_photometry_text_length(data, size);
     detected_format format = detect(data, size);
+    /* Content that fits neither format: a file named .ldt or .ies is read
+     * as that format anyway, so the error names the line that is wrong. */
+    if (format == FORMAT_UNKNOWN && name) format = format_from_extension(name);
     if (format == FORMAT_UNKNOWN)
         return cdl_error_set(err, CDL_ERR_INPUT,
                              "%s:1: expected an IES LM-63 file (a version tag such as 'IESNA:LM-63-2002' or a "

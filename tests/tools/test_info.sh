@@ -42,6 +42,25 @@ for f in bad_truncated.ies bad_not_a_number.ies bad_count_mismatch.ies bad_angle
 done
 rm -f /tmp/candela_info_err.$$
 
+# Content that fits neither format: the extension decides, so the error names
+# the wrong line (here line 2, Ityp, of an EULUMDAT file) instead of line 1.
+tmp=$(mktemp -d)
+sed '2s/.*/x/' "$fix/ldt_comma_blank_crlf.ldt" > "$tmp/ityp.ldt"
+err=$("$CANDELA" info "$tmp/ityp.ldt" 2>&1 >/dev/null); st=$?
+check ".ldt with a non-number on line 2: names line 2" '[ $st -eq 1 ] && [[ "$err" == *"ityp.ldt:2: expected"*"Ityp"*"found"* ]]'
+printf 'hello\nworld\n' > "$tmp/words.ies"
+err=$("$CANDELA" info "$tmp/words.ies" 2>&1 >/dev/null); st=$?
+check ".ies without TILT=: read as IES, says TILT= is missing" '[ $st -eq 1 ] && [[ "$err" == *"words.ies:"*"expected a '"'"'TILT='"'"' line"* ]]'
+cp "$tmp/words.ies" "$tmp/words.txt"
+err=$("$CANDELA" info "$tmp/words.txt" 2>&1 >/dev/null); st=$?
+check "unknown extension and content: says neither format" '[ $st -eq 1 ] && [[ "$err" == *"words.txt:1: expected an IES LM-63 file"*"found neither"* ]]'
+sed 's/^1 1 0$/1 1 -75/' "$fix/iso_1000cd.ies" > "$tmp/watts.ies"
+out=$("$CANDELA" info "$tmp/watts.ies" 2>&1); st=$?
+check "negative input watts: a warning at line 9" '[ $st -eq 0 ] && [[ "$out" == *"watts.ies:9: expected input watts >= 0"*"found -75"* ]]'
+"$CANDELA" info --strict "$tmp/watts.ies" >/dev/null 2>&1; st=$?
+check "negative input watts: an error with --strict" '[ $st -eq 1 ]'
+rm -rf "$tmp"
+
 out=$("$CANDELA" info "$fix/warn_seam.ies" 2>&1); st=$?
 check "a warning does not fail" '[ $st -eq 0 ] && [[ "$out" == *"H = 0 and H = 360 rows differ"* ]]'
 err=$("$CANDELA" info --strict "$fix/warn_seam.ies" 2>&1 >/dev/null); st=$?
