@@ -105,6 +105,21 @@ cdl_luminous_efficacy cdl_luminaire_efficacy(cdl_luminous_flux flux, cdl_electri
     return cdl_lumens_per_watt(flux.lm / power.W);
 }
 
+/* Q_v = K Q_e: energy is flux integrated over time, so the same K applies. */
+cdl_luminous_energy cdl_luminous_energy_from_radiant(cdl_radiant_energy energy, cdl_luminous_efficacy efficacy)
+{
+    return cdl_lumen_seconds(energy.J * efficacy.lm_W);
+}
+
+/* M_v = K M_e: every luminous quantity is Km int V(lambda) X_e,lambda
+ * d(lambda) of its radiant counterpart X_e (CIE S 017 ILV), so for one
+ * spectrum the ratio is that spectrum's K. */
+cdl_luminous_exitance cdl_luminous_exitance_from_radiant(cdl_radiant_exitance exitance,
+                                                         cdl_luminous_efficacy efficacy)
+{
+    return cdl_luminous_exitance_lm_m2(exitance.W_m2 * efficacy.lm_W);
+}
+
 cdl_luminance cdl_luminance_from_radiance(cdl_radiance radiance, cdl_luminous_efficacy efficacy)
 {
     return cdl_nits(radiance.W_m2_sr * efficacy.lm_W);
