@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "radiometry/conversions.h"
 #include "radiometry/quantity.h"
 
 static double parse_ok(const char *text, cdl_dimension dim)
@@ -44,6 +45,13 @@ int main(void)
     CHECK(parse_ok("3 W/(m2 sr)", CDL_DIM_RADIANCE) == 3.0);
     CHECK(parse_ok("250 mW", CDL_DIM_POWER) == 0.25);
     CHECK(parse_ok("-3 m", CDL_DIM_LENGTH) == -3.0);
+
+    /* Round trips through the typed conversions: what a user typed in
+     * imperial units comes back unchanged (a few ulps). */
+    CHECK_REL(cdl_illuminance_to_footcandles(cdl_lux(parse_ok("46.45 fc", CDL_DIM_ILLUMINANCE))), 46.45, 4e-16);
+    CHECK_REL(cdl_luminance_to_footlamberts(cdl_nits(parse_ok("2.5 fL", CDL_DIM_LUMINANCE))), 2.5, 4e-16);
+    CHECK_REL(parse_ok("2 nit", CDL_DIM_LUMINANCE), parse_ok("2 cd/m^2", CDL_DIM_LUMINANCE), 0.0);
+    CHECK_REL(parse_ok("500 lx", CDL_DIM_ILLUMINANCE), parse_ok("0.5 klx", CDL_DIM_ILLUMINANCE), 0.0);
 
     /* Typed parsers deliver the typed value. */
     cdl_error err;
