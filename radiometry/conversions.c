@@ -1,11 +1,18 @@
-/* conversions.c - named conversions between quantities. */
+/* conversions.c - named conversions between quantities.
+ *
+ * The formulas are the definitions of the quantities (CIE S 017:2020, ILV:
+ * intensity I = dPhi/dOmega, illuminance E = dPhi/dA, luminance
+ * L = d^2Phi/(dA cos(theta) dOmega), exitance M = dPhi/dA leaving) and their
+ * standard consequences, derived in every photometry text (e.g. DiLaura et
+ * al., The Lighting Handbook, 10th ed., IES 2011;
+ * McCluney, Introduction to Radiometry and Photometry, 2nd ed. 2014). */
 #include "radiometry/conversions.h"
 
 #include "radiometry/constants.h"
 
 cdl_luminous_flux cdl_isotropic_flux_from_intensity(cdl_luminous_intensity intensity)
 {
-    /* Phi = integral of I over the sphere = 4 pi I. */
+    /* Isotropic source: Phi = integral of I dOmega over the sphere = 4 pi I. */
     return cdl_lumens(CDL_FOUR_PI * intensity.cd);
 }
 
@@ -26,7 +33,8 @@ cdl_radiant_intensity cdl_isotropic_radiant_intensity_from_flux(cdl_radiant_flux
 
 cdl_luminous_exitance cdl_lambertian_exitance_from_luminance(cdl_luminance luminance)
 {
-    /* M = integral over the hemisphere of L cos(theta) d(omega) = pi L. */
+    /* Lambertian surface (L independent of direction): M = integral over the
+     * hemisphere of L cos(theta) d(omega) = L * 2 pi * 1/2 = pi L. */
     return cdl_luminous_exitance_lm_m2(CDL_PI * luminance.cd_m2);
 }
 
@@ -45,8 +53,10 @@ cdl_radiance cdl_lambertian_radiance_from_radiant_exitance(cdl_radiant_exitance 
     return cdl_radiance_w_m2_sr(exitance.W_m2 / CDL_PI);
 }
 
-/* E = I cos(theta) / d^2. Dividing by d twice instead of by d*d keeps the
- * result finite for d down to ~1e-154 m and up to ~1e154 m. */
+/* Inverse-square and cosine law for a point source: the solid angle of a
+ * small receiving area dA at distance d is dA cos(theta) / d^2, so
+ * E = I dOmega / dA = I cos(theta) / d^2. Dividing by d twice instead of by
+ * d*d keeps the result finite for d down to ~1e-154 m and up to ~1e154 m. */
 static double inverse_square_cosine(double intensity, double cos_theta, double d)
 {
     if (cos_theta <= 0.0) return 0.0;
@@ -90,21 +100,42 @@ cdl_luminance cdl_footlamberts(double footlamberts)
     return cdl_nits(footlamberts * NITS_PER_FOOTLAMBERT);
 }
 
+/* Luminous efficacy of radiation: K = Phi_v / Phi_e for the spectrum the
+ * efficacy was computed from (spectrum.h), so Phi_v = K Phi_e. */
 cdl_luminous_flux cdl_luminous_flux_from_radiant(cdl_radiant_flux flux, cdl_luminous_efficacy efficacy)
 {
     return cdl_lumens(flux.W * efficacy.lm_W);
 }
 
+/* Phi_e = Phi_v / K, the inverse of the above. */
 cdl_radiant_flux cdl_radiant_flux_from_luminous(cdl_luminous_flux flux, cdl_luminous_efficacy efficacy)
 {
     return cdl_watts(flux.lm / efficacy.lm_W);
 }
 
+/* Luminous efficacy of a source: eta = Phi_v / P_electric (lm/W). */
 cdl_luminous_efficacy cdl_luminaire_efficacy(cdl_luminous_flux flux, cdl_electric_power power)
 {
     return cdl_lumens_per_watt(flux.lm / power.W);
 }
 
+/* Q_v = K Q_e: energy is flux integrated over time, so the same K applies. */
+cdl_luminous_energy cdl_luminous_energy_from_radiant(cdl_radiant_energy energy, cdl_luminous_efficacy efficacy)
+{
+    return cdl_lumen_seconds(energy.J * efficacy.lm_W);
+}
+
+/* M_v = K M_e: every luminous quantity is Km int V(lambda) X_e,lambda
+ * d(lambda) of its radiant counterpart X_e (CIE S 017 ILV), so for one
+ * spectrum the ratio is that spectrum's K. */
+cdl_luminous_exitance cdl_luminous_exitance_from_radiant(cdl_radiant_exitance exitance,
+                                                         cdl_luminous_efficacy efficacy)
+{
+    return cdl_luminous_exitance_lm_m2(exitance.W_m2 * efficacy.lm_W);
+}
+
+/* L_v = K L_e, E_v = K E_e, I_v = K I_e: the densities of one spectrum
+ * share its efficacy K (see the flux conversion above). */
 cdl_luminance cdl_luminance_from_radiance(cdl_radiance radiance, cdl_luminous_efficacy efficacy)
 {
     return cdl_nits(radiance.W_m2_sr * efficacy.lm_W);

@@ -45,8 +45,13 @@ cdl_luminous_flux cdl_luminous_flux_from_radiant(cdl_radiant_flux flux, cdl_lumi
 cdl_radiant_flux cdl_radiant_flux_from_luminous(cdl_luminous_flux flux, cdl_luminous_efficacy efficacy);
 cdl_luminous_efficacy cdl_luminaire_efficacy(cdl_luminous_flux flux, cdl_electric_power power);
 
-/* Same conversions for the densities, with the same efficacy K:
- * L_v = K L_e, E_v = K E_e, I_v = K I_e. */
+/* Same conversions for energy and the densities, with the same efficacy K
+ * (each photometric quantity is the V-weighted integral of its radiometric
+ * counterpart, so one K serves for a given spectrum):
+ * Q_v = K Q_e, L_v = K L_e, E_v = K E_e, M_v = K M_e, I_v = K I_e. */
+cdl_luminous_energy cdl_luminous_energy_from_radiant(cdl_radiant_energy energy, cdl_luminous_efficacy efficacy);
+cdl_luminous_exitance cdl_luminous_exitance_from_radiant(cdl_radiant_exitance exitance,
+                                                         cdl_luminous_efficacy efficacy);
 cdl_luminance cdl_luminance_from_radiance(cdl_radiance radiance, cdl_luminous_efficacy efficacy);
 cdl_illuminance cdl_illuminance_from_irradiance(cdl_irradiance irradiance, cdl_luminous_efficacy efficacy);
 cdl_luminous_intensity cdl_luminous_intensity_from_radiant(cdl_radiant_intensity intensity,

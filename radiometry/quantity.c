@@ -137,16 +137,24 @@ cdl_status cdl_quantity_parse(const char *text, cdl_dimension dimension, double 
                              article(dim), dim, dimension_examples[dimension]);
     const char *p = text;
     while (isspace((unsigned char)*p)) ++p;
-    /* strtod would accept "nan" and "inf": refuse anything but a plain decimal. */
-    if (!(isdigit((unsigned char)*p) || *p == '.' || *p == '-' || *p == '+'))
-        return cdl_error_set(err, CDL_ERR_INPUT, "'%s': expected a number followed by a unit of %s (%s)",
+    /* strtod would accept "nan", "inf" and hexadecimal ("0x1p4"): refuse
+     * anything but a plain decimal number. */
+    const char *digits = p + (*p == '-' || *p == '+');
+    int hexadecimal = digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X');
+    if (!(isdigit((unsigned char)*digits) || *digits == '.') || hexadecimal)
+        return cdl_error_set(err, CDL_ERR_INPUT, "'%s': expected a decimal number followed by a unit of %s (%s)",
                              text, dim, dimension_examples[dimension]);
     errno = 0;
     char *end = NULL;
     double number = strtod(p, &end);
-    if (end == p || errno == ERANGE || !isfinite(number))
+    /* ERANGE on a result of magnitude below 1 is underflow: the number is
+     * (close to) zero and strtod returns it; only overflow is refused. */
+    if (end == p || !isfinite(number) || (errno == ERANGE && fabs(number) >= 1.0))
         return cdl_error_set(err, CDL_ERR_INPUT, "'%s': expected a finite number followed by a unit of %s (%s)",
                              text, dim, dimension_examples[dimension]);
+    if (*end == ',' && isdigit((unsigned char)end[1]))
+        return cdl_error_set(err, CDL_ERR_INPUT, "'%s': expected a decimal point, found a comma (write '%.*s.%s')",
+                             text, (int)(end - text), text, end + 1);
 
     /* The unit: the rest, without surrounding blanks. */
     while (isspace((unsigned char)*end)) ++end;

@@ -55,7 +55,10 @@ const char *cdl_dimension_name(cdl_dimension dimension);
  * *value is in the dimension's base unit. Errors (CDL_ERR_INPUT) say what was
  * found and list the accepted units: no number, no unit, unknown unit, or a
  * unit of another dimension ("'3000 lm' is a luminous flux; expected an
- * illuminance (lx, fc, lm/m2)"). NaN and infinities are rejected. */
+ * illuminance (lx, fc, lm/m2)"). The number is a plain decimal ("1e3" and
+ * ".5" are fine): NaN, infinities, hexadecimal and overflowing numbers are
+ * rejected, a decimal comma ("1,5 lx") gets a hint, and a number too small
+ * for a double reads as (close to) zero. */
 cdl_status cdl_quantity_parse(const char *text, cdl_dimension dimension, double *value, cdl_error *err);
 
 /* Typed forms for the most common fields. */

@@ -5,6 +5,9 @@
 
 #include "radiometry/constants.h"
 
+/* Solid angle of a cone: Omega = int_0^2pi int_0^alpha sin(t) dt dphi =
+ * 2 pi (1 - cos alpha) = 4 pi sin^2(alpha / 2) (half-angle identity, which
+ * avoids the cancellation of 1 - cos alpha for small alpha). */
 cdl_solid_angle cdl_cone_solid_angle(double half_angle_rad)
 {
     double s = sin(0.5 * half_angle_rad);

@@ -164,19 +164,39 @@ static int in_range(double v, cdl_scene_range range)
     return 0;
 }
 
-cdl_status cdl_scene_json_read_number(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
-                                      cdl_scene_range range, int required, double *out)
+/* The checks every number of a scene passes, whether written as a JSON
+ * number or as a quantity with its unit; `node` is what the file holds. */
+static cdl_status accept_number(const cdl_scene_parse *ctx, const cJSON *node, const char *path, cdl_scene_range range,
+                                double value, double *out)
 {
-    if (!node && !required) return CDL_OK;
-    if (!cJSON_IsNumber(node) || !isfinite(node->valuedouble) || !in_range(node->valuedouble, range))
-        return cdl_scene_json_fail(ctx, path, range_text(range), node);
-    if (fabs(node->valuedouble) > CDL_SCENE_MAX_MAGNITUDE) {
+    if (!isfinite(value) || !in_range(value, range)) return cdl_scene_json_fail(ctx, path, range_text(range), node);
+    if (fabs(value) > CDL_SCENE_MAX_MAGNITUDE) {
         char expected[96];
         snprintf(expected, sizeof expected, "%s of magnitude at most %g", range_text(range), CDL_SCENE_MAX_MAGNITUDE);
         return cdl_scene_json_fail(ctx, path, expected, node);
     }
-    *out = node->valuedouble;
+    *out = value;
     return CDL_OK;
+}
+
+cdl_status cdl_scene_json_read_number(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                      cdl_scene_range range, int required, double *out)
+{
+    if (!node && !required) return CDL_OK;
+    if (!cJSON_IsNumber(node)) return cdl_scene_json_fail(ctx, path, range_text(range), node);
+    return accept_number(ctx, node, path, range, node->valuedouble, out);
+}
+
+cdl_status cdl_scene_json_read_quantity(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                        cdl_dimension dimension, cdl_scene_range range, int required, double *out)
+{
+    if (!cJSON_IsString(node) || !node->valuestring)
+        return cdl_scene_json_read_number(ctx, node, path, range, required, out);
+    cdl_error parse_err;
+    double value = 0.0;
+    if (cdl_quantity_parse(node->valuestring, dimension, &value, &parse_err) != CDL_OK)
+        return cdl_error_set(ctx->err, CDL_ERR_INPUT, "%s: %s: %s", ctx->file, path, parse_err.message);
+    return accept_number(ctx, node, path, range, value, out);
 }
 
 cdl_status cdl_scene_json_read_integer(const cdl_scene_parse *ctx, const cJSON *node, const char *path, double lo,

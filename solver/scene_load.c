@@ -21,6 +21,10 @@
  *   polygon  vertices, holes, spacing (metres > 0 or "auto", default "auto"), normal
  *   points   points: [{"p": [x, y, z], "n": [nx, ny, nz]}, ...]
  * Solver: method, quality, bounces, seed, threads, direct_samples, ao_samples.
+ * The photometric values (intensity_cd, flux_lm, luminance_cd_m2,
+ * illuminance_lx) are a number in the unit the key names or text with any
+ * unit of the same dimension, as people type it: "46.45 fc", "2 kcd",
+ * "3 klm", "1200 cd/m2" (radiometry/quantity.h).
  */
 #include "solver/scene.h"
 
@@ -114,9 +118,10 @@ static cdl_status read_intensity(const cdl_scene_parse *ctx, const cJSON *node, 
     out->has_intensity = which == 0;
     out->has_flux = which == 1;
     if (which == 0)
-        return cdl_scene_json_read_number(ctx, field(node, path, "intensity_cd", p), p, CDL_RANGE_NONNEGATIVE, 1,
-                                          &out->intensity_cd);
-    return cdl_scene_json_read_number(ctx, field(node, path, "flux_lm", p), p, CDL_RANGE_NONNEGATIVE, 1, &out->flux_lm);
+        return cdl_scene_json_read_quantity(ctx, field(node, path, "intensity_cd", p), p, CDL_DIM_LUMINOUS_INTENSITY,
+                                            CDL_RANGE_NONNEGATIVE, 1, &out->intensity_cd);
+    return cdl_scene_json_read_quantity(ctx, field(node, path, "flux_lm", p), p, CDL_DIM_LUMINOUS_FLUX,
+                                        CDL_RANGE_NONNEGATIVE, 1, &out->flux_lm);
 }
 
 static cdl_status read_spot(const cdl_scene_parse *ctx, const cJSON *node, const char *path, cdl_luminaire_spec *out)
@@ -166,8 +171,8 @@ static cdl_status read_environment(const cdl_scene_parse *ctx, const cJSON *node
     if (one_of(ctx, node, path, "luminance_cd_m2", "file", 1, &which) != CDL_OK) return CDL_ERR_INPUT;
     if (which == 0) {
         out->has_luminance = 1;
-        if (cdl_scene_json_read_number(ctx, field(node, path, "luminance_cd_m2", p), p, CDL_RANGE_NONNEGATIVE, 1,
-                                       &out->luminance_cd_m2) != CDL_OK)
+        if (cdl_scene_json_read_quantity(ctx, field(node, path, "luminance_cd_m2", p), p, CDL_DIM_LUMINANCE,
+                                         CDL_RANGE_NONNEGATIVE, 1, &out->luminance_cd_m2) != CDL_OK)
             return CDL_ERR_INPUT;
         if (field(node, path, "scale", p))
             return cdl_scene_json_failf(ctx, p, "\"scale\" only with an image \"file\"", "it with luminance_cd_m2");
@@ -223,7 +228,7 @@ static cdl_status read_luminaire(const cdl_scene_parse *ctx, const cJSON *node, 
         out->rotation_deg[2] = rotation.z;
         const cJSON *flux = field(node, path, "flux_lm", p);
         out->has_flux = flux != NULL;
-        return cdl_scene_json_read_number(ctx, flux, p, CDL_RANGE_POSITIVE, 0, &out->flux_lm);
+        return cdl_scene_json_read_quantity(ctx, flux, p, CDL_DIM_LUMINOUS_FLUX, CDL_RANGE_POSITIVE, 0, &out->flux_lm);
     }
     case CDL_LUMINAIRE_AREA: {
         int which = -1;
@@ -236,17 +241,17 @@ static cdl_status read_luminaire(const cdl_scene_parse *ctx, const cJSON *node, 
         out->has_luminance = which == 0;
         out->has_flux = which == 1;
         if (which == 0)
-            return cdl_scene_json_read_number(ctx, field(node, path, "luminance_cd_m2", p), p, CDL_RANGE_NONNEGATIVE,
-                                              1, &out->luminance_cd_m2);
-        return cdl_scene_json_read_number(ctx, field(node, path, "flux_lm", p), p, CDL_RANGE_NONNEGATIVE, 1,
-                                          &out->flux_lm);
+            return cdl_scene_json_read_quantity(ctx, field(node, path, "luminance_cd_m2", p), p, CDL_DIM_LUMINANCE,
+                                                CDL_RANGE_NONNEGATIVE, 1, &out->luminance_cd_m2);
+        return cdl_scene_json_read_quantity(ctx, field(node, path, "flux_lm", p), p, CDL_DIM_LUMINOUS_FLUX,
+                                            CDL_RANGE_NONNEGATIVE, 1, &out->flux_lm);
     }
     case CDL_LUMINAIRE_DIRECTIONAL:
         if (cdl_scene_json_read_vec3(ctx, field(node, path, "direction", p), p, 1, 1, &out->direction) != CDL_OK)
             return CDL_ERR_INPUT;
         out->direction = cdl_vec3_normalize(out->direction);
-        return cdl_scene_json_read_number(ctx, field(node, path, "illuminance_lx", p), p, CDL_RANGE_NONNEGATIVE, 1,
-                                          &out->illuminance_lx);
+        return cdl_scene_json_read_quantity(ctx, field(node, path, "illuminance_lx", p), p, CDL_DIM_ILLUMINANCE,
+                                            CDL_RANGE_NONNEGATIVE, 1, &out->illuminance_lx);
     case CDL_LUMINAIRE_ENVIRONMENT:
         return read_environment(ctx, node, path, out);
     }

@@ -14,6 +14,7 @@
 #include <stddef.h>
 
 #include "radiometry/error.h"
+#include "radiometry/quantity.h"
 #include "radiometry/vec3.h"
 #include "solver/scene.h"
 
@@ -76,6 +77,13 @@ typedef enum cdl_scene_range {
 /* A finite number in `range`. Absent: *out keeps its value unless required. */
 cdl_status cdl_scene_json_read_number(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
                                       cdl_scene_range range, int required, double *out);
+/* A finite number in `range`, given either as a JSON number in the unit the
+ * key names (the dimension's base unit: "intensity_cd": 1200) or as text with
+ * a unit of `dimension` ("intensity_cd": "1.2 kcd", "illuminance_lx":
+ * "46.45 fc"), converted to the base unit by cdl_quantity_parse. A unit of
+ * another dimension or an unknown unit is an error naming the path. */
+cdl_status cdl_scene_json_read_quantity(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                        cdl_dimension dimension, cdl_scene_range range, int required, double *out);
 /* An integer in [lo, hi]. */
 cdl_status cdl_scene_json_read_integer(const cdl_scene_parse *ctx, const cJSON *node, const char *path, double lo,
                                        double hi, int required, double *out);

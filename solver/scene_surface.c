@@ -465,6 +465,6 @@ cdl_status cdl_scene_json_read_surface(const cdl_scene_parse *ctx, const cJSON *
     if (cdl_scene_json_read_bool(ctx, cdl_scene_json_member(node, "two_sided"), p, 0, &out->two_sided) != CDL_OK)
         return CDL_ERR_INPUT;
     cdl_scene_json_path_key(p, path, "luminance_cd_m2");
-    return cdl_scene_json_read_number(ctx, cdl_scene_json_member(node, "luminance_cd_m2"), p, CDL_RANGE_NONNEGATIVE, 0,
-                                      &out->luminance_cd_m2);
+    return cdl_scene_json_read_quantity(ctx, cdl_scene_json_member(node, "luminance_cd_m2"), p, CDL_DIM_LUMINANCE,
+                                        CDL_RANGE_NONNEGATIVE, 0, &out->luminance_cd_m2);
 }

@@ -41,6 +41,9 @@ int main(int argc, char **argv)
                     commands[i]->print_help(stdout);
                     return CDL_EXIT_OK;
                 }
+            fprintf(stderr, "candela help: unknown command '%s'\n\n", argv[2]);
+            print_usage(stderr);
+            return CDL_EXIT_USAGE;
         }
         print_usage(stdout);
         return CDL_EXIT_OK;

@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "radiometry/conversions.h"
 #include "radiometry/quantity.h"
 
 static double parse_ok(const char *text, cdl_dimension dim)
@@ -45,6 +46,13 @@ int main(void)
     CHECK(parse_ok("250 mW", CDL_DIM_POWER) == 0.25);
     CHECK(parse_ok("-3 m", CDL_DIM_LENGTH) == -3.0);
 
+    /* Round trips through the typed conversions: what a user typed in
+     * imperial units comes back unchanged (a few ulps). */
+    CHECK_REL(cdl_illuminance_to_footcandles(cdl_lux(parse_ok("46.45 fc", CDL_DIM_ILLUMINANCE))), 46.45, 4e-16);
+    CHECK_REL(cdl_luminance_to_footlamberts(cdl_nits(parse_ok("2.5 fL", CDL_DIM_LUMINANCE))), 2.5, 4e-16);
+    CHECK_REL(parse_ok("2 nit", CDL_DIM_LUMINANCE), parse_ok("2 cd/m^2", CDL_DIM_LUMINANCE), 0.0);
+    CHECK_REL(parse_ok("500 lx", CDL_DIM_ILLUMINANCE), parse_ok("0.5 klx", CDL_DIM_ILLUMINANCE), 0.0);
+
     /* Typed parsers deliver the typed value. */
     cdl_error err;
     cdl_illuminance e;
@@ -59,12 +67,22 @@ int main(void)
     expect_error("3000 lm", CDL_DIM_ILLUMINANCE, "is a luminous flux; expected an illuminance");
     expect_error("25 W", CDL_DIM_ILLUMINANCE, "is a power");
     expect_error("500", CDL_DIM_ILLUMINANCE, "missing unit");
-    expect_error("lx", CDL_DIM_ILLUMINANCE, "expected a number");
-    expect_error("nan lx", CDL_DIM_ILLUMINANCE, "expected a number");
-    expect_error("inf lx", CDL_DIM_ILLUMINANCE, "expected a number");
+    expect_error("lx", CDL_DIM_ILLUMINANCE, "expected a decimal number");
+    expect_error("nan lx", CDL_DIM_ILLUMINANCE, "expected a decimal number");
+    expect_error("inf lx", CDL_DIM_ILLUMINANCE, "expected a decimal number");
     expect_error("1e999 lx", CDL_DIM_ILLUMINANCE, "finite number");
-    expect_error("", CDL_DIM_LUMINANCE, "expected a number");
+    expect_error("", CDL_DIM_LUMINANCE, "expected a decimal number");
     expect_error("5 MW", CDL_DIM_POWER, "unknown unit 'MW'");   /* case matters in SI */
     expect_error("5 LX", CDL_DIM_ILLUMINANCE, "unknown unit 'LX'");
+    /* Only plain decimals: strtod's hexadecimal floats are not what people type. */
+    expect_error("0x10 lx", CDL_DIM_ILLUMINANCE, "expected a decimal number");
+    expect_error("-0X1p4 lx", CDL_DIM_ILLUMINANCE, "expected a decimal number");
+    expect_error("+-5 lx", CDL_DIM_ILLUMINANCE, "expected a decimal number");
+    /* A decimal comma gets a hint instead of "unknown unit ',5 lx'". */
+    expect_error("1,5 lx", CDL_DIM_ILLUMINANCE, "expected a decimal point, found a comma (write '1.5 lx')");
+    /* Underflow is a number close to zero, not an error; overflow is. */
+    CHECK(parse_ok("1e-400 lx", CDL_DIM_ILLUMINANCE) == 0.0);
+    CHECK(parse_ok("-1e-310 lx", CDL_DIM_ILLUMINANCE) <= 0.0);
+    expect_error("-1e400 lx", CDL_DIM_ILLUMINANCE, "finite number");
     return check_finish();
 }

@@ -94,6 +94,16 @@ static void test_efficacy(void)
               EXACTISH);
     CHECK_REL(cdl_luminous_intensity_from_radiant(cdl_watts_per_sr(2.0), cdl_lumens_per_watt(100.0)).cd, 200.0,
               EXACTISH);
+    /* 1 kWh of radiation at 90 lm/W is 3.6e6 J * 90 lm/W = 3.24e8 lm s. */
+    CHECK_REL(cdl_luminous_energy_from_radiant(cdl_joules(3.6e6), cdl_lumens_per_watt(90.0)).lm_s, 3.24e8, EXACTISH);
+    CHECK_REL(cdl_luminous_exitance_from_radiant(cdl_radiant_exitance_w_m2(4.0), cdl_lumens_per_watt(250.0)).lm_m2,
+              1000.0, EXACTISH);
+    /* Consistency of the routes: a Lambertian emitter of radiance L_e at
+     * efficacy K has M_v = pi K L_e whichever conversion comes first. */
+    cdl_radiance le = cdl_radiance_w_m2_sr(3.0);
+    cdl_luminous_efficacy k = cdl_lumens_per_watt(300.0);
+    CHECK_REL(cdl_lambertian_exitance_from_luminance(cdl_luminance_from_radiance(le, k)).lm_m2,
+              cdl_luminous_exitance_from_radiant(cdl_lambertian_radiant_exitance_from_radiance(le), k).lm_m2, EXACTISH);
 }
 
 int main(void)

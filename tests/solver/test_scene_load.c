@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "radiometry/constants.h"
 #include "solver/scene.h"
 
 #define DATA CANDELA_SOURCE_DIR "/tests/data/scene/"
@@ -178,6 +179,42 @@ static void check_defaults(void)
     }
 }
 
+/* Photometric values may be typed with their unit; each becomes the value in
+ * the unit the key names, the same as writing the number there. */
+static void check_quantities_with_units(void)
+{
+    const char *json =
+        "{\"version\": 1,\n"
+        " \"surfaces\": [{\"type\": \"rect\", \"origin\": [0,0,3], \"u\": [1,0,0], \"v\": [0,-1,0],"
+        "                 \"reflectance\": 0.5, \"luminance_cd_m2\": \"2 nit\"}],\n"
+        " \"luminaires\": [{\"type\": \"point\", \"position\": [0,0,3], \"intensity_cd\": \"1.2 kcd\"},\n"
+        "                 {\"type\": \"point\", \"position\": [0,0,3], \"flux_lm\": \"3000 lm\"},\n"
+        "                 {\"type\": \"spot\", \"position\": [0,0,3], \"direction\": [0,0,-1],"
+        "                  \"flux_lm\": \"2.5 klm\", \"exponent\": 1},\n"
+        "                 {\"type\": \"directional\", \"direction\": [0,0,-1], \"illuminance_lx\": \"46.45 fc\"},\n"
+        "                 {\"type\": \"environment\", \"luminance_cd_m2\": \"1200 cd/m2\"},\n"
+        "                 {\"type\": \"area\", \"shape\": {\"type\": \"rect\", \"origin\": [1,1,2.99],"
+        "                  \"u\": [0.6,0,0], \"v\": [0,0.6,0]}, \"luminance_cd_m2\": \"10 fL\"},\n"
+        "                 {\"type\": \"goniometric\", \"file\": \"/abs/lum.ldt\", \"position\": [1,1,1],"
+        "                  \"flux_lm\": \"1200lm\"}],\n"
+        " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1]}]}]}";
+    cdl_error err;
+    cdl_scene *s = NULL;
+    CHECK_OK(cdl_scene_load_string(json, "units.json", &s, &err), &err);
+    if (!s) return;
+    CHECK(s->surfaces[0].luminance_cd_m2 == 2.0);
+    CHECK(s->luminaires[0].has_intensity && s->luminaires[0].intensity_cd == 1200.0);
+    CHECK(s->luminaires[1].has_flux && s->luminaires[1].flux_lm == 3000.0);
+    CHECK(s->luminaires[2].has_flux && s->luminaires[2].flux_lm == 2500.0);
+    /* 1 fc = 1 lm/ft^2 with the international foot of 0.3048 m. */
+    CHECK_REL(s->luminaires[3].illuminance_lx, 46.45 / (0.3048 * 0.3048), 1e-15);
+    CHECK(s->luminaires[4].has_luminance && s->luminaires[4].luminance_cd_m2 == 1200.0);
+    /* 1 fL = (1/pi) cd/ft^2. */
+    CHECK_REL(s->luminaires[5].luminance_cd_m2, 10.0 / (CDL_PI * 0.3048 * 0.3048), 1e-15);
+    CHECK(s->luminaires[6].has_flux && s->luminaires[6].flux_lm == 1200.0);
+    cdl_scene_release(s);
+}
+
 int main(void)
 {
     cdl_error err;
@@ -227,5 +264,6 @@ int main(void)
     if (cwd[0]) CHECK(chdir(cwd) == 0);
 
     check_defaults();
+    check_quantities_with_units();
     return check_finish();
 }
