@@ -435,9 +435,12 @@ static void test_errors(void)
     cdl_photometry *p = read_text("IES:LM-63-2019\n[TEST] x\nTILT=NONE\n1 -1 1 3 1 1 2 0 0 0\n0 45 90\n0\n10 5 1\n", &err);
     CHECK(!p && strstr(err.message, "mem.ies:5:") && strstr(err.message, "ballast line") &&
           strstr(err.message, "missing"));
-    /* neither format */
+    /* neither format: a name ending in .ies is read as IES (the error names
+     * what IES lacks), any other name gets the error naming both formats */
     p = read_text("hello\nworld\n", &err);
-    CHECK(!p && strstr(err.message, "mem.ies:1: expected an IES LM-63 file"));
+    CHECK(!p && strstr(err.message, "mem.ies:") && strstr(err.message, "expected a 'TILT=' line"));
+    p = pc_read_text("mem.txt", "hello\nworld\n", 12, 0, &err);
+    CHECK(!p && strstr(err.message, "mem.txt:1: expected an IES LM-63 file") && strstr(err.message, "found neither"));
     p = read_text("", &err);
     CHECK(!p && err.status == CDL_ERR_INPUT);
     /* no such file */
