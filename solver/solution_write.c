@@ -64,6 +64,7 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
         for (size_t i = 0; i < sol->grids[g].grid.count; ++i)
             if (sol->grids[g].E_stderr[i] > worst) worst = sol->grids[g].E_stderr[i];
         cJSON_AddNumberToObject(o, "E_stderr_max_lx", worst);
+        cJSON_AddNumberToObject(o, "edge_points", (double)sol->grids[g].edge_point_count);
         if (scene->grids[g].kind == CDL_GRID_POLYGON)
             cJSON_AddNumberToObject(o, "spacing_m", sol->grids[g].grid.spacing_m);
     }

@@ -320,6 +320,27 @@ static cdl_status run_grid(grid_job *job, int threads, cdl_direct_sample_stats *
 
 /* ---- the solve ------------------------------------------------------------------ */
 
+/* A point's rays start one epsilon off the surface it faces (ray_offsets in
+ * scene_geometry.h). Any other surface within half an epsilon of that start
+ * passes through the point itself: the point is on an edge where surfaces
+ * meet, and which side of that surface it belongs to is unknown. */
+static void find_edge_points(const cdl_direct_context *ctx, cdl_grid_solution *gs)
+{
+    gs->edge_point_count = 0;
+    gs->first_edge_point = 0;
+    for (size_t i = 0; i < gs->grid.count; ++i) {
+        cdl_vec3 p = gs->grid.points[i];
+        double eps = cdl_ray_offsets_epsilon(&ctx->offsets, p);
+        cdl_vec3 o = cdl_vec3_madd(p, eps, gs->grid.normals[i]);
+        cdl_vec3 h = cdl_vec3_make(0.5 * eps, 0.5 * eps, 0.5 * eps);
+        cdl_convex_region box;
+        cdl_region_box(&box, cdl_vec3_sub(o, h), cdl_vec3_add(o, h));
+        if (cdl_occluder_index_intersects(ctx->occluders, &box, 0.0, UINT32_MAX)) {
+            if (gs->edge_point_count++ == 0) gs->first_edge_point = i;
+        }
+    }
+}
+
 static cdl_status alloc_grid_arrays(cdl_grid_solution *gs, int want_ao, cdl_error *err)
 {
     size_t n = gs->grid.count ? gs->grid.count : 1;
@@ -420,6 +441,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         if (st != CDL_OK) goto fail;
         st = alloc_grid_arrays(gs, spec->want_ao, err);
         if (st != CDL_OK) goto fail;
+        if (ctx.occluders) find_edge_points(&ctx, gs);
         cdl_direct_plan_grid(&ctx, gs->grid.points, gs->grid.count, strategies);
         for (size_t l = 0; l < lights.count; ++l) {
             cJSON *grids = cJSON_GetObjectItemCaseSensitive(cJSON_GetArrayItem(direct, (int)l), "grids");

@@ -113,6 +113,16 @@ static int run(int argc, char **argv)
                 cdl_grid_result_stats(&r, &s);
                 printf("%-16s %6zu points  Em %10.4g lx  Emin %10.4g lx  Emax %10.4g lx  U0 %.3f  Ud %.3f\n",
                        r.name, s.count, s.E_avg_lx, s.E_min_lx, s.E_max_lx, s.U0, s.Ud);
+                if (gs->edge_point_count > 0) {
+                    cdl_vec3 q = gs->grid.points[gs->first_edge_point];
+                    fprintf(stderr,
+                            "candela solve: warning: grid '%s': %zu point%s lie%s where two surfaces meet (the first "
+                            "is point %zu at (%.9g, %.9g, %.9g)); a surface through a point does not say which side "
+                            "the point is on, so light from beyond it may be counted there: move such points off "
+                            "the edge (summary.json: edge_points)\n",
+                            r.name, gs->edge_point_count, gs->edge_point_count == 1 ? "" : "s",
+                            gs->edge_point_count == 1 ? "s" : "", gs->first_edge_point, q.x, q.y, q.z);
+                }
             }
             printf("method %s, %.3f s, %llu rays; results in %s\n", cdl_method_name(sol.method), sol.seconds,
                    (unsigned long long)sol.rays, out_opt->value);

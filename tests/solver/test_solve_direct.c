@@ -916,6 +916,37 @@ static void test_environment_rgb_scale(void)
     done(scene, &sol);
 }
 
+/* Points where two surfaces meet are found and counted, the rest are not:
+ * in a closed room (inward box) with a rect lying on the floor, the foot of
+ * a wall (on the floor and in the wall's plane) and a ceiling corner are
+ * edge points; a point on the floor, on a wall, and on the rect's corner
+ * (the rect lies in the floor's own plane) are not. The sun outside the room
+ * reaches none of the ordinary floor points. */
+static void test_edge_points(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [0, 0, 0], \"max\": [4, 4, 3], "
+        "\"inward\": true, \"reflectance\": 0.5}, {\"type\": \"rect\", \"origin\": [1, 1, 0], \"u\": [1, 0, 0], "
+        "\"v\": [0, 1, 0], \"reflectance\": 0.3}], \"luminaires\": [{\"type\": \"directional\", "
+        "\"direction\": [0.3, 0.2, -1], \"illuminance_lx\": 80000}], \"grids\": [{\"name\": \"p\", \"type\": "
+        "\"points\", \"points\": [{\"p\": [2, 2, 0], \"n\": [0, 0, 1]}, {\"p\": [0, 2, 0], \"n\": [0, 0, 1]}, "
+        "{\"p\": [0, 2, 1.5], \"n\": [1, 0, 0]}, {\"p\": [4, 4, 3], \"n\": [0, 0, -1]}, "
+        "{\"p\": [1, 1, 0], \"n\": [0, 0, 1]}, {\"p\": [1e-3, 2, 0], \"n\": [0, 0, 1]}]}], "
+        "\"solver\": {\"method\": \"direct\"}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    const cdl_grid_solution *g = &sol.grids[0];
+    CHECK_MSG(g->edge_point_count == 2, "edge points: %zu, expected 2 (the wall foot and the ceiling corner)",
+              g->edge_point_count);
+    CHECK(g->first_edge_point == 1);
+    /* closed room: the sun reaches no ordinary floor point, nor one 1 mm from the wall */
+    CHECK(g->E[0] == 0.0);
+    CHECK(g->E[4] == 0.0);
+    CHECK(g->E[5] == 0.0);
+    done(scene, &sol);
+}
+
 int main(void)
 {
     test_inverse_square_cosine();
@@ -936,5 +967,6 @@ int main(void)
     test_sky_behind_wall();
     test_goniometric_tilt_and_flux();
     test_environment_rgb_scale();
+    test_edge_points();
     return check_finish();
 }

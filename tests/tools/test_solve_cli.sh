@@ -71,4 +71,17 @@ for i in 1 2 3; do
   check "after kill $i: workplane.csv complete" '[ $(($(wc -l < "$out/workplane.csv") - 1)) -eq 240 ]'
   check "after kill $i: summary.json complete" '[ "$(tail -c 2 "$out/summary.json" | head -c 1)" = "}" ]'
 done
+# A point at the foot of a wall is reported on stderr and in summary.json; the
+# office's own grids have none.
+check "office: no edge points" '[ $(grep -c "\"edge_points\":[[:space:]]*0" "$out/summary.json") -ge 4 ]'
+cat > "$tmp/edge.json" <<'JSON'
+{"version": 1,
+ "surfaces": [{"type": "box", "min": [0, 0, 0], "max": [4, 4, 3], "inward": true, "reflectance": 0.5}],
+ "luminaires": [{"type": "point", "position": [2, 2, 2.9], "intensity_cd": 1000}],
+ "grids": [{"name": "foot", "type": "points", "points": [{"p": [2, 2, 0], "n": [0, 0, 1]}, {"p": [0, 2, 0], "n": [0, 0, 1]}]}],
+ "solver": {"method": "direct"}}
+JSON
+"$CANDELA" solve "$tmp/edge.json" -o "$tmp/edge" --quiet > /dev/null 2> "$tmp/edge.err"; st=$?
+check "edge point: solved (exit 0), warned" '[ $st -eq 0 ] && grep -q "warning: grid .foot.: 1 point lies where two surfaces meet (the first is point 1 at (0, 2, 0))" "$tmp/edge.err"'
+check "edge point: summary.json counts it" 'grep -q "\"edge_points\":[[:space:]]*1" "$tmp/edge/summary.json"'
 exit $fail
