@@ -135,11 +135,11 @@ static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_l
     return !cdl_occluder_index_intersects(ctx->occluders, &region, region_tolerance(ctx, p), light->owner);
 }
 
-/* Stratified Monte-Carlo over the light: returns the mean of f = L cos / pdf
- * over visible samples (or, with `hidden_only`, of f over hidden samples)
- * and the variance of that mean. */
-static void sample_light(const cdl_direct_context *ctx, const cdl_direct_light *light, uint64_t stream, cdl_vec3 p,
-                         cdl_vec3 n, int hidden_only, double *mean, double *variance, cdl_direct_sample_stats *stats)
+/* Stratified Monte-Carlo over the light: the mean of f = L cos / pdf over
+ * visible samples (or, with `hidden_only`, of f over hidden samples) and the
+ * variance of that mean; returns the number of samples. */
+static int sample_light(const cdl_direct_context *ctx, const cdl_direct_light *light, uint64_t stream, cdl_vec3 p,
+                        cdl_vec3 n, int hidden_only, double *mean, double *variance, cdl_direct_sample_stats *stats)
 {
     int k = (int)ceil(sqrt((double)(ctx->samples > 0 ? ctx->samples : 1)));
     int count = k * k;
@@ -166,6 +166,7 @@ static void sample_light(const cdl_direct_context *ctx, const cdl_direct_light *
     double var = count > 1 ? fmax(0.0, (sum2 - count * m * m) / (count - 1)) / count : 0.0;
     *mean = m;
     *variance = var;
+    return count;
 }
 
 size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, double radius, uint32_t *active)
@@ -240,7 +241,17 @@ static void extended_contribution(const cdl_direct_context *ctx, const cdl_direc
         /* E = E_exact - E_hidden: a control variate that is exact when nothing
          * is hidden and whose variance comes only from the hidden part. */
         double hidden, v;
-        sample_light(ctx, light, stream, p, n, 1, &hidden, &v, stats);
+        int count = sample_light(ctx, light, stream, p, n, 1, &hidden, &v, stats);
+        if (hidden == 0.0) {
+            /* No sample was hidden, so the sample variance is 0, yet a surface
+             * lies in the way and may hide less than the samples resolve. The
+             * error reported is the posterior standard deviation of a hidden
+             * fraction h seen in none of `count` samples (uniform prior:
+             * h ~ Beta(1, count + 1), variance (count + 1) / ((count + 2)^2
+             * (count + 3))), times the unhidden illuminance. */
+            double c = (double)count;
+            v = exact.lx * exact.lx * (c + 1.0) / ((c + 2.0) * (c + 2.0) * (c + 3.0));
+        }
         *E += fmax(0.0, exact.lx - hidden);
         *var += v;
         stats->sampled_evaluations++;

@@ -7,6 +7,7 @@
 
 #include "check.h"
 #include "lights/photometry.h"
+#include "lights/projected_solid_angle.h"
 #include "radiometry/constants.h"
 #include "solver/exr_image.h"
 #include "solver/solve.h"
@@ -947,6 +948,38 @@ static void test_edge_points(void)
     done(scene, &sol);
 }
 
+/* A small box far off under a uniform sky hides a little of it: too little
+ * for a handful of samples to find. The estimate then equals the unhidden
+ * pi L, and its error must still say what may be hidden: the hidden part is
+ * the box's projected solid angle (the sum over the faces the point sees,
+ * which tile its silhouette) times L, and the result must lie within 4
+ * reported standard errors of pi L minus it, with a non-zero error. */
+static void test_small_hidden_part(void)
+{
+    const double L = 1000.0;
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [4.8, -0.2, 0], \"max\": [5.2, 0.2, 0.4], "
+        "\"reflectance\": 0}], \"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 1000, "
+        "\"hemisphere\": \"upper\"}], \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": "
+        "[{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}]}], \"solver\": {\"method\": \"direct\", \"direct_samples\": 16}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    /* Faces the origin sees: only the near face x = 4.8 (the top z = 0.4 is
+     * above the eye and faces away, the sides y = +-0.2 face away from y = 0). */
+    cdl_vec3 face[4] = {cdl_vec3_make(4.8, -0.2, 0.0), cdl_vec3_make(4.8, 0.2, 0.0), cdl_vec3_make(4.8, 0.2, 0.4),
+                        cdl_vec3_make(4.8, -0.2, 0.4)};
+    double psa = fabs(cdl_projected_solid_angle_polygon(face, 4, cdl_vec3_make(0.0, 0.0, 1.0)));
+    double expected = CDL_PI * L - L * psa;
+    double E = sol.grids[0].E[0], se = sol.grids[0].E_stderr[0];
+    CHECK_MSG(psa > 0.0 && psa < 1e-3 * CDL_PI, "hidden projected solid angle %g", psa);
+    CHECK_MSG(se > 0.0, "a partly hidden sky reported with a zero error (E = %.9g, expected %.9g)", E, expected);
+    CHECK_MSG(fabs(E - expected) <= 4.0 * se, "E = %.9g, expected %.9g +- %g", E, expected, 4.0 * se);
+    CHECK(strstr(sol.plan_json, "sampled where partly hidden") != NULL);
+    printf("small hidden part: E = %.9g +- %.3g lx, closed form %.9g lx\n", E, se, expected);
+    done(scene, &sol);
+}
+
 int main(void)
 {
     test_inverse_square_cosine();
@@ -968,5 +1001,6 @@ int main(void)
     test_goniometric_tilt_and_flux();
     test_environment_rgb_scale();
     test_edge_points();
+    test_small_hidden_part();
     return check_finish();
 }
