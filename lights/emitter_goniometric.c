@@ -112,7 +112,8 @@ static inline int gonio_rotational_eval(const goniometric_emitter *g, cdl_vec3 n
     } else {
         /* near the poles from sin(gamma), which acos would lose */
         double x = cdl_vec3_dot(g->col[0], out->to_light), y = cdl_vec3_dot(g->col[1], out->to_light);
-        double s = asin(fmin(1.0, sqrt(x * x + y * y))) * CDL_RAD_TO_DEG;
+        double r = sqrt(x * x + y * y); /* a plain comparison: fmin is a library call here */
+        double s = asin(r < 1.0 ? r : 1.0) * CDL_RAD_TO_DEG;
         gamma_deg = c > 0.0 ? s : 180.0 - s;
     }
     double I = cdl_photometry_intensity_one_plane(g->photometry, gamma_deg) * g->factor;
