@@ -16,11 +16,15 @@
  *  - EULUMDAT C-planes and gamma are the frame's C and gamma, unchanged.
  *  - IES type C: vertical angle V is gamma; horizontal angle H is measured
  *    counter-clockwise seen from BELOW the luminaire (clockwise from above),
- *    so the frame plane is  C = (360 - H) mod 360.  This is Radiance ies2rad's
- *    reading (H = -phi) and what real converters do (FORMAT_NOTES section 3:
- *    the IES H90 plane holds the EULUMDAT C270 data). For symmetric tables
- *    (single plane, 0-90, 0-180) the mirror changes nothing; it matters for
- *    0-360 and 90-270 data.
+ *    so the frame plane is  C = (360 - H) mod 360.  This is what real
+ *    converters do (FORMAT_NOTES section 3: the IES H90 plane holds the
+ *    EULUMDAT C270 data), so an IES file and its EULUMDAT conversion light a
+ *    scene alike. Radiance's ies2rad reads 90-270 tables the same way but a
+ *    full 0-360 table with H counter-clockwise from above (H90 towards +y):
+ *    compared with Radiance such a table appears mirrored in y (measured:
+ *    the mirrored results agree to 1e-4). For symmetric tables (single
+ *    plane, 0-90, 0-180) the mirror changes nothing; it matters for 0-360
+ *    and 90-270 data.
  *  - IES type B (floodlights): photometric zero (H = 0, V = 0) points along
  *    -z; the polar axis is the y axis; V rotates the measuring plane about y
  *    toward +x, H is the lateral angle inside the plane, positive toward -y:
