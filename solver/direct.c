@@ -141,12 +141,13 @@ static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_l
 static void sample_light(const cdl_direct_context *ctx, const cdl_direct_light *light, uint64_t stream, cdl_vec3 p,
                          cdl_vec3 n, int hidden_only, double *mean, double *variance, cdl_direct_sample_stats *stats)
 {
-    int k = (int)ceil(sqrt((double)(ctx->samples > 0 ? ctx->samples : 1)));
-    int count = k * k;
+    /* 64-bit counts: k x k overflows an int from 2^31 samples on. */
+    int64_t k = (int64_t)ceil(sqrt((double)(ctx->samples > 0 ? ctx->samples : 1)));
+    double count = (double)(k * k);
     cdl_rng_key key = {ctx->seed, stream};
     double sum = 0.0, sum2 = 0.0;
-    for (int j = 0; j < k; ++j)
-        for (int i = 0; i < k; ++i) {
+    for (int64_t j = 0; j < k; ++j)
+        for (int64_t i = 0; i < k; ++i) {
             double u[2];
             cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
             cdl_light_sample s;
@@ -360,15 +361,15 @@ double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stre
                                     cdl_direct_sample_stats *stats)
 {
     if (!ctx->geometry) return 1.0;
-    int k = (int)ceil(sqrt((double)(ctx->ao_samples > 0 ? ctx->ao_samples : 1)));
+    int64_t k = (int64_t)ceil(sqrt((double)(ctx->ao_samples > 0 ? ctx->ao_samples : 1)));
     cdl_rng_key key = {ctx->seed, cdl_rng_stream_id(stream, 0x616f /* "ao" */, 0)};
     cdl_frame frame = cdl_frame_from_normal(n);
-    int open = 0;
-    for (int j = 0; j < k; ++j)
-        for (int i = 0; i < k; ++i) {
+    int64_t open = 0;
+    for (int64_t j = 0; j < k; ++j)
+        for (int64_t i = 0; i < k; ++i) {
             double u[2];
             cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
-            cdl_vec3 w = cdl_frame_to_world(&frame, cdl_sample_cosine_hemisphere_stratified(j, i, k, k, u[0], u[1]));
+            cdl_vec3 w = cdl_frame_to_world(&frame, cdl_sample_cosine_hemisphere_stratified((int)j, (int)i, (int)k, (int)k, u[0], u[1]));
             if (!shadowed(ctx, p, n, w, INFINITY, stats)) open++;
         }
     return (double)open / (double)(k * k);
