@@ -246,11 +246,18 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
     cdl_direct_light light = *proto;
     double cos_min;
     if (cdl_emitter_emission_cone(e, &light.cone_position, &light.cone_axis, &cos_min)) {
-        light.has_cone = 1;
-        light.cone_angle = acos(fmax(-1.0, fmin(1.0, cos_min)));
-        light.cone_cos = cos_min;
-        light.cone_sin = sin(light.cone_angle);
-        light.cone_cos2 = cos_min * cos_min;
+        /* The solver culls with cosines computed in double precision, a few
+         * ulps off at the cone's edge: widen the cone by 8 ulps of 1 so that
+         * rounding never culls a lit point. Without it a beam narrower than
+         * about 1e-8 rad, whose cosine rounds to 1, culled even its own axis. */
+        double c = fmin(1.0, cos_min) - 8.0 * DBL_EPSILON;
+        if (c > -1.0) {
+            light.has_cone = 1;
+            light.cone_angle = acos(c);
+            light.cone_cos = c;
+            light.cone_sin = sin(light.cone_angle);
+            light.cone_cos2 = c * c;
+        }
     }
     cdl_direct_light *nl = realloc(L->lights, (L->count + 1) * sizeof *nl);
     if (!nl) {

@@ -49,8 +49,46 @@ static void test_sample_limits(void)
     cdl_scene_release(s);
 }
 
+/* Solve a scene (one thread) and return E at point `index` of grid 0. */
+static double solve_point(const char *json, size_t index)
+{
+    cdl_scene *scene = load(json);
+    if (!scene) return NAN;
+    cdl_solve_options so = CDL_SOLVE_OPTIONS_DEFAULT;
+    so.threads = 1;
+    cdl_solution sol;
+    cdl_error err;
+    cdl_error_clear(&err);
+    double E = NAN;
+    cdl_status st = cdl_solve_scene(scene, &so, &sol, &err);
+    CHECK_OK(st, &err);
+    if (st == CDL_OK) {
+        if (index < sol.grids[0].grid.count) E = sol.grids[0].E[index];
+        cdl_solution_release(&sol);
+    }
+    cdl_scene_release(scene);
+    return E;
+}
+
+/* A spot narrower than about 1e-8 rad: cos(half_angle) rounds to 1, and the
+ * solver's emission-cone culling dropped even the points on its axis (E = 0
+ * instead of I / d^2). The spot itself is exact on its axis: E = I0 / d^2. */
+static void test_narrow_spot(void)
+{
+#define NARROW_SPOT(point)                                                                                    \
+    "{\"version\": 1, \"luminaires\": [{\"type\": \"spot\", \"position\": [0,0,3], \"direction\": [0,0,-1], " \
+    "\"intensity_cd\": 1000, \"half_angle\": 1e-7}], \"grids\": [{\"name\": \"g\", \"type\": \"points\", "       \
+    "\"points\": [{\"p\": " point ", \"n\": [0,0,1]}]}]}"
+    /* On the axis: 1000 cd / (3 m)^2, to rounding. */
+    CHECK_REL(solve_point(NARROW_SPOT("[0,0,0]"), 0), 1000.0 / 9.0, 1e-12);
+    /* 1e-6 m off the axis at 3 m is 3.3e-7 rad, far outside the 1.7e-9 rad beam. */
+    CHECK(solve_point(NARROW_SPOT("[1e-6,0,0]"), 0) == 0.0);
+#undef NARROW_SPOT
+}
+
 int main(void)
 {
     test_sample_limits();
+    test_narrow_spot();
     return check_finish();
 }
