@@ -336,6 +336,18 @@ static cdl_status read_mesh(const cdl_scene_parse *ctx, const cJSON *node, const
     cdl_mesh_data mesh;
     if (cdl_mesh_file_read(out->file, &mesh, ctx->err) != CDL_OK)
         return cdl_error_prefix(ctx->err, "%s: %s: ", ctx->file, p);
+    /* The same bound as coordinates written in the scene: beyond it areas
+     * overflow and the ray scene's single precision loses the room. */
+    for (size_t i = 0; i < 3 * mesh.vertex_count; ++i)
+        if (fabs(mesh.vertices[i]) > CDL_SCENE_MAX_MAGNITUDE) {
+            const double *v = &mesh.vertices[i - i % 3];
+            cdl_status st = cdl_error_set(ctx->err, CDL_ERR_INPUT,
+                                          "%s: %s: %s: vertex %zu (from 1, in file order): expected coordinates of "
+                                          "magnitude at most %g m, found [%.10g, %.10g, %.10g]",
+                                          ctx->file, p, out->file, i / 3 + 1, CDL_SCENE_MAX_MAGNITUDE, v[0], v[1], v[2]);
+            cdl_mesh_data_release(&mesh);
+            return st;
+        }
     out->mesh_vertices = mesh.vertices;
     out->mesh_vertex_count = mesh.vertex_count;
     out->mesh_triangles = mesh.triangles;

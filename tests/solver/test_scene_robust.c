@@ -86,8 +86,44 @@ static void test_narrow_spot(void)
 #undef NARROW_SPOT
 }
 
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    CHECK_MSG(f != NULL, "cannot write %s", path);
+    if (!f) return;
+    fputs(text, f);
+    fclose(f);
+}
+
+/* Mesh files obey the bound on scene coordinates (1e12 m): a vertex at 1e20
+ * was accepted, and Embree's single precision then lost every shadow near
+ * the origin (a grid under a covering triangle was fully lit). Areas of
+ * vertices at 1e150 overflowed into an "infinite area" message that named no
+ * vertex. Now the message names the file, the vertex and the bound. */
+static void test_mesh_file_magnitude(void)
+{
+    write_text(CANDELA_TEST_TMPDIR "/robust_far.obj", "v 0 0 0\nv 1e20 0 0\nv 0 1e20 0\nf 1 2 3\n");
+    cdl_scene *scene = NULL;
+    cdl_error err;
+    cdl_error_clear(&err);
+    const char *json = "{\"version\": 1, \"surfaces\": [{\"type\": \"mesh\", \"file\": \"robust_far.obj\", "
+                       "\"reflectance\": 0}], " POINTS_GRID "}";
+    cdl_status st = cdl_scene_load_string(json, CANDELA_TEST_TMPDIR "/robust.json", &scene, &err);
+    CHECK(st == CDL_ERR_INPUT && scene == NULL);
+    CHECK_MSG(strstr(err.message, "robust.json: surfaces[0].file: ") &&
+                  strstr(err.message, "robust_far.obj: vertex 2 (from 1, in file order): expected coordinates of "
+                                      "magnitude at most 1e+12 m, found [1e+20, 0, 0]"),
+              "message: %s", err.message);
+    cdl_scene_release(scene);
+    /* At the bound itself the mesh loads. */
+    write_text(CANDELA_TEST_TMPDIR "/robust_far.obj", "v 0 0 0\nv 1e12 0 0\nv 0 -1e12 0\nf 1 2 3\n");
+    CHECK_OK(cdl_scene_load_string(json, CANDELA_TEST_TMPDIR "/robust.json", &scene, &err), &err);
+    cdl_scene_release(scene);
+}
+
 int main(void)
 {
+    test_mesh_file_magnitude();
     test_sample_limits();
     test_narrow_spot();
     return check_finish();
