@@ -69,9 +69,22 @@ void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points,
             cdl_vec3 lo = glo, hi = ghi;
             grow(&lo, &hi, light->bounds_lo);
             grow(&lo, &hi, light->bounds_hi);
+            double tol = fmin(region_tolerance(ctx, lo), region_tolerance(ctx, hi));
+            /* The test shrinks the box by tol so that surfaces which only
+             * touch it (the floor under a grid) do not count. Along an axis
+             * where the box is thinner than that (a probe straight below its
+             * luminaire, a grid level with it) shrinking would empty the box
+             * and hide every surface in between: widen such an axis to 3 tol
+             * either side of its middle first. */
+            double *axis_lo[3] = {&lo.x, &lo.y, &lo.z}, *axis_hi[3] = {&hi.x, &hi.y, &hi.z};
+            for (int a = 0; a < 3; ++a)
+                if (*axis_hi[a] - *axis_lo[a] < 4.0 * tol) {
+                    double mid = 0.5 * (*axis_lo[a] + *axis_hi[a]);
+                    *axis_lo[a] = fmin(*axis_lo[a], mid - 3.0 * tol);
+                    *axis_hi[a] = fmax(*axis_hi[a], mid + 3.0 * tol);
+                }
             cdl_convex_region box;
             cdl_region_box(&box, lo, hi);
-            double tol = fmin(region_tolerance(ctx, lo), region_tolerance(ctx, hi));
             may_occlude = cdl_occluder_index_intersects(ctx->occluders, &box, tol, light->owner);
         }
         if (delta)

@@ -86,6 +86,63 @@ static void test_narrow_spot(void)
 #undef NARROW_SPOT
 }
 
+/* Solve and return the whole solution's grid 0 E values through `E` (up to `n`). */
+static void solve_grid(const char *json, double *E, double *stderr_lx, size_t n)
+{
+    for (size_t i = 0; i < n; ++i) E[i] = stderr_lx[i] = NAN;
+    cdl_scene *scene = load(json);
+    if (!scene) return;
+    cdl_solve_options so = CDL_SOLVE_OPTIONS_DEFAULT;
+    so.threads = 1;
+    cdl_solution sol;
+    cdl_error err;
+    cdl_error_clear(&err);
+    cdl_status st = cdl_solve_scene(scene, &so, &sol, &err);
+    CHECK_OK(st, &err);
+    if (st == CDL_OK) {
+        CHECK(sol.grids[0].grid.count == n);
+        for (size_t i = 0; i < n && i < sol.grids[0].grid.count; ++i) {
+            E[i] = sol.grids[0].E[i];
+            stderr_lx[i] = sol.grids[0].E_stderr[i];
+        }
+        cdl_solution_release(&sol);
+    }
+    cdl_scene_release(scene);
+}
+
+/* "Can a surface come between this light and this grid?" was answered with
+ * the box around both, shrunk by a tolerance so that the floor under a grid
+ * does not count. A box that is flat along an axis - a probe straight below
+ * its luminaire, a grid level with its luminaire - shrank to nothing, and
+ * the light shone through tables and walls. */
+static void test_flat_light_grid_box(void)
+{
+    /* A table (z = 0.05) between a point light (z = 3) and a probe right below it. */
+    const char *probe =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [-1,-1,0.05], \"u\": [2,0,0], \"v\": [0,2,0], "
+        "\"reflectance\": 0}], \"luminaires\": [{\"type\": \"point\", \"position\": [0,0,3], \"intensity_cd\": 1000}], "
+        POINTS_GRID "}";
+    CHECK(solve_point(probe, 0) == 0.0);
+    /* A wall (x = 1) between a point light at 0.8 m and a grid level with
+     * it (z = 0.8 m), whose points face the light. */
+    const char *level =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [1,-1,0], \"u\": [0,2,0], \"v\": [0,0,2], "
+        "\"reflectance\": 0}], \"luminaires\": [{\"type\": \"point\", \"position\": [0,0,0.8], \"intensity_cd\": 1000}], "
+        "\"grids\": [{\"name\": \"g\", \"type\": \"rect\", \"origin\": [2,-0.5,0.8], \"u\": [1,0,0], \"v\": [0,1,0], "
+        "\"nu\": 2, \"nv\": 2, \"normal\": [-1,0,0]}]}";
+    double E[4], se[4];
+    solve_grid(level, E, se, 4);
+    for (int i = 0; i < 4; ++i) CHECK_MSG(E[i] == 0.0, "point %d behind the wall: E = %g lx", i, E[i]);
+    /* Without the wall the same points are lit: I cos / d^2 > 0. */
+    const char *open_level =
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"point\", \"position\": [0,0,0.8], \"intensity_cd\": 1000}], "
+        "\"grids\": [{\"name\": \"g\", \"type\": \"rect\", \"origin\": [2,-0.5,0.8], \"u\": [1,0,0], \"v\": [0,1,0], "
+        "\"nu\": 2, \"nv\": 2, \"normal\": [-1,0,0]}]}";
+    solve_grid(open_level, E, se, 4);
+    /* Point 0 at (2.25, -0.25, 0.8): d^2 = 5.125, cos = 2.25 / sqrt(5.125). */
+    CHECK_REL(E[0], 1000.0 * 2.25 / pow(5.125, 1.5), 1e-12);
+}
+
 static void write_text(const char *path, const char *text)
 {
     FILE *f = fopen(path, "w");
@@ -123,6 +180,7 @@ static void test_mesh_file_magnitude(void)
 
 int main(void)
 {
+    test_flat_light_grid_box();
     test_mesh_file_magnitude();
     test_sample_limits();
     test_narrow_spot();
