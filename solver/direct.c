@@ -128,11 +128,26 @@ static int shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_v
     return cdl_ray_scene_occluded(ctx->rays, o, dir, t_near, t_far);
 }
 
-/* Is the region between p and the whole of the light clear of surfaces? */
+/* Move planes first .. first + count - 1 of a region outward by tol, so
+ * that the index's shrink by tol leaves them where they were. */
+static void unshrink_planes(cdl_convex_region *region, int first, int count, double tol)
+{
+    for (int i = first; i < first + count && i < region->plane_count; ++i) region->planes[i].offset += tol;
+}
+
+/* Is the region between p and the whole of the light clear of surfaces?
+ * The index shrinks every plane by tol, so that the surface p lies on and
+ * the one the emitter is set into do not count. The side planes of a
+ * pyramid meet at p, though: shrunk, they cut away everything within about
+ * tol x distance / emitter size of p, and all of a pyramid thinner than
+ * 2 tol (a small emitter), so a table just above a floor point went unseen.
+ * The sides are therefore kept where they are; only the caps (the plane
+ * of p, the plane of the emitter) shrink. */
 static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_vec3 p, cdl_vec3 n)
 {
     cdl_convex_region region;
     region.plane_count = 0;
+    double tol = region_tolerance(ctx, p);
     if (light->is_environment) {
         /* The open half-space above the receiving plane (and above the
          * horizon for an upper-hemisphere sky): {x : -n.x <= -n.p}. */
@@ -140,12 +155,14 @@ static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_l
         if (light->upper_only) cdl_region_add(&region, cdl_vec3_neg(light->up), -cdl_vec3_dot(light->up, p));
     } else if (light->outline_is_sphere) {
         cdl_region_sphere_view(&region, p, light->sphere_center, light->sphere_radius);
+        if (region.plane_count == CDL_REGION_SPHERE_SIDES + 1) unshrink_planes(&region, 0, CDL_REGION_SPHERE_SIDES, tol);
         cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
     } else {
         if (!cdl_region_pyramid(&region, p, light->outline, light->outline_count)) return 0;
+        unshrink_planes(&region, 1, light->outline_count, tol);
         cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
     }
-    return !cdl_occluder_index_intersects(ctx->occluders, &region, region_tolerance(ctx, p), light->owner);
+    return !cdl_occluder_index_intersects(ctx->occluders, &region, tol, light->owner);
 }
 
 /* Stratified Monte-Carlo over the light: returns the mean of f = L cos / pdf

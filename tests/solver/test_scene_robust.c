@@ -143,6 +143,32 @@ static void test_flat_light_grid_box(void)
     CHECK_REL(E[0], 1000.0 * 2.25 / pow(5.125, 1.5), 1e-12);
 }
 
+/* An area emitter counted as fully visible from a point when nothing
+ * crossed the pyramid from the point to its outline, shrunk by a tolerance:
+ * the shrunk side planes cut away the pyramid's tip, and all of it for a
+ * small emitter, so a table 5 cm above a floor point hid nothing. */
+static void test_small_emitter_pyramid(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [-1,-1,0.05], \"u\": [2,0,0], \"v\": [0,2,0], "
+        "\"reflectance\": 0}], \"luminaires\": [{\"type\": \"area\", \"shape\": {\"type\": \"rect\", "
+        "\"origin\": [-0.005,-0.005,3], \"u\": [0.01,0,0], \"v\": [0,-0.01,0]}, \"luminance_cd_m2\": 1e6}], "
+        "\"grids\": [{\"name\": \"g\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1]}, "
+        "{\"p\": [0,0,0.1], \"n\": [0,0,1]}]}]}";
+    double E[2], se[2];
+    solve_grid(json, E, se, 2);
+    /* Unoccluded, the 1 cm square at 3 m gives about L A / d^2 = 1e6 x 1e-4 / 9
+     * = 11.1 lx. Under the table every sample is hidden: what is left is the
+     * closed form minus the sampled hidden part, zero to within a few
+     * standard errors (and far below 1 % of 11.1 lx). */
+    CHECK_MSG(E[0] <= 4.0 * se[0] + 1e-9 && E[0] < 0.01 * 11.1, "under the table: E = %g lx (stderr %g)", E[0],
+              se[0]);
+    /* Above the table the emitter is in plain view: closed form, exact, and
+     * within (size / d)^2 ~ 1e-5 of the point-source value L A / d^2. */
+    CHECK_REL(E[1], 1e6 * 1e-4 / (2.9 * 2.9), 1e-4);
+    CHECK(se[1] == 0.0);
+}
+
 static void write_text(const char *path, const char *text)
 {
     FILE *f = fopen(path, "w");
@@ -181,6 +207,7 @@ static void test_mesh_file_magnitude(void)
 int main(void)
 {
     test_flat_light_grid_box();
+    test_small_emitter_pyramid();
     test_mesh_file_magnitude();
     test_sample_limits();
     test_narrow_spot();
