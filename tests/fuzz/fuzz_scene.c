@@ -17,7 +17,13 @@
  * cdl_solve_scene and written with cdl_solution_write. The solve must
  * either succeed or fail with a message (CDL_ERR_INPUT, or CDL_ERR_INTERNAL
  * only for a lack of memory); a result must hold finite numbers, E >= 0,
- * a standard error >= 0, E_indirect = 0 and AO in [0, 1]. A violated
+ * a standard error >= 0, E_indirect = 0 and AO in [0, 1]. And E must lie
+ * between bounds found without the solver's shortcuts (plans, culling,
+ * visibility regions): at least the sum of the delta lights (point, spot,
+ * goniometric, directional) that a plain shadow ray finds unoccluded, at
+ * most the sum of those not clearly blocked (a hit well inside the
+ * segment) plus the unoccluded closed forms of the other lights (plus ten
+ * standard errors where the solver sampled). A violated
  * invariant aborts (a finding), as do crashes, hangs, leaks and sanitizer
  * reports. */
 #include <dirent.h>
@@ -31,10 +37,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "lights/emitter.h"
 #include "solver/exr_image.h"
 #include "solver/grid.h"
 #include "solver/grid_result.h"
 #include "solver/scene.h"
+#include "solver/scene_geometry.h"
+#include "solver/scene_lights.h"
 #include "solver/solve.h"
 
 /* Budget of one input: points over all grids, samples per point. */
@@ -221,6 +230,63 @@ static void check_solution(const cdl_scene *scene, const cdl_solution *sol)
     }
 }
 
+/* Bounds on E at every point from the emitters and plain ray queries (see
+ * the top of this file). */
+static void check_against_rays(const cdl_scene *scene, const cdl_solution *sol)
+{
+    cdl_error err;
+    cdl_scene_geometry *geometry = NULL;
+    cdl_scene_lights lights;
+    memset(&lights, 0, sizeof lights);
+    require(cdl_scene_geometry_build(scene, &geometry, &err) == CDL_OK, "geometry builds again", err.message);
+    require(cdl_scene_lights_build(scene, geometry, &lights, &err) == CDL_OK, "lights build again", err.message);
+    int has_surfaces = cdl_scene_geometry_piece_count(geometry) > 0;
+    for (size_t g = 0; g < sol->grid_count; ++g) {
+        const cdl_grid_solution *gs = &sol->grids[g];
+        for (size_t i = 0; i < gs->grid.count; ++i) {
+            cdl_vec3 p = gs->grid.points[i], n = gs->grid.normals[i];
+            double lo = 0.0, hi = 0.0;
+            int bounded = 1;
+            for (size_t l = 0; l < lights.count; ++l) {
+                const cdl_emitter *e = lights.emitters[l];
+                if (!cdl_emitter_is_delta(e)) {
+                    cdl_illuminance exact;
+                    if (cdl_emitter_exact_illuminance(e, p, n, &exact, NULL) == CDL_OK) hi += exact.lx;
+                    else bounded = 0;
+                    continue;
+                }
+                cdl_delta_light d;
+                if (!cdl_emitter_eval_delta(e, p, n, &d) || !(d.E.lx > 0.0)) continue;
+                if (!has_surfaces || !cdl_scene_geometry_ray_occluded(geometry, p, n, d.to_light, d.distance)) {
+                    lo += d.E.lx;
+                    hi += d.E.lx;
+                    continue;
+                }
+                /* Blocked for sure: a hit more than 3 region tolerances (30 ray
+                 * epsilons) from both ends of the segment. */
+                cdl_ray_hit hit;
+                double near = 30.0 * cdl_scene_geometry_ray_epsilon(geometry, p);
+                double far = isfinite(d.distance)
+                                 ? 30.0 * cdl_scene_geometry_ray_epsilon(geometry, cdl_vec3_madd(p, d.distance, d.to_light))
+                                 : 0.0;
+                int blocked = cdl_scene_geometry_intersect(geometry, p, n, d.to_light, d.distance, &hit) &&
+                              hit.t > near && d.distance - hit.t > far;
+                if (!blocked) hi += d.E.lx;
+            }
+            char where[160];
+            snprintf(where, sizeof where, "%s point %zu: E %.17g, bounds [%.17g, %.17g]", scene->grids[g].name, i,
+                     gs->E[i], lo, hi);
+            require(gs->E[i] >= lo * (1.0 - 1e-9), "E at least the unoccluded delta lights", where);
+            /* Sampled parts may exceed their closed form by their noise. */
+            if (bounded)
+                require(gs->E[i] <= hi * (1.0 + 1e-9) + 10.0 * gs->E_stderr[i] + 1e-300,
+                        "E at most what is not clearly blocked", where);
+        }
+    }
+    cdl_scene_lights_release(&lights);
+    cdl_scene_geometry_release(geometry);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     const uint8_t *attachment = NULL;
@@ -265,6 +331,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         require(st == CDL_ERR_INPUT || is_out_of_memory(&err), "a refused solve is bad input", err.message);
     } else {
         check_solution(scene, &sol);
+        check_against_rays(scene, &sol);
         st = cdl_solution_write(scene, &sol, out_dir, cdl_default_ocio_config(), &err);
         require(st == CDL_OK, "a solution is written", err.message);
         cdl_solution_release(&sol);
