@@ -191,7 +191,10 @@ static cdl_status read_environment_image(const cdl_scene *scene, const cdl_lumin
 {
     cdl_exr_image img;
     cdl_status st = cdl_exr_read(spec->file, &img, err);
-    if (st != CDL_OK) return fail_at(err, scene, spec->json_path, st);
+    if (st != CDL_OK) {
+        cdl_error_prefix(err, "%s: %s.file: ", scene->path, spec->json_path);
+        return st;
+    }
     const float *Y = cdl_exr_image_channel(&img, "Y");
     const float *R = cdl_exr_image_channel(&img, "R"), *G = cdl_exr_image_channel(&img, "G"),
                 *B = cdl_exr_image_channel(&img, "B");

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "check.h"
 #include "solver/scene.h"
@@ -204,8 +205,44 @@ static void test_mesh_file_magnitude(void)
     cdl_scene_release(scene);
 }
 
+/* The solve of a scene must fail with CDL_ERR_INPUT and a message holding both fragments. */
+static void check_solve_refused(const char *json, const char *path, const char *fragment1, const char *fragment2)
+{
+    cdl_scene *scene = NULL;
+    cdl_error err;
+    cdl_error_clear(&err);
+    CHECK_OK(cdl_scene_load_string(json, path, &scene, &err), &err);
+    if (!scene) return;
+    cdl_solution sol;
+    cdl_solve_options so = CDL_SOLVE_OPTIONS_DEFAULT;
+    so.threads = 1;
+    cdl_status st = cdl_solve_scene(scene, &so, &sol, &err);
+    CHECK_MSG(st == CDL_ERR_INPUT, "status %d: %s", (int)st, err.message);
+    if (st == CDL_OK) cdl_solution_release(&sol);
+    CHECK_MSG(strstr(err.message, fragment1) && strstr(err.message, fragment2), "message: %s", err.message);
+    cdl_scene_release(scene);
+}
+
+/* An environment image that is a folder read as "luminaires[0]: DIR: cannot
+ * read as OpenEXR: Error reading from stream"; a missing one as "Unable to
+ * open file". Now the JSON path ends in .file and the message says what the
+ * path is. */
+static void test_environment_file_messages(void)
+{
+    mkdir(CANDELA_TEST_TMPDIR "/robust_sky_folder.exr", 0755);
+    check_solve_refused("{\"version\": 1, \"luminaires\": [{\"type\": \"environment\", \"file\": "
+                        "\"robust_sky_folder.exr\"}], " POINTS_GRID "}",
+                        CANDELA_TEST_TMPDIR "/robust.json", "robust.json: luminaires[0].file: ",
+                        "robust_sky_folder.exr: expected an OpenEXR image, found a directory or device");
+    check_solve_refused("{\"version\": 1, \"luminaires\": [{\"type\": \"environment\", \"file\": "
+                        "\"robust_no_such_sky.exr\"}], " POINTS_GRID "}",
+                        CANDELA_TEST_TMPDIR "/robust.json", "robust.json: luminaires[0].file: ",
+                        "robust_no_such_sky.exr: cannot open the OpenEXR image: No such file or directory");
+}
+
 int main(void)
 {
+    test_environment_file_messages();
     test_flat_light_grid_box();
     test_small_emitter_pyramid();
     test_mesh_file_magnitude();
