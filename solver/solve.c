@@ -318,6 +318,38 @@ static cdl_status run_grid(grid_job *job, int threads, cdl_direct_sample_stats *
     return st;
 }
 
+/* ---- results a double cannot hold ------------------------------------------------ */
+
+/* A light closer to a grid point than a double's range allows (1e-200 m)
+ * makes I cos / d^2 infinite; a result file cannot hold that. Say which
+ * point and which light, as bad input, instead of failing at writing. */
+static cdl_status check_finite(const cdl_scene *scene, const cdl_scene_lights *lights, size_t g,
+                               const cdl_grid_solution *gs, cdl_error *err)
+{
+    const cdl_grid_spec *spec = &scene->grids[g];
+    for (size_t i = 0; i < gs->grid.count; ++i) {
+        if (isfinite(gs->E[i]) && isfinite(gs->E_stderr[i])) continue;
+        cdl_vec3 p = gs->grid.points[i], n = gs->grid.normals[i];
+        const char *culprit = NULL;
+        for (size_t l = 0; l < lights->count && !culprit; ++l) {
+            cdl_illuminance E;
+            if (cdl_emitter_exact_illuminance(lights->emitters[l], p, n, &E, NULL) == CDL_OK && !isfinite(E.lx))
+                culprit = lights->lights[l].label;
+        }
+        const char *what = isfinite(gs->E[i]) ? "its standard error" : "the illuminance";
+        if (culprit)
+            return cdl_error_set(err, CDL_ERR_INPUT,
+                                 "%s: %s (%s) point %zu at [%.10g, %.10g, %.10g]: expected a finite illuminance, found "
+                                 "%s beyond the range of a double: %s is too close to the point (or too bright)",
+                                 scene->path, spec->json_path, spec->name, i, p.x, p.y, p.z, what, culprit);
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "%s: %s (%s) point %zu at [%.10g, %.10g, %.10g]: expected a finite illuminance, found %s "
+                             "beyond the range of a double: a light is too close to the point (or too bright)",
+                             scene->path, spec->json_path, spec->name, i, p.x, p.y, p.z, what);
+    }
+    return CDL_OK;
+}
+
 /* ---- the solve ------------------------------------------------------------------ */
 
 static cdl_status alloc_grid_arrays(cdl_grid_solution *gs, int want_ao, cdl_error *err)
@@ -437,6 +469,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         double tc = now_seconds();
         st = run_grid(&job, threads, &total, err);
         out->compute_seconds += now_seconds() - tc;
+        if (st == CDL_OK) st = check_finite(scene, &lights, g, gs, err);
         if (st != CDL_OK) goto fail;
         if (opts.progress) opts.progress(opts.progress_user, spec->name, gs->grid.count, gs->grid.count);
     }

@@ -240,8 +240,28 @@ static void test_environment_file_messages(void)
                         "robust_no_such_sky.exr: cannot open the OpenEXR image: No such file or directory");
 }
 
+/* A point light 1e-200 m above a grid point: I cos / d^2 overflows to
+ * infinity, which the CSV writer then refused as an internal error (exit 3)
+ * naming only the file. Now the solve refuses it as bad input naming the
+ * grid, the point and the light. At 1e-150 m the value (1e302 lx) is finite
+ * and kept: that is the inverse-square law, not an error. */
+static void test_light_on_grid_point(void)
+{
+#define NEAR_LIGHT(z)                                                                                         \
+    "{\"version\": 1, \"luminaires\": [{\"type\": \"point\", \"position\": [0,0," z "], \"intensity_cd\": 100}], " \
+    POINTS_GRID "}"
+    check_solve_refused(NEAR_LIGHT("1e-200"), "robust.json",
+                        "robust.json: grids[0] (g) point 0 at [0, 0, 0]: expected a finite illuminance, found the "
+                        "illuminance beyond the range of a double: ",
+                        "luminaires[0] is too close to the point (or too bright)");
+    /* E = 100 cd / (1e-150 m)^2 = 1e302 lx, to rounding. */
+    CHECK_REL(solve_point(NEAR_LIGHT("1e-150"), 0), 1e302, 1e-12);
+#undef NEAR_LIGHT
+}
+
 int main(void)
 {
+    test_light_on_grid_point();
     test_environment_file_messages();
     test_flat_light_grid_box();
     test_small_emitter_pyramid();
