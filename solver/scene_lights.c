@@ -333,6 +333,13 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
                 break;
             }
             p.intensity = cdl_candelas(sp->flux_lm / per_cd);
+            if (!isfinite(p.intensity.cd)) {
+                st = cdl_error_set(err, CDL_ERR_INPUT,
+                                   "flux_lm: expected a flux this beam can carry with a finite intensity (%g lm per "
+                                   "cd), found %g lm",
+                                   per_cd, sp->flux_lm);
+                break;
+            }
         } else {
             p.intensity = cdl_candelas(sp->intensity_cd);
         }

@@ -259,8 +259,27 @@ static void test_light_on_grid_point(void)
 #undef NEAR_LIGHT
 }
 
+/* A flux over a tiny emitter: flux / (pi area) or flux / (lumens per
+ * candela of the beam) overflowed, and the emitter refused an "intensity"
+ * or "luminance" of inf the user never wrote. Now the message names
+ * flux_lm and what it was spread over. */
+static void test_flux_overflow(void)
+{
+    check_solve_refused("{\"version\": 1, \"luminaires\": [{\"type\": \"area\", \"shape\": {\"type\": \"rect\", "
+                        "\"origin\": [0,0,2], \"u\": [1e-150,0,0], \"v\": [0,-1e-150,0]}, \"flux_lm\": 1e12}], "
+                        POINTS_GRID "}",
+                        "robust.json", "robust.json: luminaires[0].flux_lm: expected a flux that spreads over the shape's ",
+                        "m^2 with a finite luminance (flux / (pi area)), found 1e+12 lm");
+    check_solve_refused("{\"version\": 1, \"luminaires\": [{\"type\": \"spot\", \"position\": [0,0,3], "
+                        "\"direction\": [0,0,-1], \"flux_lm\": 1e12, \"half_angle\": 1e-150}], " POINTS_GRID "}",
+                        "robust.json", "robust.json: luminaires[0]: flux_lm: expected a flux this beam can carry with a "
+                        "finite intensity (",
+                        "lm per cd), found 1e+12 lm");
+}
+
 int main(void)
 {
+    test_flux_overflow();
     test_light_on_grid_point();
     test_environment_file_messages();
     test_flat_light_grid_box();
