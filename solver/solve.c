@@ -449,7 +449,10 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         const cdl_grid_spec *spec = &scene->grids[g];
         cdl_grid_solution *gs = &out->grids[g];
         st = cdl_grid_build(spec, &gs->grid, err);
-        if (st != CDL_OK) goto fail;
+        if (st != CDL_OK) {
+            cdl_error_prefix(err, "%s: ", scene->path);
+            goto fail;
+        }
         st = alloc_grid_arrays(gs, spec->want_ao, err);
         if (st != CDL_OK) goto fail;
         cdl_direct_plan_grid(&ctx, gs->grid.points, gs->grid.count, strategies);

@@ -277,8 +277,29 @@ static void test_flux_overflow(void)
                         "lm per cd), found 1e+12 lm");
 }
 
+/* A polygon grid too fine to compute was refused with "grids[0].spacing:
+ * ..." naming no scene file, and, with "auto" spacing, blamed a spacing the
+ * user never wrote. */
+static void test_polygon_grid_too_fine(void)
+{
+#define POLYGON_GRID(size, spacing)                                                                             \
+    "{\"version\": 1, \"luminaires\": [{\"type\": \"point\", \"position\": [0,0,2], \"intensity_cd\": 100}], "      \
+    "\"grids\": [{\"name\": \"g\", \"type\": \"polygon\", \"vertices\": [[0,0,0],[" size ",0,0],[" size "," size ",0],[0," \
+    size ",0]]" spacing "}]}"
+    check_solve_refused(POLYGON_GRID("100", ", \"spacing\": 0.001"), "robust.json",
+                        "robust.json: grids[0].spacing: expected a spacing giving at most 10000000 points, found "
+                        "0.001 m",
+                        "(about 5e+10 points over 10000 m^2)");
+    check_solve_refused(POLYGON_GRID("1e12", ""), "robust.json",
+                        "robust.json: grids[0].spacing: expected a spacing giving at most 10000000 points, found "
+                        "\"auto\", the EN 12464-1 spacing capped at 10 m",
+                        "points over 1e+24 m^2)");
+#undef POLYGON_GRID
+}
+
 int main(void)
 {
+    test_polygon_grid_too_fine();
     test_flux_overflow();
     test_light_on_grid_point();
     test_environment_file_messages();
