@@ -396,6 +396,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     cdl_scene_lights lights;
     memset(&lights, 0, sizeof lights);
     cdl_light_strategy *strategies = NULL;
+    cJSON **plan_grids = NULL;
 
     if (opts.progress) opts.progress(opts.progress_user, "geometry", 0, 1);
     st = cdl_scene_geometry_build(scene, &geometry, err);
@@ -422,11 +423,18 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     ctx.log = opts.ray_log;
 
     cJSON *direct = cJSON_AddArrayToObject(plan, "direct");
+    /* Each light's "grids" object, kept at hand: looking it up in the array
+     * for every grid cost lights^2 x grids (minutes for thousands of each). */
+    plan_grids = calloc(lights.count ? lights.count : 1, sizeof *plan_grids);
+    if (!plan_grids) {
+        st = cdl_error_out_of_memory(err);
+        goto fail;
+    }
     for (size_t l = 0; l < lights.count; ++l) {
         cJSON *item = cJSON_CreateObject();
         cJSON_AddStringToObject(item, "light", lights.lights[l].label);
         cJSON_AddStringToObject(item, "kind", lights.kinds[l]);
-        cJSON_AddObjectToObject(item, "grids");
+        plan_grids[l] = cJSON_AddObjectToObject(item, "grids");
         cJSON_AddItemToArray(direct, item);
     }
     if (lights.count == 0)
@@ -456,10 +464,8 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         st = alloc_grid_arrays(gs, spec->want_ao, err);
         if (st != CDL_OK) goto fail;
         cdl_direct_plan_grid(&ctx, gs->grid.points, gs->grid.count, strategies);
-        for (size_t l = 0; l < lights.count; ++l) {
-            cJSON *grids = cJSON_GetObjectItemCaseSensitive(cJSON_GetArrayItem(direct, (int)l), "grids");
-            cJSON_AddStringToObject(grids, spec->name, cdl_light_strategy_name(strategies[l]));
-        }
+        for (size_t l = 0; l < lights.count; ++l)
+            cJSON_AddStringToObject(plan_grids[l], spec->name, cdl_light_strategy_name(strategies[l]));
         if (opts.progress) opts.progress(opts.progress_user, spec->name, 0, gs->grid.count);
         grid_job job;
         job.ctx = &ctx;
@@ -488,6 +494,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         goto fail;
     }
     cJSON_Delete(plan);
+    free(plan_grids);
     free(strategies);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);
@@ -497,6 +504,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
 
 fail:
     cJSON_Delete(plan);
+    free(plan_grids);
     free(strategies);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);

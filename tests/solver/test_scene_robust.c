@@ -297,8 +297,48 @@ static void test_polygon_grid_too_fine(void)
 #undef POLYGON_GRID
 }
 
+/* The plan's per-light "grids" objects are filled grid by grid through
+ * pointers kept from their creation (looking each one up in the array cost
+ * lights^2 x grids: seconds for a thousand of each, minutes beyond). Every
+ * light must still name every grid, with its own strategy. */
+static void test_plan_lights_by_grid(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [-1,-1,1], \"u\": [2,0,0], \"v\": [0,2,0], "
+        "\"reflectance\": 0}], \"luminaires\": ["
+        "{\"type\": \"point\", \"position\": [0,0,3], \"intensity_cd\": 10}, "
+        "{\"type\": \"point\", \"position\": [5,5,3], \"intensity_cd\": 10}, "
+        "{\"type\": \"point\", \"position\": [0,0,0.5], \"intensity_cd\": 10}], "
+        "\"grids\": [{\"name\": \"under\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1]}]}, "
+        "{\"name\": \"aside\", \"type\": \"points\", \"points\": [{\"p\": [5,5,0], \"n\": [0,0,1]}]}]}";
+    cdl_scene *scene = load(json);
+    if (!scene) return;
+    cdl_solution sol;
+    cdl_error err;
+    cdl_solve_options so = CDL_SOLVE_OPTIONS_DEFAULT;
+    so.threads = 1;
+    CHECK_OK(cdl_solve_scene(scene, &so, &sol, &err), &err);
+    const char *plan = sol.plan_json ? sol.plan_json : "";
+    /* Light 0 above the table may be hidden from both grids (its box with
+     * either holds the table); light 1 only from "under"; light 2, below the
+     * table, from neither. */
+#define SHADOWED "exact, one shadow ray per point: surfaces may come between this light and the grid"
+#define CLEAR "exact, no shadow rays: no surface can come between this light and the grid"
+#define LIGHT(k, under, aside) \
+    "{\"light\":\"luminaires[" #k "]\",\"kind\":\"point\",\"grids\":{\"under\":\"" under "\",\"aside\":\"" aside "\"}}"
+    CHECK_MSG(strstr(plan, "\"direct\":[" LIGHT(0, SHADOWED, SHADOWED) "," LIGHT(1, SHADOWED, CLEAR) ","
+                           LIGHT(2, CLEAR, CLEAR) "]") != NULL,
+              "plan: %s", plan);
+#undef LIGHT
+#undef CLEAR
+#undef SHADOWED
+    cdl_solution_release(&sol);
+    cdl_scene_release(scene);
+}
+
 int main(void)
 {
+    test_plan_lights_by_grid();
     test_polygon_grid_too_fine();
     test_flux_overflow();
     test_light_on_grid_point();
