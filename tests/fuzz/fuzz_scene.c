@@ -4,8 +4,8 @@
  * bytes of one attached file. Each input is written into a private
  * temporary folder (created once per process, removed at exit) as
  * scene.json; an attachment is written there as fuzz.obj, fuzz.off,
- * fuzz.ply, fuzz.ies and fuzz.ldt, so a scene can name it as a mesh or a
- * photometric file. The folder also holds copies of the project's fixture
+ * fuzz.ply, fuzz.ies, fuzz.ldt and fuzz.exr, so a scene can name it as a
+ * mesh, a photometric file or an environment image. The folder also holds copies of the project's fixture
  * meshes and photometric files and a small sky.exr, so the seed scenes'
  * relative paths resolve.
  *
@@ -300,7 +300,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
     write_file(work_dir, "scene.json", data, scene_size);
     if (attachment) {
-        static const char *const names[] = {"fuzz.obj", "fuzz.off", "fuzz.ply", "fuzz.ies", "fuzz.ldt"};
+        static const char *const names[] = {"fuzz.obj", "fuzz.off", "fuzz.ply", "fuzz.ies", "fuzz.ldt", "fuzz.exr"};
         for (size_t i = 0; i < sizeof names / sizeof names[0]; ++i)
             write_file(work_dir, names[i], attachment, attachment_size);
     }
