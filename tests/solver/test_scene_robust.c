@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include "check.h"
+#include "radiometry/vec3.h"
 #include "solver/scene.h"
 #include "solver/solve.h"
 
@@ -336,8 +337,33 @@ static void test_plan_lights_by_grid(void)
     cdl_scene_release(scene);
 }
 
+/* A vector shorter than the smallest normal double (1e-320) normalised to
+ * NaN (its reciprocal length overflows), so a grid "n": [1e-320, 0, 0] or a
+ * rect grid of u, v = 1e-160 (u x v = 1e-320) wrote NaN normals, refused as
+ * an internal error at the CSV writer. */
+static void test_tiny_vectors(void)
+{
+    cdl_vec3 a = cdl_vec3_normalize(cdl_vec3_make(1e-320, 0, 0));
+    CHECK(a.x == 1.0 && a.y == 0.0 && a.z == 0.0);
+    /* Subnormal components keep about 1e-14 of relative precision here. */
+    cdl_vec3 b = cdl_vec3_normalize(cdl_vec3_make(-3e-310, 4e-310, 0));
+    CHECK_REL(b.x, -0.6, 1e-10);
+    CHECK_REL(b.y, 0.8, 1e-10);
+    cdl_vec3 z = cdl_vec3_normalize(cdl_vec3_make(0, 0, 0));
+    CHECK(z.x == 0.0 && z.y == 0.0 && z.z == 0.0);
+    double E[2], se[2];
+    solve_grid("{\"version\": 1, \"luminaires\": [{\"type\": \"point\", \"position\": [0,0,2], \"intensity_cd\": 100}], "
+               "\"grids\": [{\"name\": \"g\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1e-320]}, "
+               "{\"p\": [0,0,0], \"n\": [1e-320,0,0]}]}]}",
+               E, se, 2);
+    /* Facing the light: 100 cd / (2 m)^2; edge-on to it: 0. */
+    CHECK_REL(E[0], 25.0, 1e-12);
+    CHECK(E[1] == 0.0);
+}
+
 int main(void)
 {
+    test_tiny_vectors();
     test_plan_lights_by_grid();
     test_polygon_grid_too_fine();
     test_flux_overflow();
