@@ -368,8 +368,15 @@ cdl_status cdl_scene_json_read_span(const cdl_scene_parse *ctx, const cJSON *obj
     if (cdl_scene_json_read_vec3(ctx, cdl_scene_json_member(object, "u"), p, 1, 1, u) != CDL_OK) return CDL_ERR_INPUT;
     cdl_scene_json_path_key(p, path, "v");
     if (cdl_scene_json_read_vec3(ctx, cdl_scene_json_member(object, "v"), p, 1, 1, v) != CDL_OK) return CDL_ERR_INPUT;
-    double sine = cdl_vec3_length(cdl_vec3_cross(*u, *v)) / (cdl_vec3_length(*u) * cdl_vec3_length(*v));
+    /* The angle from the unit vectors: |u| |v| and u x v of tiny vectors
+     * underflow, which made perpendicular 1e-200 m spans "parallel". */
+    double sine = cdl_vec3_length(cdl_vec3_cross(cdl_vec3_normalize(*u), cdl_vec3_normalize(*v)));
     if (!(sine > PARALLEL_SINE)) return cdl_scene_json_failf(ctx, p, "a vector not parallel to u", "one parallel to u");
+    double area = cdl_vec3_length(cdl_vec3_cross(*u, *v));
+    if (!(area > 0.0))
+        return cdl_scene_json_failf(ctx, path, "u and v spanning an area a double can hold (|u x v| > 0)",
+                                    "|u| = %g m and |v| = %g m, whose area underflows to 0", cdl_vec3_length(*u),
+                                    cdl_vec3_length(*v));
     return CDL_OK;
 }
 

@@ -361,8 +361,27 @@ static void test_tiny_vectors(void)
     CHECK(E[1] == 0.0);
 }
 
+/* Perpendicular spans of 1e-200 m were refused as "v: expected a vector
+ * not parallel to u, found one parallel to u" (|u| |v| underflowed and the
+ * sine became 0 / 0); the real problem is an area below the double range. */
+static void test_tiny_spans(void)
+{
+    check_refused("{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [0,0,1], \"u\": [1e-200,0,0], "
+                  "\"v\": [0,1e-200,0], \"reflectance\": 0}], " POINTS_GRID "}",
+                  "robust.json: surfaces[0]: expected u and v spanning an area a double can hold (|u x v| > 0), found "
+                  "|u| = 1e-200 m and |v| = 1e-200 m, whose area underflows to 0");
+    check_refused("{\"version\": 1, \"grids\": [{\"name\": \"g\", \"type\": \"rect\", \"origin\": [0,0,0], "
+                  "\"u\": [0,0,1e-200], \"v\": [0,1e-200,0], \"nu\": 1, \"nv\": 1}]}",
+                  "robust.json: grids[0]: expected u and v spanning an area a double can hold");
+    /* Truly parallel spans keep their message. */
+    check_refused("{\"version\": 1, \"grids\": [{\"name\": \"g\", \"type\": \"rect\", \"origin\": [0,0,0], "
+                  "\"u\": [1,0,0], \"v\": [-3,0,0], \"nu\": 1, \"nv\": 1}]}",
+                  "robust.json: grids[0].v: expected a vector not parallel to u, found one parallel to u");
+}
+
 int main(void)
 {
+    test_tiny_spans();
     test_tiny_vectors();
     test_plan_lights_by_grid();
     test_polygon_grid_too_fine();
