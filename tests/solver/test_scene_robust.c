@@ -51,44 +51,8 @@ static void test_sample_limits(void)
     cdl_scene_release(s);
 }
 
-/* Solve a scene (one thread) and return E at point `index` of grid 0. */
-static double solve_point(const char *json, size_t index)
-{
-    cdl_scene *scene = load(json);
-    if (!scene) return NAN;
-    cdl_solve_options so = CDL_SOLVE_OPTIONS_DEFAULT;
-    so.threads = 1;
-    cdl_solution sol;
-    cdl_error err;
-    cdl_error_clear(&err);
-    double E = NAN;
-    cdl_status st = cdl_solve_scene(scene, &so, &sol, &err);
-    CHECK_OK(st, &err);
-    if (st == CDL_OK) {
-        if (index < sol.grids[0].grid.count) E = sol.grids[0].E[index];
-        cdl_solution_release(&sol);
-    }
-    cdl_scene_release(scene);
-    return E;
-}
-
-/* A spot narrower than about 1e-8 rad: cos(half_angle) rounds to 1, and the
- * solver's emission-cone culling dropped even the points on its axis (E = 0
- * instead of I / d^2). The spot itself is exact on its axis: E = I0 / d^2. */
-static void test_narrow_spot(void)
-{
-#define NARROW_SPOT(point)                                                                                    \
-    "{\"version\": 1, \"luminaires\": [{\"type\": \"spot\", \"position\": [0,0,3], \"direction\": [0,0,-1], " \
-    "\"intensity_cd\": 1000, \"half_angle\": 1e-7}], \"grids\": [{\"name\": \"g\", \"type\": \"points\", "       \
-    "\"points\": [{\"p\": " point ", \"n\": [0,0,1]}]}]}"
-    /* On the axis: 1000 cd / (3 m)^2, to rounding. */
-    CHECK_REL(solve_point(NARROW_SPOT("[0,0,0]"), 0), 1000.0 / 9.0, 1e-12);
-    /* 1e-6 m off the axis at 3 m is 3.3e-7 rad, far outside the 1.7e-9 rad beam. */
-    CHECK(solve_point(NARROW_SPOT("[1e-6,0,0]"), 0) == 0.0);
-#undef NARROW_SPOT
-}
-
-/* Solve and return the whole solution's grid 0 E values through `E` (up to `n`). */
+/* Solve a scene (one thread); E and its standard error at the points of
+ * grid 0, which must have exactly n points. */
 static void solve_grid(const char *json, double *E, double *stderr_lx, size_t n)
 {
     for (size_t i = 0; i < n; ++i) E[i] = stderr_lx[i] = NAN;
@@ -112,6 +76,31 @@ static void solve_grid(const char *json, double *E, double *stderr_lx, size_t n)
     cdl_scene_release(scene);
 }
 
+/* E at the only point of grid 0. */
+static double solve_point(const char *json)
+{
+    double E, se;
+    solve_grid(json, &E, &se, 1);
+    return E;
+}
+
+/* A spot narrower than about 1e-8 rad: cos(half_angle) rounds to 1, and the
+ * solver's emission-cone culling dropped even the points on its axis (E = 0
+ * instead of I / d^2). The spot itself is exact on its axis: E = I0 / d^2. */
+static void test_narrow_spot(void)
+{
+#define NARROW_SPOT(point)                                                                                    \
+    "{\"version\": 1, \"luminaires\": [{\"type\": \"spot\", \"position\": [0,0,3], \"direction\": [0,0,-1], " \
+    "\"intensity_cd\": 1000, \"half_angle\": 1e-7}], \"grids\": [{\"name\": \"g\", \"type\": \"points\", "       \
+    "\"points\": [{\"p\": " point ", \"n\": [0,0,1]}]}]}"
+    /* On the axis: 1000 cd / (3 m)^2, to rounding. */
+    CHECK_REL(solve_point(NARROW_SPOT("[0,0,0]")), 1000.0 / 9.0, 1e-12);
+    /* 1e-6 m off the axis at 3 m is 3.3e-7 rad, far outside the 1.7e-9 rad beam. */
+    CHECK(solve_point(NARROW_SPOT("[1e-6,0,0]")) == 0.0);
+#undef NARROW_SPOT
+}
+
+
 /* "Can a surface come between this light and this grid?" was answered with
  * the box around both, shrunk by a tolerance so that the floor under a grid
  * does not count. A box that is flat along an axis - a probe straight below
@@ -124,7 +113,7 @@ static void test_flat_light_grid_box(void)
         "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [-1,-1,0.05], \"u\": [2,0,0], \"v\": [0,2,0], "
         "\"reflectance\": 0}], \"luminaires\": [{\"type\": \"point\", \"position\": [0,0,3], \"intensity_cd\": 1000}], "
         POINTS_GRID "}";
-    CHECK(solve_point(probe, 0) == 0.0);
+    CHECK(solve_point(probe) == 0.0);
     /* A wall (x = 1) between a point light at 0.8 m and a grid level with
      * it (z = 0.8 m), whose points face the light. */
     const char *level =
@@ -256,7 +245,7 @@ static void test_light_on_grid_point(void)
                         "illuminance beyond the range of a double: ",
                         "luminaires[0] is too close to the point (or too bright)");
     /* E = 100 cd / (1e-150 m)^2 = 1e302 lx, to rounding. */
-    CHECK_REL(solve_point(NEAR_LIGHT("1e-150"), 0), 1e302, 1e-12);
+    CHECK_REL(solve_point(NEAR_LIGHT("1e-150")), 1e302, 1e-12);
 #undef NEAR_LIGHT
 }
 
