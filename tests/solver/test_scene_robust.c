@@ -115,21 +115,19 @@ static void test_flat_light_grid_box(void)
         POINTS_GRID "}";
     CHECK(solve_point(probe) == 0.0);
     /* A wall (x = 1) between a point light at 0.8 m and a grid level with
-     * it (z = 0.8 m), whose points face the light. */
-    const char *level =
-        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [1,-1,0], \"u\": [0,2,0], \"v\": [0,0,2], "
-        "\"reflectance\": 0}], \"luminaires\": [{\"type\": \"point\", \"position\": [0,0,0.8], \"intensity_cd\": 1000}], "
-        "\"grids\": [{\"name\": \"g\", \"type\": \"rect\", \"origin\": [2,-0.5,0.8], \"u\": [1,0,0], \"v\": [0,1,0], "
-        "\"nu\": 2, \"nv\": 2, \"normal\": [-1,0,0]}]}";
+     * it (z = 0.8 m), whose points face the light; then without the wall. */
+#define LEVEL_SCENE(surfaces)                                                                                    \
+    "{\"version\": 1, " surfaces "\"luminaires\": [{\"type\": \"point\", \"position\": [0,0,0.8], "                  \
+    "\"intensity_cd\": 1000}], \"grids\": [{\"name\": \"g\", \"type\": \"rect\", \"origin\": [2,-0.5,0.8], "        \
+    "\"u\": [1,0,0], \"v\": [0,1,0], \"nu\": 2, \"nv\": 2, \"normal\": [-1,0,0]}]}"
     double E[4], se[4];
-    solve_grid(level, E, se, 4);
+    solve_grid(LEVEL_SCENE("\"surfaces\": [{\"type\": \"rect\", \"origin\": [1,-1,0], \"u\": [0,2,0], "
+                           "\"v\": [0,0,2], \"reflectance\": 0}], "),
+               E, se, 4);
     for (int i = 0; i < 4; ++i) CHECK_MSG(E[i] == 0.0, "point %d behind the wall: E = %g lx", i, E[i]);
     /* Without the wall the same points are lit: I cos / d^2 > 0. */
-    const char *open_level =
-        "{\"version\": 1, \"luminaires\": [{\"type\": \"point\", \"position\": [0,0,0.8], \"intensity_cd\": 1000}], "
-        "\"grids\": [{\"name\": \"g\", \"type\": \"rect\", \"origin\": [2,-0.5,0.8], \"u\": [1,0,0], \"v\": [0,1,0], "
-        "\"nu\": 2, \"nv\": 2, \"normal\": [-1,0,0]}]}";
-    solve_grid(open_level, E, se, 4);
+    solve_grid(LEVEL_SCENE(""), E, se, 4);
+#undef LEVEL_SCENE
     /* Point 0 at (2.25, -0.25, 0.8): d^2 = 5.125, cos = 2.25 / sqrt(5.125). */
     CHECK_REL(E[0], 1000.0 * 2.25 / pow(5.125, 1.5), 1e-12);
 }
