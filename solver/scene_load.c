@@ -569,7 +569,7 @@ cdl_status cdl_scene_load(const char *path, cdl_scene **out, cdl_error *err)
     *out = NULL;
     char *text = NULL;
     size_t size = 0;
-    cdl_status read = cdl_file_read_bytes(path, "scene file", CDL_SCENE_MAX_FILE_BYTES, &text, &size, err);
+    cdl_status read = cdl_file_read_bytes(path, "scene file", CDL_SCENE_MAX_JSON_BYTES, &text, &size, err);
     if (read != CDL_OK) return read;
     const char *nul = memchr(text, '\0', size);
     if (nul) {

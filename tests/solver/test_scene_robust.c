@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "check.h"
 #include "radiometry/vec3.h"
@@ -366,8 +367,31 @@ static void test_tiny_spans(void)
                   "robust.json: grids[0].v: expected a vector not parallel to u, found one parallel to u");
 }
 
+/* A scene file is parsed whole into JSON nodes, about 21 times its size
+ * in memory: the 1 GiB limit it shared with mesh files let a scene exhaust
+ * the memory of most machines. Scenes stop at 256 MiB, said before reading
+ * (a sparse file: no disk space used). */
+static void test_scene_file_size(void)
+{
+    const char *path = CANDELA_TEST_TMPDIR "/robust_huge_scene.json";
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f) return;
+    CHECK(ftruncate(fileno(f), (off_t)300 << 20) == 0);
+    fclose(f);
+    cdl_scene *scene = NULL;
+    cdl_error err;
+    cdl_error_clear(&err);
+    CHECK(cdl_scene_load(path, &scene, &err) == CDL_ERR_INPUT && scene == NULL);
+    CHECK_MSG(strstr(err.message, "robust_huge_scene.json: expected a scene file of at most 268435456 bytes, found "
+                                  "314572800 bytes") != NULL,
+              "message: %s", err.message);
+    unlink(path);
+}
+
 int main(void)
 {
+    test_scene_file_size();
     test_tiny_spans();
     test_tiny_vectors();
     test_plan_lights_by_grid();
