@@ -4,6 +4,7 @@
 #ifndef CANDELA_RADIOMETRY_VEC3_H
 #define CANDELA_RADIOMETRY_VEC3_H
 
+#include <float.h>
 #include <math.h>
 
 typedef struct cdl_vec3 { double x, y, z; } cdl_vec3;
@@ -29,11 +30,19 @@ static inline double cdl_vec3_length(cdl_vec3 a)
     double x = a.x / m, y = a.y / m, z = a.z / m;
     return m * sqrt(x * x + y * y + z * z);
 }
-/* Unit vector along a; the zero vector stays zero. */
+/* Unit vector along a; the zero vector stays zero. A length below the
+ * smallest normal double (subnormal components) has a reciprocal beyond the
+ * double range: such a vector is divided by its largest component first. */
 static inline cdl_vec3 cdl_vec3_normalize(cdl_vec3 a)
 {
     double len = cdl_vec3_length(a);
-    return len > 0.0 ? cdl_vec3_scale(a, 1.0 / len) : a;
+    if (!(len > 0.0)) return a;
+    if (len < DBL_MIN) {
+        double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+        a = cdl_vec3_make(a.x / m, a.y / m, a.z / m);
+        len = cdl_vec3_length(a);
+    }
+    return cdl_vec3_scale(a, 1.0 / len);
 }
 static inline double cdl_vec3_distance(cdl_vec3 a, cdl_vec3 b) { return cdl_vec3_length(cdl_vec3_sub(a, b)); }
 static inline int cdl_vec3_is_finite(cdl_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }

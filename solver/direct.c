@@ -69,9 +69,22 @@ void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points,
             cdl_vec3 lo = glo, hi = ghi;
             grow(&lo, &hi, light->bounds_lo);
             grow(&lo, &hi, light->bounds_hi);
+            double tol = fmin(region_tolerance(ctx, lo), region_tolerance(ctx, hi));
+            /* The test shrinks the box by tol so that surfaces which only
+             * touch it (the floor under a grid) do not count. Along an axis
+             * where the box is thinner than that (a probe straight below its
+             * luminaire, a grid level with it) shrinking would empty the box
+             * and hide every surface in between: widen such an axis to 3 tol
+             * either side of its middle first. */
+            double *axis_lo[3] = {&lo.x, &lo.y, &lo.z}, *axis_hi[3] = {&hi.x, &hi.y, &hi.z};
+            for (int a = 0; a < 3; ++a)
+                if (*axis_hi[a] - *axis_lo[a] < 4.0 * tol) {
+                    double mid = 0.5 * (*axis_lo[a] + *axis_hi[a]);
+                    *axis_lo[a] = fmin(*axis_lo[a], mid - 3.0 * tol);
+                    *axis_hi[a] = fmax(*axis_hi[a], mid + 3.0 * tol);
+                }
             cdl_convex_region box;
             cdl_region_box(&box, lo, hi);
-            double tol = fmin(region_tolerance(ctx, lo), region_tolerance(ctx, hi));
             may_occlude = cdl_occluder_index_intersects(ctx->occluders, &box, tol, light->owner);
         }
         if (delta)
@@ -115,11 +128,26 @@ static int shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_v
     return cdl_ray_scene_occluded(ctx->rays, o, dir, t_near, t_far);
 }
 
-/* Is the region between p and the whole of the light clear of surfaces? */
+/* Move planes first .. first + count - 1 of a region outward by tol, so
+ * that the index's shrink by tol leaves them where they were. */
+static void unshrink_planes(cdl_convex_region *region, int first, int count, double tol)
+{
+    for (int i = first; i < first + count && i < region->plane_count; ++i) region->planes[i].offset += tol;
+}
+
+/* Is the region between p and the whole of the light clear of surfaces?
+ * The index shrinks every plane by tol, so that the surface p lies on and
+ * the one the emitter is set into do not count. The side planes of a
+ * pyramid meet at p, though: shrunk, they cut away everything within about
+ * tol x distance / emitter size of p, and all of a pyramid thinner than
+ * 2 tol (a small emitter), so a table just above a floor point went unseen.
+ * The sides are therefore kept where they are; only the caps (the plane
+ * of p, the plane of the emitter) shrink. */
 static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_vec3 p, cdl_vec3 n)
 {
     cdl_convex_region region;
     region.plane_count = 0;
+    double tol = region_tolerance(ctx, p);
     if (light->is_environment) {
         /* The open half-space above the receiving plane (and above the
          * horizon for an upper-hemisphere sky): {x : -n.x <= -n.p}. */
@@ -127,12 +155,14 @@ static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_l
         if (light->upper_only) cdl_region_add(&region, cdl_vec3_neg(light->up), -cdl_vec3_dot(light->up, p));
     } else if (light->outline_is_sphere) {
         cdl_region_sphere_view(&region, p, light->sphere_center, light->sphere_radius);
+        if (region.plane_count == CDL_REGION_SPHERE_SIDES + 1) unshrink_planes(&region, 0, CDL_REGION_SPHERE_SIDES, tol);
         cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
     } else {
         if (!cdl_region_pyramid(&region, p, light->outline, light->outline_count)) return 0;
+        unshrink_planes(&region, 1, light->outline_count, tol);
         cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
     }
-    return !cdl_occluder_index_intersects(ctx->occluders, &region, region_tolerance(ctx, p), light->owner);
+    return !cdl_occluder_index_intersects(ctx->occluders, &region, tol, light->owner);
 }
 
 /* Stratified Monte-Carlo over the light: the mean of f = L cos / pdf over
@@ -141,12 +171,13 @@ static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_l
 static int sample_light(const cdl_direct_context *ctx, const cdl_direct_light *light, uint64_t stream, cdl_vec3 p,
                         cdl_vec3 n, int hidden_only, double *mean, double *variance, cdl_direct_sample_stats *stats)
 {
-    int k = (int)ceil(sqrt((double)(ctx->samples > 0 ? ctx->samples : 1)));
-    int count = k * k;
+    /* 64-bit counts: k x k overflows an int from 2^31 samples on. */
+    int64_t k = (int64_t)ceil(sqrt((double)(ctx->samples > 0 ? ctx->samples : 1)));
+    double count = (double)(k * k);
     cdl_rng_key key = {ctx->seed, stream};
     double sum = 0.0, sum2 = 0.0;
-    for (int j = 0; j < k; ++j)
-        for (int i = 0; i < k; ++i) {
+    for (int64_t j = 0; j < k; ++j)
+        for (int64_t i = 0; i < k; ++i) {
             double u[2];
             cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
             cdl_light_sample s;
@@ -371,15 +402,15 @@ double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stre
                                     cdl_direct_sample_stats *stats)
 {
     if (!ctx->geometry) return 1.0;
-    int k = (int)ceil(sqrt((double)(ctx->ao_samples > 0 ? ctx->ao_samples : 1)));
+    int64_t k = (int64_t)ceil(sqrt((double)(ctx->ao_samples > 0 ? ctx->ao_samples : 1)));
     cdl_rng_key key = {ctx->seed, cdl_rng_stream_id(stream, 0x616f /* "ao" */, 0)};
     cdl_frame frame = cdl_frame_from_normal(n);
-    int open = 0;
-    for (int j = 0; j < k; ++j)
-        for (int i = 0; i < k; ++i) {
+    int64_t open = 0;
+    for (int64_t j = 0; j < k; ++j)
+        for (int64_t i = 0; i < k; ++i) {
             double u[2];
             cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
-            cdl_vec3 w = cdl_frame_to_world(&frame, cdl_sample_cosine_hemisphere_stratified(j, i, k, k, u[0], u[1]));
+            cdl_vec3 w = cdl_frame_to_world(&frame, cdl_sample_cosine_hemisphere_stratified((int)j, (int)i, (int)k, (int)k, u[0], u[1]));
             if (!shadowed(ctx, p, n, w, INFINITY, stats)) open++;
         }
     return (double)open / (double)(k * k);

@@ -1,11 +1,13 @@
 /* exr_image.c - OpenEXR Core reading and writing of float images. */
 #include "solver/exr_image.h"
 
+#include <errno.h>
 #include <openexr.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* The library must not print: errors are reported through return codes,
  * which we turn into messages naming the file. */
@@ -142,6 +144,16 @@ static exr_result_t decode_chunk(exr_const_context_t ctx, const exr_chunk_info_t
 cdl_status cdl_exr_read(const char *path, cdl_exr_image *out, cdl_error *err)
 {
     memset(out, 0, sizeof *out);
+    /* Say what is wrong with the path itself in words, not as OpenEXR's
+     * stream errors ("Error reading from stream" for a folder). */
+    struct stat info;
+    if (stat(path, &info) != 0)
+        return cdl_error_set(err, CDL_ERR_INPUT, "%s: cannot open the OpenEXR image: %s", path, strerror(errno));
+    if (!S_ISREG(info.st_mode))
+        return cdl_error_set(err, CDL_ERR_INPUT, "%s: expected an OpenEXR image, found a directory or device", path);
+    FILE *probe = fopen(path, "rb");
+    if (!probe) return cdl_error_set(err, CDL_ERR_INPUT, "%s: cannot open the OpenEXR image: %s", path, strerror(errno));
+    fclose(probe);
     exr_context_initializer_t init = quiet_initializer();
     exr_context_t ctx = NULL;
     exr_result_t rv = exr_start_read(&ctx, path, &init);

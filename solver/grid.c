@@ -128,9 +128,11 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
     double estimate = POINTS_PER_SQUARE_SPACING * outer_area / (p * p);
     if (estimate > (double)CDL_GRID_MAX_POINTS)
         return cdl_error_set(err, CDL_ERR_INPUT,
-                             "%s.spacing: expected a spacing giving at most %d points, found %.6g m (about %.3g "
+                             "%s.spacing: expected a spacing giving at most %d points, found %s%.6g m (about %.3g "
                              "points over %.6g m^2)",
-                             spec->json_path, CDL_GRID_MAX_POINTS, p, estimate, outer_area);
+                             spec->json_path, CDL_GRID_MAX_POINTS,
+                             spec->spacing > 0.0 ? "" : "\"auto\", the EN 12464-1 spacing capped at ", p, estimate,
+                             outer_area);
 
     /* A mesh has about half as many vertices as triangles: allow four times
      * the estimate, plus room for grading down to small features, then stop

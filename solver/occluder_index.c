@@ -333,7 +333,7 @@ void cdl_region_sphere_view(cdl_convex_region *r, cdl_vec3 apex, cdl_vec3 center
      * through the apex. A cone direction cos(a) axis + sin(a) u(psi) gives
      * m . w = sin(a) cos(a) (cos(psi - psi_k) - 1) <= 0, zero only along
      * u_k: every plane touches the cone along one line and contains it. */
-    const int sides = 16;
+    const int sides = CDL_REGION_SPHERE_SIDES;
     cdl_vec3 e1 = fabs(a.x) < 0.9 ? cdl_vec3_normalize(cdl_vec3_cross(a, cdl_vec3_make(1, 0, 0)))
                                   : cdl_vec3_normalize(cdl_vec3_cross(a, cdl_vec3_make(0, 1, 0)));
     cdl_vec3 e2 = cdl_vec3_cross(a, e1);

@@ -73,12 +73,16 @@ void cdl_region_box(cdl_convex_region *region, cdl_vec3 lo, cdl_vec3 hi);
 /* The pyramid from apex p to a convex planar polygon (vertices in order,
  * either orientation): every segment from p to a point of the polygon lies
  * inside. Returns 0 (region unusable) if p lies in the polygon's plane or the
- * polygon has more than CDL_REGION_MAX_PLANES - 1 edges. */
+ * polygon has more than CDL_REGION_MAX_PLANES - 1 edges. Plane 0 is the
+ * polygon's plane; planes 1 to count are the sides, through the apex. */
 int cdl_region_pyramid(cdl_convex_region *region, cdl_vec3 apex, const cdl_vec3 *polygon, int count);
 
 /* The region swept by segments from p to the part of a sphere visible from
  * p (a circumscribed pyramid of the tangent cone, capped at the sphere's
- * centre plane); if p is inside the sphere, the sphere's bounding box. */
+ * centre plane); if p is inside the sphere, the sphere's bounding box (6
+ * planes). Otherwise planes 0 to CDL_REGION_SPHERE_SIDES - 1 are the sides,
+ * through the apex, and the last plane is the cap. */
+#define CDL_REGION_SPHERE_SIDES 16
 void cdl_region_sphere_view(cdl_convex_region *region, cdl_vec3 apex, cdl_vec3 center, double radius);
 
 /* Append a half-space {x : normal . x <= offset}; returns 0 if full. */

@@ -156,6 +156,12 @@ typedef struct cdl_solver_settings {
     int ao_samples;                      /* 0 = from quality */
 } cdl_solver_settings;
 
+/* Most samples per point the scene may ask for (direct_samples, ao_samples):
+ * 2^24, 4096 times the "reference" quality's AO count and far beyond any
+ * converged result (seconds per point and light); the stratified square
+ * k x k of samples then stays far inside an int. */
+#define CDL_SCENE_MAX_SAMPLES 16777216
+
 const char *cdl_method_name(cdl_method method);
 const char *cdl_quality_name(cdl_quality quality);
 

@@ -400,6 +400,13 @@ cdl_status cdl_scene_geometry_build(const cdl_scene *scene, cdl_scene_geometry *
         cdl_geometry_piece *p = &g->pieces[first].piece;
         p->luminance_cd_m2 =
             l->maintenance_factor * (l->has_luminance ? l->luminance_cd_m2 : l->flux_lm / (CDL_PI * p->area));
+        if (!isfinite(p->luminance_cd_m2)) {
+            st = cdl_error_set(err, CDL_ERR_INPUT,
+                               "%s: %s.flux_lm: expected a flux that spreads over the shape's %g m^2 with a finite "
+                               "luminance (flux / (pi area)), found %g lm",
+                               file, l->json_path, p->area, l->flux_lm);
+            break;
+        }
     }
     if (st == CDL_OK) st = cdl_ray_scene_commit(g->rays, err);
     if (st != CDL_OK) {

@@ -191,7 +191,10 @@ static cdl_status read_environment_image(const cdl_scene *scene, const cdl_lumin
 {
     cdl_exr_image img;
     cdl_status st = cdl_exr_read(spec->file, &img, err);
-    if (st != CDL_OK) return fail_at(err, scene, spec->json_path, st);
+    if (st != CDL_OK) {
+        cdl_error_prefix(err, "%s: %s.file: ", scene->path, spec->json_path);
+        return st;
+    }
     const float *Y = cdl_exr_image_channel(&img, "Y");
     const float *R = cdl_exr_image_channel(&img, "R"), *G = cdl_exr_image_channel(&img, "G"),
                 *B = cdl_exr_image_channel(&img, "B");
@@ -246,11 +249,18 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
     cdl_direct_light light = *proto;
     double cos_min;
     if (cdl_emitter_emission_cone(e, &light.cone_position, &light.cone_axis, &cos_min)) {
-        light.has_cone = 1;
-        light.cone_angle = acos(fmax(-1.0, fmin(1.0, cos_min)));
-        light.cone_cos = cos_min;
-        light.cone_sin = sin(light.cone_angle);
-        light.cone_cos2 = cos_min * cos_min;
+        /* The solver culls with cosines computed in double precision, a few
+         * ulps off at the cone's edge: widen the cone by 8 ulps of 1 so that
+         * rounding never culls a lit point. Without it a beam narrower than
+         * about 1e-8 rad, whose cosine rounds to 1, culled even its own axis. */
+        double c = fmin(1.0, cos_min) - 8.0 * DBL_EPSILON;
+        if (c > -1.0) {
+            light.has_cone = 1;
+            light.cone_angle = acos(c);
+            light.cone_cos = c;
+            light.cone_sin = sin(light.cone_angle);
+            light.cone_cos2 = c * c;
+        }
     }
     cdl_direct_light *nl = realloc(L->lights, (L->count + 1) * sizeof *nl);
     if (!nl) {
@@ -323,6 +333,13 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
                 break;
             }
             p.intensity = cdl_candelas(sp->flux_lm / per_cd);
+            if (!isfinite(p.intensity.cd)) {
+                st = cdl_error_set(err, CDL_ERR_INPUT,
+                                   "flux_lm: expected a flux this beam can carry with a finite intensity (%g lm per "
+                                   "cd), found %g lm",
+                                   per_cd, sp->flux_lm);
+                break;
+            }
         } else {
             p.intensity = cdl_candelas(sp->intensity_cd);
         }

@@ -403,9 +403,10 @@ static cdl_status read_settings(const cdl_scene_parse *ctx, const cJSON *node, c
         /* 2^53: every integer up to it is exact in a JSON (double) number. */
         cdl_scene_json_read_integer(ctx, field(node, path, "seed", p), p, 0, 9007199254740992.0, 0, &seed) != CDL_OK ||
         cdl_scene_json_read_integer(ctx, field(node, path, "threads", p), p, 0, 4096, 0, &threads) != CDL_OK ||
-        cdl_scene_json_read_integer(ctx, field(node, path, "direct_samples", p), p, 1, 2147483647.0, 0, &direct) !=
-            CDL_OK ||
-        cdl_scene_json_read_integer(ctx, field(node, path, "ao_samples", p), p, 1, 2147483647.0, 0, &ao) != CDL_OK)
+        cdl_scene_json_read_integer(ctx, field(node, path, "direct_samples", p), p, 1, CDL_SCENE_MAX_SAMPLES, 0,
+                                    &direct) != CDL_OK ||
+        cdl_scene_json_read_integer(ctx, field(node, path, "ao_samples", p), p, 1, CDL_SCENE_MAX_SAMPLES, 0, &ao) !=
+            CDL_OK)
         return CDL_ERR_INPUT;
     out->method = (cdl_method)method;
     out->quality = (cdl_quality)quality;
@@ -568,7 +569,7 @@ cdl_status cdl_scene_load(const char *path, cdl_scene **out, cdl_error *err)
     *out = NULL;
     char *text = NULL;
     size_t size = 0;
-    cdl_status read = cdl_file_read_bytes(path, "scene file", CDL_SCENE_MAX_FILE_BYTES, &text, &size, err);
+    cdl_status read = cdl_file_read_bytes(path, "scene file", CDL_SCENE_MAX_JSON_BYTES, &text, &size, err);
     if (read != CDL_OK) return read;
     const char *nul = memchr(text, '\0', size);
     if (nul) {

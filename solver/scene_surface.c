@@ -336,6 +336,18 @@ static cdl_status read_mesh(const cdl_scene_parse *ctx, const cJSON *node, const
     cdl_mesh_data mesh;
     if (cdl_mesh_file_read(out->file, &mesh, ctx->err) != CDL_OK)
         return cdl_error_prefix(ctx->err, "%s: %s: ", ctx->file, p);
+    /* The same bound as coordinates written in the scene: beyond it areas
+     * overflow and the ray scene's single precision loses the room. */
+    for (size_t i = 0; i < 3 * mesh.vertex_count; ++i)
+        if (fabs(mesh.vertices[i]) > CDL_SCENE_MAX_MAGNITUDE) {
+            const double *v = &mesh.vertices[i - i % 3];
+            cdl_status st = cdl_error_set(ctx->err, CDL_ERR_INPUT,
+                                          "%s: %s: %s: vertex %zu (from 1, in file order): expected coordinates of "
+                                          "magnitude at most %g m, found [%.10g, %.10g, %.10g]",
+                                          ctx->file, p, out->file, i / 3 + 1, CDL_SCENE_MAX_MAGNITUDE, v[0], v[1], v[2]);
+            cdl_mesh_data_release(&mesh);
+            return st;
+        }
     out->mesh_vertices = mesh.vertices;
     out->mesh_vertex_count = mesh.vertex_count;
     out->mesh_triangles = mesh.triangles;
@@ -356,8 +368,15 @@ cdl_status cdl_scene_json_read_span(const cdl_scene_parse *ctx, const cJSON *obj
     if (cdl_scene_json_read_vec3(ctx, cdl_scene_json_member(object, "u"), p, 1, 1, u) != CDL_OK) return CDL_ERR_INPUT;
     cdl_scene_json_path_key(p, path, "v");
     if (cdl_scene_json_read_vec3(ctx, cdl_scene_json_member(object, "v"), p, 1, 1, v) != CDL_OK) return CDL_ERR_INPUT;
-    double sine = cdl_vec3_length(cdl_vec3_cross(*u, *v)) / (cdl_vec3_length(*u) * cdl_vec3_length(*v));
+    /* The angle from the unit vectors: |u| |v| and u x v of tiny vectors
+     * underflow, which made perpendicular 1e-200 m spans "parallel". */
+    double sine = cdl_vec3_length(cdl_vec3_cross(cdl_vec3_normalize(*u), cdl_vec3_normalize(*v)));
     if (!(sine > PARALLEL_SINE)) return cdl_scene_json_failf(ctx, p, "a vector not parallel to u", "one parallel to u");
+    double area = cdl_vec3_length(cdl_vec3_cross(*u, *v));
+    if (!(area > 0.0))
+        return cdl_scene_json_failf(ctx, path, "u and v spanning an area a double can hold (|u x v| > 0)",
+                                    "|u| = %g m and |v| = %g m, whose area underflows to 0", cdl_vec3_length(*u),
+                                    cdl_vec3_length(*v));
     return CDL_OK;
 }
 

@@ -5,35 +5,61 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "solver/atomic_file.h"
 #include "solver/grid_result.h"
 #include "solver/solve.h"
 
-/* mkdir -p */
-static cdl_status make_directories(const char *path, cdl_error *err)
+/* Errors of the file system that are the machine's, not the path's. */
+static cdl_status folder_failure_status(int code)
 {
-    size_t n = strlen(path);
+    return code == ENOSPC || code == EIO || code == ENOMEM || code == EDQUOT ? CDL_ERR_INTERNAL : CDL_ERR_INPUT;
+}
+
+/* What a path that is not a folder is, for messages. */
+static const char *kind_of(const struct stat *sb)
+{
+    return S_ISREG(sb->st_mode) ? "a file" : "something that is not a folder";
+}
+
+cdl_status cdl_solution_prepare_folder(const char *out_dir, cdl_error *err)
+{
+    if (!out_dir || !out_dir[0])
+        return cdl_error_set(err, CDL_ERR_INPUT, "expected a folder for the results, found an empty name");
+    size_t n = strlen(out_dir);
     char *buf = malloc(n + 1);
     if (!buf) return cdl_error_out_of_memory(err);
-    memcpy(buf, path, n + 1);
-    for (size_t i = 1; i <= n; ++i) {
+    memcpy(buf, out_dir, n + 1);
+    cdl_status st = CDL_OK;
+    struct stat sb;
+    /* mkdir -p, one component at a time; an existing component must be a folder. */
+    for (size_t i = 1; i <= n && st == CDL_OK; ++i) {
         if (buf[i] != '/' && buf[i] != '\0') continue;
         char saved = buf[i];
         buf[i] = '\0';
-        if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
-            cdl_status st = cdl_error_set(err, CDL_ERR_INTERNAL, "%s: cannot create folder: %s", buf, strerror(errno));
-            free(buf);
-            return st;
+        if (mkdir(buf, 0777) != 0) {
+            int code = errno;
+            if (code != EEXIST)
+                st = cdl_error_set(err, folder_failure_status(code), "%s: cannot create the folder for the results%s%s: %s",
+                                   out_dir, i < n ? " at " : "", i < n ? buf : "", strerror(code));
+            else if (stat(buf, &sb) == 0 && !S_ISDIR(sb.st_mode))
+                st = cdl_error_set(err, CDL_ERR_INPUT, "%s: expected a folder for the results, found %s%s%s", out_dir,
+                                   kind_of(&sb), i < n ? " at " : "", i < n ? buf : "");
         }
         buf[i] = saved;
     }
-    struct stat sb;
-    cdl_status st = CDL_OK;
-    if (stat(path, &sb) != 0 || !S_ISDIR(sb.st_mode))
-        st = cdl_error_set(err, CDL_ERR_INTERNAL, "%s: not a folder", path);
     free(buf);
-    return st;
+    if (st != CDL_OK) return st;
+    if (stat(out_dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
+        return cdl_error_set(err, CDL_ERR_INPUT, "%s: expected a folder for the results, found something else", out_dir);
+    /* Find out now, not after a long solve, that nothing can be written there. */
+    if (access(out_dir, W_OK | X_OK) != 0) {
+        int code = errno;
+        return cdl_error_set(err, folder_failure_status(code), "%s: cannot write into the folder for the results: %s",
+                             out_dir, strerror(code));
+    }
+    return CDL_OK;
 }
 
 static char *join_path(const char *dir, const char *name, const char *ext)
@@ -100,7 +126,7 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
 cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, const char *out_dir,
                               const char *ocio_config, cdl_error *err)
 {
-    cdl_status st = make_directories(out_dir, err);
+    cdl_status st = cdl_solution_prepare_folder(out_dir, err);
     if (st != CDL_OK) return st;
     cdl_grid_stats *stats = calloc(sol->grid_count ? sol->grid_count : 1, sizeof *stats);
     if (!stats) return cdl_error_out_of_memory(err);

@@ -318,6 +318,38 @@ static cdl_status run_grid(grid_job *job, int threads, cdl_direct_sample_stats *
     return st;
 }
 
+/* ---- results a double cannot hold ------------------------------------------------ */
+
+/* A light closer to a grid point than a double's range allows (1e-200 m)
+ * makes I cos / d^2 infinite; a result file cannot hold that. Say which
+ * point and which light, as bad input, instead of failing at writing. */
+static cdl_status check_finite(const cdl_scene *scene, const cdl_scene_lights *lights, size_t g,
+                               const cdl_grid_solution *gs, cdl_error *err)
+{
+    const cdl_grid_spec *spec = &scene->grids[g];
+    for (size_t i = 0; i < gs->grid.count; ++i) {
+        if (isfinite(gs->E[i]) && isfinite(gs->E_stderr[i])) continue;
+        cdl_vec3 p = gs->grid.points[i], n = gs->grid.normals[i];
+        const char *culprit = NULL;
+        for (size_t l = 0; l < lights->count && !culprit; ++l) {
+            cdl_illuminance E;
+            if (cdl_emitter_exact_illuminance(lights->emitters[l], p, n, &E, NULL) == CDL_OK && !isfinite(E.lx))
+                culprit = lights->lights[l].label;
+        }
+        const char *what = isfinite(gs->E[i]) ? "its standard error" : "the illuminance";
+        if (culprit)
+            return cdl_error_set(err, CDL_ERR_INPUT,
+                                 "%s: %s (%s) point %zu at [%.10g, %.10g, %.10g]: expected a finite illuminance, found "
+                                 "%s beyond the range of a double: %s is too close to the point (or too bright)",
+                                 scene->path, spec->json_path, spec->name, i, p.x, p.y, p.z, what, culprit);
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "%s: %s (%s) point %zu at [%.10g, %.10g, %.10g]: expected a finite illuminance, found %s "
+                             "beyond the range of a double: a light is too close to the point (or too bright)",
+                             scene->path, spec->json_path, spec->name, i, p.x, p.y, p.z, what);
+    }
+    return CDL_OK;
+}
+
 /* ---- the solve ------------------------------------------------------------------ */
 
 /* A point's rays start one epsilon off the surface it faces (ray_offsets in
@@ -385,6 +417,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     cdl_scene_lights lights;
     memset(&lights, 0, sizeof lights);
     cdl_light_strategy *strategies = NULL;
+    cJSON **plan_grids = NULL;
 
     if (opts.progress) opts.progress(opts.progress_user, "geometry", 0, 1);
     st = cdl_scene_geometry_build(scene, &geometry, err);
@@ -411,11 +444,18 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     ctx.log = opts.ray_log;
 
     cJSON *direct = cJSON_AddArrayToObject(plan, "direct");
+    /* Each light's "grids" object, kept at hand: looking it up in the array
+     * for every grid cost lights^2 x grids (minutes for thousands of each). */
+    plan_grids = calloc(lights.count ? lights.count : 1, sizeof *plan_grids);
+    if (!plan_grids) {
+        st = cdl_error_out_of_memory(err);
+        goto fail;
+    }
     for (size_t l = 0; l < lights.count; ++l) {
         cJSON *item = cJSON_CreateObject();
         cJSON_AddStringToObject(item, "light", lights.lights[l].label);
         cJSON_AddStringToObject(item, "kind", lights.kinds[l]);
-        cJSON_AddObjectToObject(item, "grids");
+        plan_grids[l] = cJSON_AddObjectToObject(item, "grids");
         cJSON_AddItemToArray(direct, item);
     }
     if (lights.count == 0)
@@ -438,15 +478,16 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         const cdl_grid_spec *spec = &scene->grids[g];
         cdl_grid_solution *gs = &out->grids[g];
         st = cdl_grid_build(spec, &gs->grid, err);
-        if (st != CDL_OK) goto fail;
+        if (st != CDL_OK) {
+            cdl_error_prefix(err, "%s: ", scene->path);
+            goto fail;
+        }
         st = alloc_grid_arrays(gs, spec->want_ao, err);
         if (st != CDL_OK) goto fail;
         if (ctx.occluders) find_edge_points(&ctx, gs);
         cdl_direct_plan_grid(&ctx, gs->grid.points, gs->grid.count, strategies);
-        for (size_t l = 0; l < lights.count; ++l) {
-            cJSON *grids = cJSON_GetObjectItemCaseSensitive(cJSON_GetArrayItem(direct, (int)l), "grids");
-            cJSON_AddStringToObject(grids, spec->name, cdl_light_strategy_name(strategies[l]));
-        }
+        for (size_t l = 0; l < lights.count; ++l)
+            cJSON_AddStringToObject(plan_grids[l], spec->name, cdl_light_strategy_name(strategies[l]));
         if (opts.progress) opts.progress(opts.progress_user, spec->name, 0, gs->grid.count);
         grid_job job;
         job.ctx = &ctx;
@@ -459,6 +500,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         double tc = now_seconds();
         st = run_grid(&job, threads, &total, err);
         out->compute_seconds += now_seconds() - tc;
+        if (st == CDL_OK) st = check_finite(scene, &lights, g, gs, err);
         if (st != CDL_OK) goto fail;
         if (opts.progress) opts.progress(opts.progress_user, spec->name, gs->grid.count, gs->grid.count);
     }
@@ -474,6 +516,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         goto fail;
     }
     cJSON_Delete(plan);
+    free(plan_grids);
     free(strategies);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);
@@ -483,6 +526,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
 
 fail:
     cJSON_Delete(plan);
+    free(plan_grids);
     free(strategies);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);

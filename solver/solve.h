@@ -59,9 +59,18 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                            cdl_error *err);
 void cdl_solution_release(cdl_solution *solution);
 
+/* Make out_dir ready for the results: created with its parents when
+ * missing, and writable. Callers run it before a long solve. CDL_ERR_INPUT
+ * when the path cannot be the folder (empty, an existing file or a file
+ * among its parents, no permission, a read-only file system), with a
+ * message naming the path and what was found; CDL_ERR_INTERNAL for the
+ * machine's failures (no space, I/O errors). */
+cdl_status cdl_solution_prepare_folder(const char *out_dir, cdl_error *err);
+
 /* Write NAME.csv, NAME.exr and NAME.png per grid (EXR and PNG for rect and
- * polygon grids) and summary.json into out_dir (created when missing).
- * ocio_config: the OpenColorIO config for the PNG maps. */
+ * polygon grids) and summary.json into out_dir (prepared as by
+ * cdl_solution_prepare_folder). ocio_config: the OpenColorIO config for the
+ * PNG maps. */
 cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *solution, const char *out_dir,
                               const char *ocio_config, cdl_error *err);
 

@@ -40,8 +40,9 @@ static void print_help(FILE *out)
           "                        with view \"False colour\")\n"
           "  --quiet               no progress on stderr\n"
           "\n"
-          "exit status: 0 success, 1 bad scene or input file, 2 usage error,\n"
-          "3 internal or resource failure\n",
+          "exit status: 0 success, 1 bad scene, input file or output folder (not a\n"
+          "folder, cannot be created or written), 2 usage error, 3 internal or\n"
+          "resource failure (out of memory or disk space, I/O errors)\n",
           out);
 }
 
@@ -77,6 +78,10 @@ static int run(int argc, char **argv)
         fprintf(stderr, "candela solve: expected SCENE.json and -o OUTDIR\n(see 'candela solve --help')\n");
         return CDL_EXIT_USAGE;
     }
+    if (!out_opt->value[0]) {
+        fprintf(stderr, "candela solve: -o: expected a folder name, found an empty string\n(see 'candela solve --help')\n");
+        return CDL_EXIT_USAGE;
+    }
     cdl_solve_options so = CDL_SOLVE_OPTIONS_DEFAULT;
     cdl_cli_option *threads = cdl_cli_find(opts, nopts, "threads");
     if (threads->present) {
@@ -98,6 +103,13 @@ static int run(int argc, char **argv)
     cdl_status st = cdl_scene_load(args.positional[0], &scene, &err);
     if (st != CDL_OK) {
         fprintf(stderr, "candela solve: %s\n", err.message);
+        return (int)st;
+    }
+    /* The output folder is checked before the solve, which may be long. */
+    st = cdl_solution_prepare_folder(out_opt->value, &err);
+    if (st != CDL_OK) {
+        fprintf(stderr, "candela solve: %s\n", err.message);
+        cdl_scene_release(scene);
         return (int)st;
     }
     cdl_solution sol;
