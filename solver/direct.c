@@ -168,8 +168,8 @@ static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_l
 /* Stratified Monte-Carlo over the light: the mean of f = L cos / pdf over
  * visible samples (or, with `hidden_only`, of f over hidden samples) and the
  * variance of that mean; returns the number of samples. */
-static int sample_light(const cdl_direct_context *ctx, const cdl_direct_light *light, uint64_t stream, cdl_vec3 p,
-                        cdl_vec3 n, int hidden_only, double *mean, double *variance, cdl_direct_sample_stats *stats)
+static double sample_light(const cdl_direct_context *ctx, const cdl_direct_light *light, uint64_t stream, cdl_vec3 p,
+                           cdl_vec3 n, int hidden_only, double *mean, double *variance, cdl_direct_sample_stats *stats)
 {
     /* 64-bit counts: k x k overflows an int from 2^31 samples on. */
     int64_t k = (int64_t)ceil(sqrt((double)(ctx->samples > 0 ? ctx->samples : 1)));
@@ -272,15 +272,14 @@ static void extended_contribution(const cdl_direct_context *ctx, const cdl_direc
         /* E = E_exact - E_hidden: a control variate that is exact when nothing
          * is hidden and whose variance comes only from the hidden part. */
         double hidden, v;
-        int count = sample_light(ctx, light, stream, p, n, 1, &hidden, &v, stats);
+        double c = sample_light(ctx, light, stream, p, n, 1, &hidden, &v, stats);
         if (hidden == 0.0) {
             /* No sample was hidden, so the sample variance is 0, yet a surface
              * lies in the way and may hide less than the samples resolve. The
              * error reported is the posterior standard deviation of a hidden
-             * fraction h seen in none of `count` samples (uniform prior:
-             * h ~ Beta(1, count + 1), variance (count + 1) / ((count + 2)^2
-             * (count + 3))), times the unhidden illuminance. */
-            double c = (double)count;
+             * fraction h seen in none of c samples (uniform prior:
+             * h ~ Beta(1, c + 1), variance (c + 1) / ((c + 2)^2
+             * (c + 3))), times the unhidden illuminance. */
             v = exact.lx * exact.lx * (c + 1.0) / ((c + 2.0) * (c + 2.0) * (c + 3.0));
         }
         *E += fmax(0.0, exact.lx - hidden);
