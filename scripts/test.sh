@@ -15,27 +15,40 @@ cmake -S "$root" -B "$root/build-sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DC
 cmake --build "$root/build-sanitize" -j "$jobs"
 ctest --test-dir "$root/build-sanitize" --output-on-failure -j "$jobs" -LE no-sanitize
 
-# Bounded fuzzing (libFuzzer, clang) of the photometric readers and the
+# Bounded fuzzing (libFuzzer, clang): the photometric readers and the
 # writers' round trip, seeded from the test fixtures and the real files of
-# ../shared/photometric. Quiet on success; on a finding it prints the end of
-# the log and leaves the input in build-fuzz/artifacts/.
+# ../shared/photometric; then scene loading, geometry and the direct solve,
+# seeded from the project's scenes. 100 s each. Quiet on success; on a
+# finding it prints the end of the log and leaves the input in
+# build-fuzz/artifacts/.
 fuzz_dir="$root/build-fuzz"
 fuzz_log="$fuzz_dir/fuzz.log"
 mkdir -p "$fuzz_dir/artifacts"
 if ! { CC=clang CXX=clang++ cmake -S "$root" -B "$fuzz_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCANDELA_FUZZ=ON &&
-       cmake --build "$fuzz_dir" -j "$jobs" --target fuzz_photometry; } >"$fuzz_log" 2>&1; then
+       cmake --build "$fuzz_dir" -j "$jobs" --target fuzz_photometry fuzz_scene; } >"$fuzz_log" 2>&1; then
   tail -n 40 "$fuzz_log" >&2
-  echo "test.sh: building the fuzz harness failed" >&2
+  echo "test.sh: building the fuzz harnesses failed" >&2
   exit 1
 fi
-fuzz_work=$(mktemp -d)
-fuzz_seeds=("$root/tests/data/photometric")
-[ -d "$root/../shared/photometric" ] && fuzz_seeds+=("$root/../shared/photometric")
-if ! "$fuzz_dir/tests/fuzz/fuzz_photometry" -max_total_time=150 -timeout=10 -rss_limit_mb=2048 \
-     -artifact_prefix="$fuzz_dir/artifacts/" "$fuzz_work" "${fuzz_seeds[@]}" >"$fuzz_log" 2>&1; then
-  tail -n 60 "$fuzz_log" >&2
-  echo "test.sh: fuzz_photometry found a problem; the input is in $fuzz_dir/artifacts/" >&2
-  rm -rf "$fuzz_work"
-  exit 1
-fi
-rm -rf "$fuzz_work"
+# run_fuzz NAME EXTRA-OPTIONS... -- SEED-DIRS...: libFuzzer writes new inputs
+# into its first corpus folder, a fresh temporary one, never the sources.
+run_fuzz() {
+  local name=$1; shift
+  local opts=()
+  while [ "$1" != "--" ]; do opts+=("$1"); shift; done
+  shift
+  local work
+  work=$(mktemp -d)
+  if ! "$fuzz_dir/tests/fuzz/$name" -max_total_time=100 -timeout=10 -rss_limit_mb=2048 "${opts[@]}" \
+       -artifact_prefix="$fuzz_dir/artifacts/" "$work" "$@" >"$fuzz_log" 2>&1; then
+    tail -n 60 "$fuzz_log" >&2
+    echo "test.sh: $name found a problem; the input is in $fuzz_dir/artifacts/" >&2
+    rm -rf "$work"
+    exit 1
+  fi
+  rm -rf "$work"
+}
+photometry_seeds=("$root/tests/data/photometric")
+[ -d "$root/../shared/photometric" ] && photometry_seeds+=("$root/../shared/photometric")
+run_fuzz fuzz_photometry -- "${photometry_seeds[@]}"
+run_fuzz fuzz_scene -dict="$fuzz_dir/tests/fuzz/scene.dict" -max_len=6000 -- "$fuzz_dir/tests/fuzz/scene_seeds"
