@@ -42,6 +42,7 @@
  * A sample is a point on the emitter, whichever other part of the emitter
  * may hide it: the mean of L cos / pdf is the exact illuminance above.
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -122,9 +123,16 @@ static cdl_luminous_intensity area_intensity(const cdl_emitter *e, cdl_vec3 dir)
 
 /* ---- exact illuminance ---------------------------------------------------------- */
 
-static int sphere_contains(const area_emitter *a, cdl_vec3 p)
+/* Does a receiver at p facing n see the inside of the sphere? Inside it,
+ * yes; on its surface (to a few ulps of the radius, as a grid point lying
+ * on it is), when n faces inward: a point on a surface belongs to the side
+ * its normal faces. */
+static int sphere_inside_seen(const area_emitter *a, cdl_vec3 p, cdl_vec3 n)
 {
-    return cdl_vec3_length(cdl_vec3_sub(p, a->center)) < a->radius;
+    cdl_vec3 c = cdl_vec3_sub(a->center, p);
+    double d = cdl_vec3_length(c), R = a->radius;
+    if (d < R) return 1;
+    return d <= R * (1.0 + 8.0 * DBL_EPSILON) && cdl_vec3_dot(n, c) > 0.0;
 }
 
 static double triangles_projected_solid_angle(const area_emitter *a, cdl_vec3 p, cdl_vec3 n)
@@ -164,7 +172,7 @@ static int area_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_illumina
     case CDL_SHAPE_SPHERE:
         if (a->inward)
             /* Inside, the emitting inner face fills the whole hemisphere of n. */
-            omega = sphere_contains(a, p) ? CDL_PI : 0.0;
+            omega = sphere_inside_seen(a, p, n) ? CDL_PI : 0.0;
         else
             omega = cdl_projected_solid_angle_sphere(cdl_vec3_sub(a->center, p), a->radius, n);
         break;
@@ -371,13 +379,14 @@ static int sample_sphere(const area_emitter *a, cdl_vec3 p, cdl_vec3 n, double u
     cdl_vec3 dir;
     double pdf;
     if (a->inward) {
-        if (!(d < R)) return 0;
+        if (!sphere_inside_seen(a, p, n)) return 0;
         cdl_frame f = cdl_frame_from_normal(n);
         dir = cdl_frame_to_world(&f, cdl_sample_cosine_hemisphere(u1, u2));
         double cos_r = cdl_vec3_dot(n, dir);
         if (!(cos_r > 0.0)) return 0;
         pdf = cos_r * CDL_INV_PI;
-        out->distance = sphere_hit_from_inside(cdl_vec3_dot(dir, c), (d - R) * (d + R));
+        /* on the surface d may round above R: the root from inside at q = 0 */
+        out->distance = sphere_hit_from_inside(cdl_vec3_dot(dir, c), fmin(0.0, (d - R) * (d + R)));
     } else {
         if (!(d > R)) return 0;
         cdl_frame f = cdl_frame_from_normal(cdl_vec3_scale(c, 1.0 / d));
@@ -492,7 +501,7 @@ static cdl_luminance area_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n,
         cdl_vec3 c = cdl_vec3_sub(a->center, p);
         double d = cdl_vec3_length(c), R = a->radius;
         if (a->inward) {
-            if (!(d < R)) return cdl_nits(0.0);
+            if (!sphere_inside_seen(a, p, n)) return cdl_nits(0.0);
             *pdf = fmax(0.0, cdl_vec3_dot(n, w)) * CDL_INV_PI;
             return cdl_nits(a->L);
         }

@@ -231,8 +231,28 @@ static int sphere_in_region(const double *s, const cdl_convex_region *r, double 
     return 1;
 }
 
-int cdl_occluder_index_intersects(const cdl_occluder_index *ix, const cdl_convex_region *region, double tolerance,
-                                  uint32_t exclude_owner)
+/* Does the surface of sphere s (cx cy cz r), not its ball, meet the box
+ * [lo, hi]? Iff the box's nearest point is no further than r from the centre
+ * and its farthest corner no nearer. */
+static int sphere_surface_in_box(const double *s, cdl_vec3 lo, cdl_vec3 hi)
+{
+    const double l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+    double near2 = 0.0, far2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        double c = s[k];
+        double dn = c < l[k] ? l[k] - c : (c > h[k] ? c - h[k] : 0.0);
+        double df = fmax(fabs(c - l[k]), fabs(c - h[k]));
+        near2 += dn * dn;
+        far2 += df * df;
+    }
+    double r2 = s[3] * s[3];
+    return near2 <= r2 && r2 <= far2;
+}
+
+/* The traversal behind both queries; with `surface_box` set, spheres count
+ * by their surface meeting that box instead of by their ball. */
+static int query(const cdl_occluder_index *ix, const cdl_convex_region *region, double tolerance,
+                 uint32_t exclude_owner, const cdl_vec3 *surface_box)
 {
     if (!ix->prim_count) return 0;
     uint32_t stack[128];
@@ -254,14 +274,29 @@ int cdl_occluder_index_intersects(const cdl_occluder_index *ix, const cdl_convex
         for (uint32_t i = nd->first; i < nd->first + nd->count; ++i) {
             const prim *pr = &ix->prims[i];
             if (pr->owner == exclude_owner) continue;
+            const double *sphere = &ix->spheres[4 * (size_t)(pr->index - ix->triangle_count)];
             int hit = pr->index < ix->triangle_count
                           ? triangle_in_region(&ix->vertices[9 * (size_t)pr->index], region, tolerance)
-                          : sphere_in_region(&ix->spheres[4 * (size_t)(pr->index - ix->triangle_count)], region,
-                                             tolerance);
+                          : (surface_box ? sphere_surface_in_box(sphere, surface_box[0], surface_box[1])
+                                         : sphere_in_region(sphere, region, tolerance));
             if (hit) return 1;
         }
     }
     return 0;
+}
+
+int cdl_occluder_index_intersects(const cdl_occluder_index *ix, const cdl_convex_region *region, double tolerance,
+                                  uint32_t exclude_owner)
+{
+    return query(ix, region, tolerance, exclude_owner, NULL);
+}
+
+int cdl_occluder_index_surface_in_box(const cdl_occluder_index *ix, cdl_vec3 lo, cdl_vec3 hi)
+{
+    cdl_convex_region box;
+    cdl_region_box(&box, lo, hi);
+    const cdl_vec3 corners[2] = {lo, hi};
+    return query(ix, &box, 0.0, UINT32_MAX, corners);
 }
 
 int cdl_region_add(cdl_convex_region *r, cdl_vec3 normal, double offset)

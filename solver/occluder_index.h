@@ -63,6 +63,10 @@ void cdl_occluder_index_release(cdl_occluder_index *index);
 int cdl_occluder_index_intersects(const cdl_occluder_index *index, const cdl_convex_region *region, double tolerance,
                                   uint32_t exclude_owner);
 
+/* 1 if the surface of some primitive meets the box [lo, hi] (a sphere by
+ * its surface, not its ball, unlike the region test above). */
+int cdl_occluder_index_surface_in_box(const cdl_occluder_index *index, cdl_vec3 lo, cdl_vec3 hi);
+
 size_t cdl_occluder_index_primitive_count(const cdl_occluder_index *index);
 
 /* ---- building regions ------------------------------------------------------ */

@@ -352,10 +352,14 @@ static cdl_status check_finite(const cdl_scene *scene, const cdl_scene_lights *l
 
 /* ---- the solve ------------------------------------------------------------------ */
 
-/* A point's rays start one epsilon off the surface it faces (ray_offsets in
- * scene_geometry.h). Any other surface within half an epsilon of that start
- * passes through the point itself: the point is on an edge where surfaces
- * meet, and which side of that surface it belongs to is unknown. */
+/* A point's rays start one epsilon along its normal n (ray_offsets in
+ * scene_geometry.h). That moves the start off every surface through the
+ * point by epsilon x |cos| of the angle between n and the surface's normal:
+ * the whole epsilon for the surface the point faces, nothing for one whose
+ * plane contains n (a wall standing on the floor a point lies on). A surface
+ * within an eighth of an epsilon of the start (an axis-aligned box: within
+ * 0.125 to 0.22 epsilon) therefore passes through the point nearly along n,
+ * and which side of it the point is on is unknown: an edge point. */
 static void find_edge_points(const cdl_direct_context *ctx, cdl_grid_solution *gs)
 {
     gs->edge_point_count = 0;
@@ -364,10 +368,8 @@ static void find_edge_points(const cdl_direct_context *ctx, cdl_grid_solution *g
         cdl_vec3 p = gs->grid.points[i];
         double eps = cdl_ray_offsets_epsilon(&ctx->offsets, p);
         cdl_vec3 o = cdl_vec3_madd(p, eps, gs->grid.normals[i]);
-        cdl_vec3 h = cdl_vec3_make(0.5 * eps, 0.5 * eps, 0.5 * eps);
-        cdl_convex_region box;
-        cdl_region_box(&box, cdl_vec3_sub(o, h), cdl_vec3_add(o, h));
-        if (cdl_occluder_index_intersects(ctx->occluders, &box, 0.0, UINT32_MAX)) {
+        cdl_vec3 h = cdl_vec3_make(0.125 * eps, 0.125 * eps, 0.125 * eps);
+        if (cdl_occluder_index_surface_in_box(ctx->occluders, cdl_vec3_sub(o, h), cdl_vec3_add(o, h))) {
             if (gs->edge_point_count++ == 0) gs->first_edge_point = i;
         }
     }

@@ -980,6 +980,38 @@ static void test_small_hidden_part(void)
     done(scene, &sol);
 }
 
+/* Points on the inner face of an emitting inward sphere (an integrating
+ * sphere's wall): a point on a surface belongs to the side its normal
+ * faces, so facing inward it sees the glowing wall over its whole
+ * hemisphere, E = pi L (the limit from inside, whatever the tilt), and
+ * facing outward nothing. None of them is an edge point: the sphere is the
+ * one surface they lie on, and the centre lies on none. */
+static void test_points_on_emitting_sphere(void)
+{
+    const double L = 100.0, R = 1.5;
+    char json[2048];
+    /* a point on the surface in a general direction, by its unit vector */
+    cdl_vec3 u = cdl_vec3_normalize(cdl_vec3_make(0.3, -0.5, 0.7));
+    cdl_vec3 q = cdl_vec3_add(cdl_vec3_make(1, 2, 3), cdl_vec3_scale(u, R));
+    cdl_vec3 tilted = cdl_vec3_normalize(cdl_vec3_add(cdl_vec3_neg(u), cdl_vec3_make(0.6, 0.0, 0.0)));
+    snprintf(json, sizeof json,
+             "{\"version\": 1, \"surfaces\": [{\"type\": \"sphere\", \"center\": [1, 2, 3], \"radius\": %.17g, "
+             "\"inward\": true, \"reflectance\": 0, \"luminance_cd_m2\": %.17g}], \"grids\": [{\"name\": \"p\", "
+             "\"type\": \"points\", \"points\": [{\"p\": [1, 2, 3], \"n\": [0, 0, 1]}, "
+             "{\"p\": [1, 2, %.17g], \"n\": [0, 0, 1]}, {\"p\": [%.17g, %.17g, %.17g], \"n\": [%.17g, %.17g, %.17g]}, "
+             "{\"p\": [%.17g, %.17g, %.17g], \"n\": [%.17g, %.17g, %.17g]}, {\"p\": [1, 2, %.17g], \"n\": [0, 0, -1]}]}], "
+             "\"solver\": {\"method\": \"direct\"}}",
+             R, L, 3.0 - R, q.x, q.y, q.z, -u.x, -u.y, -u.z, q.x, q.y, q.z, tilted.x, tilted.y, tilted.z, 3.0 - R);
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!solve_json(json, &scene, &sol, 1)) return;
+    const cdl_grid_solution *g = &sol.grids[0];
+    for (int i = 0; i < 4; ++i) CHECK_MSG(fabs(g->E[i] - CDL_PI * L) <= 1e-12 * CDL_PI * L, "point %d: %.17g", i, g->E[i]);
+    CHECK_MSG(g->E[4] == 0.0, "facing out: %g", g->E[4]);
+    CHECK_MSG(g->edge_point_count == 0, "edge points: %zu", g->edge_point_count);
+    done(scene, &sol);
+}
+
 int main(void)
 {
     test_inverse_square_cosine();
@@ -1002,5 +1034,6 @@ int main(void)
     test_environment_rgb_scale();
     test_edge_points();
     test_small_hidden_part();
+    test_points_on_emitting_sphere();
     return check_finish();
 }
