@@ -105,7 +105,9 @@ static int run(int argc, char **argv)
         fprintf(stderr, "candela solve: %s\n", err.message);
         return (int)st;
     }
-    /* The output folder is checked before the solve, which may be long. */
+    /* The output folder is checked before the solve, which may be long; a
+     * folder made for this run and left empty by a failure is removed. */
+    int folder_existed = access(out_opt->value, F_OK) == 0;
     st = cdl_solution_prepare_folder(out_opt->value, &err);
     if (st != CDL_OK) {
         fprintf(stderr, "candela solve: %s\n", err.message);
@@ -141,7 +143,10 @@ static int run(int argc, char **argv)
         }
         cdl_solution_release(&sol);
     }
-    if (st != CDL_OK) fprintf(stderr, "candela solve: %s\n", err.message);
+    if (st != CDL_OK) {
+        fprintf(stderr, "candela solve: %s\n", err.message);
+        if (!folder_existed) rmdir(out_opt->value); /* fails, as it should, unless empty */
+    }
     cdl_scene_release(scene);
     return (int)st;
 }

@@ -65,4 +65,11 @@ check "read-only OUTDIR: nothing written" '[ -z "$(ls -A "$tmp/readonly")" ]'
 check "OUTDIR inside a read-only folder: exit 1" '[ $st -eq 1 ]'
 check "OUTDIR inside a read-only folder: message" \
   'grep -q "readonly/sub: cannot create the folder for the results: Permission denied" "$tmp/err"'
+# A solve that fails after the folder was made for it leaves no empty folder
+# behind; a folder that was there before stays.
+"$CANDELA" solve "$tmp/unsolvable.json" -o "$tmp/fresh_out" --quiet >/dev/null 2>"$tmp/err"; st=$?
+check "failed solve: exit 1, the new folder removed" '[ $st -eq 1 ] && [ ! -e "$tmp/fresh_out" ]'
+mkdir "$tmp/kept_out"
+"$CANDELA" solve "$tmp/unsolvable.json" -o "$tmp/kept_out" --quiet >/dev/null 2>"$tmp/err"; st=$?
+check "failed solve: an existing folder stays" '[ $st -eq 1 ] && [ -d "$tmp/kept_out" ]'
 exit $fail
