@@ -274,11 +274,14 @@ static int query(const cdl_occluder_index *ix, const cdl_convex_region *region, 
         for (uint32_t i = nd->first; i < nd->first + nd->count; ++i) {
             const prim *pr = &ix->prims[i];
             if (pr->owner == exclude_owner) continue;
-            const double *sphere = &ix->spheres[4 * (size_t)(pr->index - ix->triangle_count)];
-            int hit = pr->index < ix->triangle_count
-                          ? triangle_in_region(&ix->vertices[9 * (size_t)pr->index], region, tolerance)
-                          : (surface_box ? sphere_surface_in_box(sphere, surface_box[0], surface_box[1])
-                                         : sphere_in_region(sphere, region, tolerance));
+            int hit;
+            if (pr->index < ix->triangle_count) {
+                hit = triangle_in_region(&ix->vertices[9 * (size_t)pr->index], region, tolerance);
+            } else {
+                const double *sphere = &ix->spheres[4 * (size_t)(pr->index - ix->triangle_count)];
+                hit = surface_box ? sphere_surface_in_box(sphere, surface_box[0], surface_box[1])
+                                  : sphere_in_region(sphere, region, tolerance);
+            }
             if (hit) return 1;
         }
     }
