@@ -128,7 +128,7 @@ cdl_status cdl_bench_direct_run(const cdl_bench_direct_config *cfg, cdl_bench_di
     }
     cdl_solution_release(&sol);
 
-    /* 2. and 3., interleaved three times, keeping the fastest of each so
+    /* 2. and 3., interleaved seven times, keeping the fastest of each so
      *    that other load on the machine disturbs both alike: the solver,
      *    timed on the grid computation only, and plain occlusion queries on
      *    the same rays and scene on one thread (the physical limit per core). */
@@ -138,7 +138,7 @@ cdl_status cdl_bench_direct_run(const cdl_bench_direct_config *cfg, cdl_bench_di
     cdl_solve_options timed = CDL_SOLVE_OPTIONS_DEFAULT;
     timed.threads = cfg->threads;
     r->solver_seconds = r->embree_seconds = INFINITY;
-    for (int round = 0; round < 3; ++round) {
+    for (int round = 0; round < 7; ++round) {
         st = cdl_solve_scene(scene, &timed, &sol, err);
         if (st != CDL_OK) goto done;
         r->points = sol.grids[0].grid.count;
