@@ -13,10 +13,10 @@
 
 #include "radiometry/constants.h"
 #include "radiometry/rng.h"
-#include "solver/direct.h"
-#include "solver/occluder_index.h"
-#include "solver/scene_geometry.h"
-#include "solver/scene_lights.h"
+#include "solver/direct/direct.h"
+#include "solver/geometry/occluder_index.h"
+#include "solver/scene/scene_geometry.h"
+#include "solver/scene/scene_lights.h"
 
 const char *cdl_default_ocio_config(void)
 {

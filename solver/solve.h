@@ -16,8 +16,8 @@
 #include <stdint.h>
 
 #include "radiometry/error.h"
-#include "solver/grid.h"
-#include "solver/scene.h"
+#include "solver/grid/grid.h"
+#include "solver/scene/scene.h"
 
 typedef void (*cdl_solve_progress_fn)(void *user, const char *stage, size_t done, size_t total);
 

@@ -6,7 +6,7 @@
 
 #include "cli_args.h"
 #include "command.h"
-#include "solver/grid_result.h"
+#include "solver/output/grid_result.h"
 #include "solver/solve.h"
 
 static void print_help(FILE *out)

@@ -38,12 +38,12 @@
 #include <unistd.h>
 
 #include "lights/emitter.h"
-#include "solver/exr_image.h"
-#include "solver/grid.h"
-#include "solver/grid_result.h"
-#include "solver/scene.h"
-#include "solver/scene_geometry.h"
-#include "solver/scene_lights.h"
+#include "solver/scene/exr_image.h"
+#include "solver/grid/grid.h"
+#include "solver/output/grid_result.h"
+#include "solver/scene/scene.h"
+#include "solver/scene/scene_geometry.h"
+#include "solver/scene/scene_lights.h"
 #include "solver/solve.h"
 
 /* Budget of one input: points over all grids, samples per point. */

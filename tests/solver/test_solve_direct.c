@@ -9,7 +9,7 @@
 #include "lights/photometry.h"
 #include "lights/projected_solid_angle.h"
 #include "radiometry/constants.h"
-#include "solver/exr_image.h"
+#include "solver/scene/exr_image.h"
 #include "solver/solve.h"
 
 /* Solve a scene given as JSON text; returns 0 on failure (reported). */

@@ -18,7 +18,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "solver/bench_direct.h"
+#include "solver/bench/bench_direct.h"
 
 static long arg_long(int argc, char **argv, const char *name, long dflt)
 {

@@ -1,0 +1,416 @@
+/* direct.c - direct illuminance: exact where possible, sampled where hidden. */
+#include "solver/direct/direct.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "radiometry/constants.h"
+#include "radiometry/frame.h"
+#include "radiometry/rng.h"
+#include "radiometry/sampling.h"
+
+const char *cdl_light_strategy_name(cdl_light_strategy s)
+{
+    switch (s) {
+    /* What was modelled, and after the colon why (summary.json's plan). */
+    case CDL_STRATEGY_DELTA_EXACT: return "exact, no shadow rays: no surface can come between this light and the grid";
+    case CDL_STRATEGY_DELTA_SHADOWED:
+        return "exact, one shadow ray per point: surfaces may come between this light and the grid";
+    case CDL_STRATEGY_EXTENDED_EXACT: return "closed form, nothing can hide it";
+    case CDL_STRATEGY_EXTENDED_TESTED:
+        return "closed form where fully visible, sampled where partly hidden: surfaces may hide part of this emitter";
+    case CDL_STRATEGY_SAMPLED:
+        return "sampled with shadow rays: no closed form for this emitter (an image), or no exact test of its "
+               "visibility (a non-planar mesh) while surfaces may hide it";
+    }
+    return "unknown";
+}
+
+/* Geometric tolerance of region tests around p: a surface must reach ten
+ * ray epsilons into the region to count as an occluder, so surfaces that
+ * only touch it (the floor under a grid point, the ceiling around a
+ * recessed emitter) do not. */
+static double region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p)
+{
+    return 10.0 * cdl_ray_offsets_epsilon(&ctx->offsets, p);
+}
+
+static void grow(cdl_vec3 *lo, cdl_vec3 *hi, cdl_vec3 p)
+{
+    lo->x = fmin(lo->x, p.x);
+    lo->y = fmin(lo->y, p.y);
+    lo->z = fmin(lo->z, p.z);
+    hi->x = fmax(hi->x, p.x);
+    hi->y = fmax(hi->y, p.y);
+    hi->z = fmax(hi->z, p.z);
+}
+
+void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points, size_t count,
+                          cdl_light_strategy *strategies)
+{
+    cdl_vec3 glo = cdl_vec3_make(DBL_MAX, DBL_MAX, DBL_MAX), ghi = cdl_vec3_make(-DBL_MAX, -DBL_MAX, -DBL_MAX);
+    for (size_t i = 0; i < count; ++i) grow(&glo, &ghi, points[i]);
+
+    for (size_t l = 0; l < ctx->light_count; ++l) {
+        const cdl_direct_light *light = &ctx->lights[l];
+        int delta = cdl_emitter_is_delta(light->emitter);
+        /* Can any surface lie between this light and any point of the grid?
+         * Conservative test: the box around the grid and the light. Unbounded
+         * lights (directional, environment) can be occluded by anything. */
+        int may_occlude;
+        if (!ctx->occluders || count == 0) {
+            may_occlude = 0;
+        } else if (!light->bounded) {
+            may_occlude = cdl_occluder_index_primitive_count(ctx->occluders) > 0;
+        } else {
+            cdl_vec3 lo = glo, hi = ghi;
+            grow(&lo, &hi, light->bounds_lo);
+            grow(&lo, &hi, light->bounds_hi);
+            double tol = fmin(region_tolerance(ctx, lo), region_tolerance(ctx, hi));
+            /* The test shrinks the box by tol so that surfaces which only
+             * touch it (the floor under a grid) do not count. Along an axis
+             * where the box is thinner than that (a probe straight below its
+             * luminaire, a grid level with it) shrinking would empty the box
+             * and hide every surface in between: widen such an axis to 3 tol
+             * either side of its middle first. */
+            double *axis_lo[3] = {&lo.x, &lo.y, &lo.z}, *axis_hi[3] = {&hi.x, &hi.y, &hi.z};
+            for (int a = 0; a < 3; ++a)
+                if (*axis_hi[a] - *axis_lo[a] < 4.0 * tol) {
+                    double mid = 0.5 * (*axis_lo[a] + *axis_hi[a]);
+                    *axis_lo[a] = fmin(*axis_lo[a], mid - 3.0 * tol);
+                    *axis_hi[a] = fmax(*axis_hi[a], mid + 3.0 * tol);
+                }
+            cdl_convex_region box;
+            cdl_region_box(&box, lo, hi);
+            may_occlude = cdl_occluder_index_intersects(ctx->occluders, &box, tol, light->owner);
+        }
+        if (delta)
+            strategies[l] = may_occlude ? CDL_STRATEGY_DELTA_SHADOWED : CDL_STRATEGY_DELTA_EXACT;
+        else if (!light->has_closed_form)
+            strategies[l] = CDL_STRATEGY_SAMPLED;
+        else if (!may_occlude)
+            strategies[l] = CDL_STRATEGY_EXTENDED_EXACT;
+        else if (light->outline_count == 0 && !light->outline_is_sphere && !light->is_environment)
+            strategies[l] = CDL_STRATEGY_SAMPLED;
+        else
+            strategies[l] = CDL_STRATEGY_EXTENDED_TESTED;
+    }
+}
+
+static void record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_near, double t_far)
+{
+    if (log->count == log->capacity) {
+        size_t cap = log->capacity ? 2 * log->capacity : 4096;
+        cdl_ray_record *r = realloc(log->rays, cap * sizeof *r);
+        if (!r) {
+            log->overflow = 1;
+            return;
+        }
+        log->rays = r;
+        log->capacity = cap;
+    }
+    cdl_ray_record rec = {o, dir, t_near, t_far};
+    log->rays[log->count++] = rec;
+}
+
+/* Is the segment from p towards the light blocked? (offsets: scene_geometry.h) */
+static int shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                    cdl_direct_sample_stats *stats)
+{
+    cdl_vec3 o;
+    double t_near, t_far;
+    if (!cdl_ray_offsets_shadow_ray(&ctx->offsets, p, n, dir, distance, &o, &t_near, &t_far)) return 0;
+    stats->rays++;
+    if (ctx->log) record_ray(ctx->log, o, dir, t_near, t_far);
+    return cdl_ray_scene_occluded(ctx->rays, o, dir, t_near, t_far);
+}
+
+/* Move planes first .. first + count - 1 of a region outward by tol, so
+ * that the index's shrink by tol leaves them where they were. */
+static void unshrink_planes(cdl_convex_region *region, int first, int count, double tol)
+{
+    for (int i = first; i < first + count && i < region->plane_count; ++i) region->planes[i].offset += tol;
+}
+
+/* Is the region between p and the whole of the light clear of surfaces?
+ * The index shrinks every plane by tol, so that the surface p lies on and
+ * the one the emitter is set into do not count. The side planes of a
+ * pyramid meet at p, though: shrunk, they cut away everything within about
+ * tol x distance / emitter size of p, and all of a pyramid thinner than
+ * 2 tol (a small emitter), so a table just above a floor point went unseen.
+ * The sides are therefore kept where they are; only the caps (the plane
+ * of p, the plane of the emitter) shrink. */
+static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_vec3 p, cdl_vec3 n)
+{
+    cdl_convex_region region;
+    region.plane_count = 0;
+    double tol = region_tolerance(ctx, p);
+    if (light->is_environment) {
+        /* The open half-space above the receiving plane (and above the
+         * horizon for an upper-hemisphere sky): {x : -n.x <= -n.p}. */
+        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+        if (light->upper_only) cdl_region_add(&region, cdl_vec3_neg(light->up), -cdl_vec3_dot(light->up, p));
+    } else if (light->outline_is_sphere) {
+        cdl_region_sphere_view(&region, p, light->sphere_center, light->sphere_radius);
+        if (region.plane_count == CDL_REGION_SPHERE_SIDES + 1) unshrink_planes(&region, 0, CDL_REGION_SPHERE_SIDES, tol);
+        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+    } else {
+        if (!cdl_region_pyramid(&region, p, light->outline, light->outline_count)) return 0;
+        unshrink_planes(&region, 1, light->outline_count, tol);
+        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+    }
+    return !cdl_occluder_index_intersects(ctx->occluders, &region, tol, light->owner);
+}
+
+/* Stratified Monte-Carlo over the light: the mean of f = L cos / pdf over
+ * visible samples (or, with `hidden_only`, of f over hidden samples) and the
+ * variance of that mean; returns the number of samples. */
+static double sample_light(const cdl_direct_context *ctx, const cdl_direct_light *light, uint64_t stream, cdl_vec3 p,
+                           cdl_vec3 n, int hidden_only, double *mean, double *variance, cdl_direct_sample_stats *stats)
+{
+    /* 64-bit counts: k x k overflows an int from 2^31 samples on. */
+    int64_t k = (int64_t)ceil(sqrt((double)(ctx->samples > 0 ? ctx->samples : 1)));
+    double count = (double)(k * k);
+    cdl_rng_key key = {ctx->seed, stream};
+    double sum = 0.0, sum2 = 0.0;
+    for (int64_t j = 0; j < k; ++j)
+        for (int64_t i = 0; i < k; ++i) {
+            double u[2];
+            cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
+            cdl_light_sample s;
+            double f = 0.0;
+            if (cdl_emitter_sample(light->emitter, p, n, (i + u[0]) / k, (j + u[1]) / k, &s) && s.pdf > 0.0) {
+                double c = cdl_vec3_dot(n, s.to_light);
+                if (c > 0.0) {
+                    double contribution = s.L.cd_m2 * c / s.pdf;
+                    int occluded = ctx->geometry ? shadowed(ctx, p, n, s.to_light, s.distance, stats) : 0;
+                    if (hidden_only ? occluded : !occluded) f = contribution;
+                }
+            }
+            sum += f;
+            sum2 += f * f;
+        }
+    double m = sum / count;
+    double var = count > 1 ? fmax(0.0, (sum2 - count * m * m) / (count - 1)) / count : 0.0;
+    *mean = m;
+    *variance = var;
+    return count;
+}
+
+size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, double radius, uint32_t *active)
+{
+    size_t count = 0;
+    for (size_t l = 0; l < ctx->light_count; ++l) {
+        const cdl_direct_light *light = &ctx->lights[l];
+        if (light->has_cone && light->cone_angle < 0.5 * CDL_PI) {
+            /* The ball, seen from the light under the half-angle b with
+             * sin b = r / d, meets the cone (half-angle a) iff the angle t
+             * from the axis to the ball's centre is below a + b, i.e. iff
+             * cos t > cos(a + b) = cos a cos b - sin a sin b; a and b are
+             * both below pi / 2, so a + b < pi and the cosine decides. */
+            cdl_vec3 v = cdl_vec3_sub(center, light->cone_position);
+            double d = sqrt(cdl_vec3_dot(v, v));
+            if (d > radius) {
+                double sin_b = radius / d, cos_b = sqrt(1.0 - sin_b * sin_b);
+                double cos_ab = light->cone_cos * cos_b - light->cone_sin * sin_b;
+                if (cdl_vec3_dot(v, light->cone_axis) <= cos_ab * d) continue;
+            }
+        }
+        active[count++] = (uint32_t)l;
+    }
+    return count;
+}
+
+/* Exact unshadowed illuminance from a delta light, and the direction and
+ * distance its shadow ray needs; 0 when the light does not reach p. */
+static double delta_unshadowed(const cdl_direct_light *light, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *d)
+{
+    if (light->has_cone) {
+        /* Outside the emission cone: no light, no lookup. For cones up to a
+         * hemisphere (cos >= 0) the test needs no square root:
+         * along <= cos |v|  <=>  along <= 0 or along^2 <= cos^2 |v|^2. */
+        cdl_vec3 v = cdl_vec3_sub(p, light->cone_position);
+        double along = cdl_vec3_dot(v, light->cone_axis);
+        if (light->cone_cos >= 0.0) {
+            if (along <= 0.0 || along * along <= light->cone_cos2 * cdl_vec3_dot(v, v)) return 0.0;
+        } else if (along <= light->cone_cos * sqrt(cdl_vec3_dot(v, v))) {
+            return 0.0;
+        }
+    }
+    if (!cdl_emitter_eval_delta(light->emitter, p, n, d) || !(d->E.lx > 0.0)) return 0.0;
+    return d->E.lx;
+}
+
+/* Exact illuminance from a delta light, 0 if it is shadowed. */
+static double delta_contribution(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_light_strategy st,
+                                 cdl_vec3 p, cdl_vec3 n, cdl_direct_sample_stats *stats)
+{
+    cdl_delta_light d;
+    double E = delta_unshadowed(light, p, n, &d);
+    if (E > 0.0 && st == CDL_STRATEGY_DELTA_SHADOWED && shadowed(ctx, p, n, d.to_light, d.distance, stats)) return 0.0;
+    return E;
+}
+
+/* Illuminance from an area emitter or environment: closed form where nothing
+ * hides it, closed form minus the sampled hidden part where something does,
+ * plain sampling where there is no closed form. Adds to *E and *var. */
+static void extended_contribution(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_light_strategy st,
+                                  uint64_t stream, cdl_vec3 p, cdl_vec3 n, double *E, double *var,
+                                  cdl_direct_sample_stats *stats)
+{
+    cdl_illuminance exact;
+    if (st != CDL_STRATEGY_SAMPLED && cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK) {
+        if (!(exact.lx > 0.0)) return; /* behind the emitter or below the horizon */
+        if (st == CDL_STRATEGY_EXTENDED_EXACT || light_fully_visible(ctx, light, p, n)) {
+            *E += exact.lx;
+            stats->exact_evaluations++;
+            return;
+        }
+        /* E = E_exact - E_hidden: a control variate that is exact when nothing
+         * is hidden and whose variance comes only from the hidden part. */
+        double hidden, v;
+        double c = sample_light(ctx, light, stream, p, n, 1, &hidden, &v, stats);
+        if (hidden == 0.0) {
+            /* No sample was hidden, so the sample variance is 0, yet a surface
+             * lies in the way and may hide less than the samples resolve. The
+             * error reported is the posterior standard deviation of a hidden
+             * fraction h seen in none of c samples (uniform prior:
+             * h ~ Beta(1, c + 1), variance (c + 1) / ((c + 2)^2
+             * (c + 3))), times the unhidden illuminance. */
+            v = exact.lx * exact.lx * (c + 1.0) / ((c + 2.0) * (c + 2.0) * (c + 3.0));
+        }
+        *E += fmax(0.0, exact.lx - hidden);
+        *var += v;
+        stats->sampled_evaluations++;
+        return;
+    }
+    double m, v;
+    sample_light(ctx, light, stream, p, n, 0, &m, &v, stats);
+    *E += m;
+    *var += v;
+    stats->sampled_evaluations++;
+}
+
+void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                            const uint32_t *active, size_t active_count, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                            double *E_out, double *var_out, cdl_direct_sample_stats *stats)
+{
+    double E = 0.0, var = 0.0;
+    size_t count = active ? active_count : ctx->light_count;
+    for (size_t a = 0; a < count; ++a) {
+        size_t l = active ? active[a] : a;
+        cdl_light_strategy st = strategies[l];
+        if (st == CDL_STRATEGY_DELTA_EXACT || st == CDL_STRATEGY_DELTA_SHADOWED) {
+            E += delta_contribution(ctx, &ctx->lights[l], st, p, n, stats);
+        } else {
+            uint64_t light_stream = cdl_rng_stream_id(stream, (uint64_t)l, 0x6c69676874ull /* "light" */);
+            extended_contribution(ctx, &ctx->lights[l], st, light_stream, p, n, &E, &var, stats);
+        }
+    }
+    *E_out = E;
+    *var_out = var;
+}
+
+void cdl_direct_scratch_release(cdl_direct_scratch *scratch)
+{
+    free(scratch->contribution);
+    free(scratch->rays);
+    free(scratch->ray_slot);
+    memset(scratch, 0, sizeof *scratch);
+}
+
+static cdl_status scratch_reserve(cdl_direct_scratch *s, size_t slots, cdl_error *err)
+{
+    if (slots <= s->capacity) return CDL_OK;
+    double *c = realloc(s->contribution, slots * sizeof *c);
+    if (c) s->contribution = c;
+    cdl_ray_record *r = realloc(s->rays, slots * sizeof *r);
+    if (r) s->rays = r;
+    uint32_t *k = realloc(s->ray_slot, slots * sizeof *k);
+    if (k) s->ray_slot = k;
+    if (!c || !r || !k) return cdl_error_out_of_memory(err);
+    s->capacity = slots;
+    return CDL_OK;
+}
+
+cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                                        const uint32_t *active, size_t active_count, const uint64_t *streams,
+                                        const cdl_vec3 *points, const cdl_vec3 *normals, size_t count, double *E,
+                                        double *variance, cdl_direct_sample_stats *stats,
+                                        cdl_direct_scratch *scratch, cdl_error *err)
+{
+    size_t lights = active ? active_count : ctx->light_count;
+    if (count > CDL_DIRECT_CHUNK_MAX)
+        return cdl_error_set(err, CDL_ERR_INTERNAL, "direct chunk of %zu points (at most %d)", count,
+                             CDL_DIRECT_CHUNK_MAX);
+    cdl_status st = scratch_reserve(scratch, count * lights + 1, err);
+    if (st != CDL_OK) return st;
+    size_t pending = 0;
+    /* 1. Every light's contribution to every point, light by light (one
+     *    dispatch per light); delta lights' shadow rays wait. */
+    cdl_delta_light delta[CDL_DIRECT_CHUNK_MAX];
+    for (size_t i = 0; i < count; ++i) variance[i] = 0.0;
+    for (size_t a = 0; a < lights; ++a) {
+        size_t l = active ? active[a] : a;
+        cdl_light_strategy strategy = strategies[l];
+        if (strategy == CDL_STRATEGY_DELTA_EXACT || strategy == CDL_STRATEGY_DELTA_SHADOWED) {
+            cdl_emitter_eval_delta_many(ctx->lights[l].emitter, points, normals, count, delta);
+            for (size_t i = 0; i < count; ++i) {
+                double e = delta[i].E.lx > 0.0 ? delta[i].E.lx : 0.0;
+                scratch->contribution[i * lights + a] = e;
+                cdl_ray_record *r = &scratch->rays[pending];
+                if (e > 0.0 && strategy == CDL_STRATEGY_DELTA_SHADOWED &&
+                    cdl_ray_offsets_shadow_ray(&ctx->offsets, points[i], normals[i], delta[i].to_light,
+                                               delta[i].distance, &r->origin, &r->t_near, &r->t_far)) {
+                    r->dir = delta[i].to_light;
+                    scratch->ray_slot[pending++] = (uint32_t)(i * lights + a);
+                }
+            }
+        } else {
+            for (size_t i = 0; i < count; ++i) {
+                double e = 0.0;
+                uint64_t light_stream = cdl_rng_stream_id(streams[i], (uint64_t)l, 0x6c69676874ull /* "light" */);
+                extended_contribution(ctx, &ctx->lights[l], strategy, light_stream, points[i], normals[i], &e,
+                                      &variance[i], stats);
+                scratch->contribution[i * lights + a] = e;
+            }
+        }
+    }
+    /* 2. The shadow rays, one after another. */
+    for (size_t k = 0; k < pending; ++k) {
+        const cdl_ray_record *r = &scratch->rays[k];
+        if (ctx->log) record_ray(ctx->log, r->origin, r->dir, r->t_near, r->t_far);
+        if (cdl_ray_scene_occluded(ctx->rays, r->origin, r->dir, r->t_near, r->t_far))
+            scratch->contribution[scratch->ray_slot[k]] = 0.0;
+    }
+    stats->rays += pending;
+    /* 3. Each point's sum in light order, as cdl_direct_illuminance forms it
+     *    (adding the zeros of dark lights changes no bit). */
+    for (size_t i = 0; i < count; ++i) {
+        double sum = 0.0;
+        for (size_t a = 0; a < lights; ++a) sum += scratch->contribution[i * lights + a];
+        E[i] = sum;
+    }
+    return CDL_OK;
+}
+
+double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                                    cdl_direct_sample_stats *stats)
+{
+    if (!ctx->geometry) return 1.0;
+    int64_t k = (int64_t)ceil(sqrt((double)(ctx->ao_samples > 0 ? ctx->ao_samples : 1)));
+    cdl_rng_key key = {ctx->seed, cdl_rng_stream_id(stream, 0x616f /* "ao" */, 0)};
+    cdl_frame frame = cdl_frame_from_normal(n);
+    int64_t open = 0;
+    for (int64_t j = 0; j < k; ++j)
+        for (int64_t i = 0; i < k; ++i) {
+            double u[2];
+            cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
+            cdl_vec3 w = cdl_frame_to_world(&frame, cdl_sample_cosine_hemisphere_stratified((int)j, (int)i, (int)k, (int)k, u[0], u[1]));
+            if (!shadowed(ctx, p, n, w, INFINITY, stats)) open++;
+        }
+    return (double)open / (double)(k * k);
+}

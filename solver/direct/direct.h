@@ -1,0 +1,150 @@
+/* direct.h - direct illuminance at calculation points, exact where it can be.
+ *
+ * For each light and each grid a plan decides what the light needs:
+ *   delta lights (point, spot, goniometric, directional): the exact
+ *     I cos(theta) / d^2 (or E cos for directional) plus one shadow ray, and no
+ *     shadow ray at all when no surface can lie between the light and the
+ *     grid (nothing intersects the box around both);
+ *   area emitters and the uniform environment: the closed-form illuminance
+ *     (contour integral, disk and sphere formulas, pi L x visible fraction)
+ *     when no surface intersects the region between the receiver and the
+ *     emitter (tested exactly per point, see occluder_index.h); otherwise the
+ *     closed form minus a Monte-Carlo estimate of the hidden part
+ *     (E = E_exact - <f (1 - V)>, a control variate that is exact when
+ *     nothing is hidden), with its standard error;
+ *   image environments: Monte-Carlo sampling by luminance with shadow rays.
+ * Random numbers are keyed by (seed, grid, point, light, sample): results do
+ * not depend on threads or on the order points are computed in.
+ */
+#ifndef CANDELA_SOLVER_DIRECT_H
+#define CANDELA_SOLVER_DIRECT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "lights/emitter.h"
+#include "radiometry/error.h"
+#include "radiometry/vec3.h"
+#include "solver/geometry/occluder_index.h"
+#include "solver/geometry/ray_scene.h"
+#include "solver/scene/scene_geometry.h"
+
+/* How a light's contribution is obtained (per light, per grid). */
+typedef enum cdl_light_strategy {
+    CDL_STRATEGY_DELTA_EXACT,         /* delta light, nothing can occlude: no rays */
+    CDL_STRATEGY_DELTA_SHADOWED,      /* delta light, one shadow ray per point */
+    CDL_STRATEGY_EXTENDED_EXACT,      /* closed form, nothing can occlude for any point */
+    CDL_STRATEGY_EXTENDED_TESTED,     /* closed form where the per-point region is clear, else sampled */
+    CDL_STRATEGY_SAMPLED              /* always sampled (image environment, non-planar emitter) */
+} cdl_light_strategy;
+
+const char *cdl_light_strategy_name(cdl_light_strategy strategy);
+
+/* Shadow rays as cast, for benchmarks that replay them (single-threaded use). */
+typedef struct cdl_ray_record {
+    cdl_vec3 origin, dir;
+    double t_near, t_far;
+} cdl_ray_record;
+
+typedef struct cdl_ray_log {
+    cdl_ray_record *rays;
+    size_t count, capacity;
+    int overflow;                     /* 1 if a ray could not be recorded (out of memory) */
+} cdl_ray_log;
+
+#define CDL_DIRECT_OUTLINE_MAX (CDL_REGION_MAX_PLANES - 2)
+
+/* A light as the direct solver sees it. */
+typedef struct cdl_direct_light {
+    const cdl_emitter *emitter;
+    char label[160];                  /* "luminaires[3]" or "surfaces[2]" (+ face) for the plan */
+    uint32_t owner;                   /* geometry piece id of its own surface, UINT32_MAX if none */
+    int has_closed_form;              /* area or uniform environment */
+    int is_environment;
+    int upper_only;                   /* environment: sky above the horizon of `up` only */
+    cdl_vec3 up;
+    /* A convex outline bounding the emitter (area emitters), for the
+     * per-point visibility region; outline_count = 0 when there is none.
+     * Kept out of line so that the records the per-point loop walks stay small. */
+    cdl_vec3 *outline;                /* up to CDL_DIRECT_OUTLINE_MAX points, owned by whoever built the light */
+    int outline_count;
+    int outline_is_sphere;            /* use center/radius instead */
+    cdl_vec3 sphere_center;
+    double sphere_radius;
+    cdl_vec3 bounds_lo, bounds_hi;    /* world bounds of the emitter (delta: its position) */
+    int bounded;                      /* 0 for directional and environment */
+    /* Emission cone (cdl_emitter_emission_cone): no light outside the
+     * directions within cone_angle of cone_axis from cone_position. */
+    int has_cone;
+    cdl_vec3 cone_position, cone_axis;
+    double cone_angle;                /* radians */
+    double cone_cos, cone_sin;        /* cos and sin of cone_angle */
+    double cone_cos2;                 /* cos^2 of cone_angle */
+} cdl_direct_light;
+
+typedef struct cdl_direct_context {
+    const cdl_scene_geometry *geometry;  /* rays and their epsilons; NULL: nothing can occlude */
+    cdl_ray_offsets offsets;          /* the geometry's ray offsets (when geometry != NULL) */
+    const cdl_ray_scene *rays;        /* the geometry's rays; NULL when there is no geometry */
+    const cdl_occluder_index *occluders; /* NULL when the scene has no geometry */
+    const cdl_direct_light *lights;
+    size_t light_count;
+    int samples;                      /* per partly hidden extended light (rounded up to a square) */
+    int ao_samples;                   /* per point for ambient occlusion (rounded up to a square) */
+    uint64_t seed;
+    cdl_ray_log *log;                 /* NULL, or records every shadow ray (one thread only) */
+} cdl_direct_context;
+
+/* Decide each light's strategy for a set of receiver points (a grid). */
+void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points, size_t count,
+                          cdl_light_strategy *strategies);
+
+typedef struct cdl_direct_sample_stats {
+    uint64_t rays;
+    uint64_t exact_evaluations;       /* closed forms used */
+    uint64_t sampled_evaluations;     /* Monte-Carlo estimates used */
+} cdl_direct_sample_stats;
+
+/* Lights that can reach any point of a ball (centre, radius): the indices
+ * of all lights except those whose emission cone misses the ball. Writes
+ * at most ctx->light_count indices into `active`; returns their number. */
+size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, double radius, uint32_t *active);
+
+/* Direct illuminance (lux) at p on the plane with unit normal n, with the
+ * variance of its estimate (0 when exact), from the lights listed in
+ * `active` (NULL: all lights). `stream` identifies the point (grid and
+ * index) for the random numbers. */
+void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                            const uint32_t *active, size_t active_count, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                            double *E, double *variance, cdl_direct_sample_stats *stats);
+
+/* Most points cdl_direct_illuminance_chunk takes at once. */
+#define CDL_DIRECT_CHUNK_MAX 64
+
+/* Scratch space for cdl_direct_illuminance_chunk, one per thread. */
+typedef struct cdl_direct_scratch {
+    double *contribution;             /* points x active lights */
+    cdl_ray_record *rays;             /* pending shadow rays */
+    uint32_t *ray_slot;               /* their slot in `contribution` */
+    size_t capacity;                  /* slots */
+} cdl_direct_scratch;
+
+void cdl_direct_scratch_release(cdl_direct_scratch *scratch);
+
+/* cdl_direct_illuminance for `count` (<= CDL_DIRECT_CHUNK_MAX) points at
+ * once, with the same result bit for bit: every light's contribution to
+ * every point is found first (light by light),
+ * the delta lights' shadow rays are then traced one after another (as a
+ * plain loop of occlusion queries would), and each point's sum is formed in
+ * light order. streams[i] identifies point i for the random numbers. */
+cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                                        const uint32_t *active, size_t active_count, const uint64_t *streams,
+                                        const cdl_vec3 *points, const cdl_vec3 *normals, size_t count, double *E,
+                                        double *variance, cdl_direct_sample_stats *stats,
+                                        cdl_direct_scratch *scratch, cdl_error *err);
+
+/* Cosine-weighted unoccluded fraction of the hemisphere about n at p. */
+double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                                    cdl_direct_sample_stats *stats);
+
+#endif

@@ -1,0 +1,54 @@
+/* grid.h - calculation points of a grid, and the raster used to draw them.
+ *
+ *   rect     nu x nv points at cell centres, origin + (i+0.5)/nu u + (j+0.5)/nv v,
+ *            row-major with i fastest; normal u x v (or the given normal).
+ *   polygon  the polygon (minus holes) meshed by CGAL into well-shaped
+ *            triangles with edges no longer than the spacing p; one point at
+ *            the centroid of each triangle, weighted by the triangle's area.
+ *            spacing "auto": p = 0.2 x 5^log10(d), d the longer side of the
+ *            polygon's bounding rectangle in its plane (EN 12464-1:2021,
+ *            4.3.3), p <= 10 m.
+ *   points   the listed points and normals, in order.
+ *
+ * Rect and polygon grids also carry a raster (for EXR and PNG maps): each
+ * pixel holds the index of the point whose value it shows, or -1 outside.
+ * A rect grid's raster is nu x nv, row 0 at the v = 1 edge (top of the
+ * image), column 0 at the u = 0 edge. A polygon grid's raster covers its
+ * bounding rectangle in the plane (first axis along the first edge of the
+ * outer ring) at p/4 per pixel (coarser when that would exceed 4096 pixels
+ * on a side), each pixel taking the point of the triangle containing its
+ * centre.
+ */
+#ifndef CANDELA_SOLVER_GRID_H
+#define CANDELA_SOLVER_GRID_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "radiometry/error.h"
+#include "radiometry/vec3.h"
+#include "solver/scene/scene.h"
+
+typedef struct cdl_grid {
+    size_t count;
+    cdl_vec3 *points;
+    cdl_vec3 *normals;        /* unit */
+    double *weights;          /* area weights (m^2) for averages; all 1 for points grids */
+    /* raster (rect and polygon grids); width = height = 0 for points grids */
+    int raster_width, raster_height;
+    int32_t *raster_index;    /* width x height, row-major, top row first; -1 outside */
+    double pixel_size_m;      /* size of a raster pixel along the grid's first axis */
+    double spacing_m;         /* polygon: spacing used; rect: |u|/nu */
+} cdl_grid;
+
+/* Largest number of points a grid may have (the scene loader refuses more;
+ * polygon grids check their estimated count before meshing). */
+#define CDL_GRID_MAX_POINTS 10000000
+
+/* EN 12464-1 grid spacing for a longest dimension d (m): 0.2 x 5^log10(d), capped at 10 m. */
+double cdl_grid_auto_spacing(double longest_dimension_m);
+
+cdl_status cdl_grid_build(const cdl_grid_spec *spec, cdl_grid *out, cdl_error *err);
+void cdl_grid_release(cdl_grid *grid);
+
+#endif

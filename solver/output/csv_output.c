@@ -1,0 +1,62 @@
+/* csv_output.c - NAME.csv: one row per grid point, numbers that read back exactly. */
+#include "solver/output/grid_result.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Enough for "%.17g" of any double: sign, 17 digits, point, "e-308". */
+#define NUMBER_SIZE 32
+
+/* The shortest of 15, 16 and 17 significant digits that strtod reads back
+ * as exactly `v` (0.1 stays "0.1", not "0.10000000000000001"). 17 digits
+ * always suffice for binary64 (IEEE 754-2008, 5.12.2: Pmin = 17), and glibc
+ * converts correctly rounded both ways, so every number round-trips. */
+static void format_number(double v, char buf[NUMBER_SIZE])
+{
+    for (int digits = 15; digits <= 17; ++digits) {
+        snprintf(buf, NUMBER_SIZE, "%.*g", digits, v);
+        if (strtod(buf, NULL) == v) return;
+    }
+}
+
+static void write_row(FILE *fp, const double *values, size_t n)
+{
+    char buf[NUMBER_SIZE];
+    for (size_t k = 0; k < n; ++k) {
+        format_number(values[k], buf);
+        if (k > 0) fputc(',', fp);
+        fputs(buf, fp);
+    }
+    fputc('\n', fp);
+}
+
+cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *path, cdl_error *err)
+{
+    cdl_status st = cdl_grid_result_check(result, path, err);
+    if (st != CDL_OK) return st;
+    cdl_atomic_file file;
+    st = cdl_atomic_file_open(&file, path, err);
+    if (st != CDL_OK) return st;
+
+    const cdl_grid *grid = result->grid;
+    int with_ao = result->ao != NULL;
+    fputs("x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx", file.fp);
+    fputs(with_ao ? ",AO\n" : "\n", file.fp);
+    for (size_t i = 0; i < grid->count; ++i) {
+        const cdl_vec3 p = grid->points[i], nrm = grid->normals[i];
+        double row[11] = {p.x,
+                          p.y,
+                          p.z,
+                          nrm.x,
+                          nrm.y,
+                          nrm.z,
+                          result->E[i],
+                          result->E_direct[i],
+                          result->E_indirect[i],
+                          result->E_stderr[i],
+                          with_ao ? result->ao[i] : 0.0};
+        write_row(file.fp, row, with_ao ? 11 : 10);
+    }
+    /* commit checks the stream's error flag: a failed write above is reported there. */
+    return cdl_atomic_file_commit(&file, err);
+}

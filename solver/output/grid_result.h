@@ -1,0 +1,121 @@
+/* grid_result.h - illuminance results of one grid, their statistics, and
+ * the files `candela solve` writes for them (DESIGN.md, "Outputs of solve").
+ *
+ * Every file is written atomically (atomic_file.h): to a temporary name in
+ * the same folder, flushed and synced, then renamed over the final name, so
+ * an interrupted run leaves earlier results intact and never a half-written
+ * file. The writers do not create folders: a missing folder is an error.
+ *
+ * Before writing anything, every writer checks the result with
+ * cdl_grid_result_check and refuses (CDL_ERR_INTERNAL, message naming the
+ * file, the column and the point) a missing array or a value that is NaN or
+ * infinite: a result file never holds a number that is not one. Errors name
+ * the file and what failed; I/O failures are CDL_ERR_INTERNAL.
+ *
+ * All functions are reentrant; distinct results may be written from
+ * distinct threads.
+ */
+#ifndef CANDELA_SOLVER_GRID_RESULT_H
+#define CANDELA_SOLVER_GRID_RESULT_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "radiometry/error.h"
+#include "radiometry/atomic_file.h"
+#include "solver/grid/grid.h"
+#include "solver/output/lux_scale.h"
+
+/* The arrays hold grid->count values each, in grid order. E, E_direct,
+ * E_indirect and E_stderr are required (a direct-only solve passes zeros for
+ * E_indirect); ao is optional. */
+typedef struct cdl_grid_result {
+    const char *name;
+    const cdl_grid *grid;     /* points, normals, weights, raster */
+    const double *E;          /* total illuminance, lux, grid->count values */
+    const double *E_direct;   /* lux */
+    const double *E_indirect; /* lux */
+    const double *E_stderr;   /* standard error of E, lux (0 where exact) */
+    const double *ao;         /* NULL unless the grid asked for "ao"; [0, 1] */
+} cdl_grid_result;
+
+/* Check a result before it is written to `path` (used in messages): grid and
+ * the four required arrays present; every coordinate, normal component and
+ * value finite; a raster, if any, of non-negative size whose entries are -1
+ * or a point index. CDL_ERR_INTERNAL otherwise (the caller built it). */
+cdl_status cdl_grid_result_check(const cdl_grid_result *result, const char *path, cdl_error *err);
+/* The same, and the grid must have a raster (rect and polygon grids): for images. */
+cdl_status cdl_grid_result_check_with_raster(const cdl_grid_result *result, const char *path, cdl_error *err);
+
+typedef struct cdl_grid_stats {
+    size_t count;
+    double E_avg_lx;          /* area-weighted mean (Em) */
+    double E_min_lx;
+    double E_max_lx;
+    double U0;                /* uniformity Emin / Em (0 when Em = 0) */
+    double Ud;                /* diversity Emin / Emax (0 when Emax = 0) */
+} cdl_grid_stats;
+
+/* Statistics of E over the grid (EN 12464-1 terms). Em is weighted by
+ * grid->weights (the area each point stands for); with weights NULL, or all
+ * zero, it is the plain mean. An empty grid gives all zeros. Expects finite
+ * values (cdl_grid_result_check). */
+void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats);
+
+/* NAME.csv: header x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx
+ * (plus ",AO" when ao is given), one row per point in grid order, "\n" line
+ * ends. Each number is the shortest of "%.15g", "%.16g", "%.17g" that reads
+ * back (strtod) as exactly the same double, so a closed-form result
+ * survives the trip to text. Expects the "C" numeric locale (the library
+ * never changes it). */
+cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *path, cdl_error *err);
+
+/* NAME.exr (rect and polygon grids; a grid without a raster is refused):
+ * 32-bit float channels, one pixel per raster pixel, top row first:
+ *   E           total illuminance, lux
+ *   Y           the same values, for generic viewers
+ *   E_direct    lux
+ *   E_indirect  lux
+ *   E_stderr    lux
+ *   mask        1 inside the grid, 0 outside (outside pixels hold 0 in every channel)
+ * String attributes units=lx, quantity=illuminance and each key/value given
+ * (the solver's settings); a key may not repeat "units" or "quantity". A
+ * value beyond the float range is refused rather than written as inf. */
+typedef struct cdl_key_value {
+    const char *key;
+    const char *value;
+} cdl_key_value;
+cdl_status cdl_grid_result_write_exr(const cdl_grid_result *result, const char *path, const cdl_key_value *attributes,
+                                     size_t attribute_count, cdl_error *err);
+
+/* NAME.png (rect and polygon grids; a grid without a raster is refused): an
+ * 8-bit sRGB image on a white background. Left, the false-colour map of E:
+ * each raster pixel drawn as a square of `cell` image pixels (nearest
+ * neighbour, the long side at least 400 pixels), pixels outside the grid
+ * left white. Right, the legend: a colour bar (top = scale.hi, bottom =
+ * scale.lo) in a black frame with ticks labelled in lux ("500 lx", "0.2 lx",
+ * "20k lx") at 1-2-5 values, as many as fit without overlapping.
+ * Colours: E maps to t = cdl_lux_scale_position (log scale between round
+ * values bracketing the data, lux_scale.h), and (t, t, t) goes through the
+ * OpenColorIO config `ocio_config` from colour space "linear" to display
+ * "sRGB", view "False colour"; the result is rounded to 8 bits.
+ * A bad config is CDL_ERR_INPUT, prefixed with the PNG's path. */
+cdl_status cdl_grid_result_write_png(const cdl_grid_result *result, const char *path, const char *ocio_config,
+                                     cdl_error *err);
+
+/* Where things sit in NAME.png, in image pixels (x right, y down). */
+typedef struct cdl_png_layout {
+    cdl_lux_scale scale;      /* the lux range of the colours */
+    int width, height;        /* the whole image */
+    int map_x, map_y;         /* top-left corner of the map */
+    int cell;                 /* raster pixel (c, r) covers x in [map_x + c cell, map_x + (c+1) cell) */
+    int bar_x, bar_y;         /* top-left corner of the colour bar (inside its frame) */
+    int bar_width, bar_height;
+    int label_x;              /* left edge of the tick labels */
+} cdl_png_layout;
+
+/* The layout cdl_grid_result_write_png uses for `result` (which must have a
+ * raster and pass cdl_grid_result_check). */
+void cdl_grid_result_png_layout(const cdl_grid_result *result, cdl_png_layout *layout);
+
+#endif

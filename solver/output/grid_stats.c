@@ -1,0 +1,56 @@
+/* grid_stats.c - average, minimum, maximum and uniformity of a grid's illuminance. */
+#include "solver/output/grid_result.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Neumaier's compensated sum: a grid of a million points keeps the mean to
+ * a few ulps instead of losing digits to rounding in a running total. */
+typedef struct compensated_sum {
+    double sum, carry;
+} compensated_sum;
+
+static void compensated_add(compensated_sum *s, double x)
+{
+    double t = s->sum + x;
+    if (fabs(s->sum) >= fabs(x))
+        s->carry += (s->sum - t) + x;
+    else
+        s->carry += (x - t) + s->sum;
+    s->sum = t;
+}
+
+void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats)
+{
+    memset(stats, 0, sizeof *stats);
+    const cdl_grid *grid = result->grid;
+    size_t n = grid ? grid->count : 0;
+    if (n == 0 || !result->E) return;
+    const double *E = result->E;
+    const double *w = grid->weights;
+
+    compensated_sum weighted = {0.0, 0.0}, weight = {0.0, 0.0}, plain = {0.0, 0.0};
+    double lo = E[0], hi = E[0];
+    for (size_t i = 0; i < n; ++i) {
+        if (E[i] < lo) lo = E[i];
+        if (E[i] > hi) hi = E[i];
+        compensated_add(&plain, E[i]);
+        if (w) {
+            compensated_add(&weighted, w[i] * E[i]);
+            compensated_add(&weight, w[i]);
+        }
+    }
+    double total_weight = weight.sum + weight.carry;
+    /* Average illuminance over the area (EN 12464-1's Em, here of the values
+     * given): the mean of E with each point weighted by the area it stands for. */
+    double Em = total_weight > 0.0 ? (weighted.sum + weighted.carry) / total_weight : (plain.sum + plain.carry) / (double)n;
+
+    stats->count = n;
+    stats->E_avg_lx = Em;
+    stats->E_min_lx = lo;
+    stats->E_max_lx = hi;
+    /* Uniformity U0 = Emin / Em (EN 12464-1) and diversity Ud = Emin / Emax
+     * (DESIGN.md, summary.json); 0 when the denominator is 0. */
+    stats->U0 = Em != 0.0 ? lo / Em : 0.0;
+    stats->Ud = hi != 0.0 ? lo / hi : 0.0;
+}

@@ -1,0 +1,175 @@
+/* solution_write.c - the files of a solve: per grid CSV, EXR, PNG; summary.json. */
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "radiometry/atomic_file.h"
+#include "solver/output/grid_result.h"
+#include "solver/solve.h"
+
+/* Errors of the file system that are the machine's, not the path's. */
+static cdl_status folder_failure_status(int code)
+{
+    return code == ENOSPC || code == EIO || code == ENOMEM || code == EDQUOT ? CDL_ERR_INTERNAL : CDL_ERR_INPUT;
+}
+
+/* What a path that is not a folder is, for messages. */
+static const char *kind_of(const struct stat *sb)
+{
+    return S_ISREG(sb->st_mode) ? "a file" : "something that is not a folder";
+}
+
+cdl_status cdl_solution_prepare_folder(const char *out_dir, cdl_error *err)
+{
+    if (!out_dir || !out_dir[0])
+        return cdl_error_set(err, CDL_ERR_INPUT, "expected a folder for the results, found an empty name");
+    size_t n = strlen(out_dir);
+    char *buf = malloc(n + 1);
+    if (!buf) return cdl_error_out_of_memory(err);
+    memcpy(buf, out_dir, n + 1);
+    cdl_status st = CDL_OK;
+    struct stat sb;
+    /* mkdir -p, one component at a time; an existing component must be a folder. */
+    for (size_t i = 1; i <= n && st == CDL_OK; ++i) {
+        if (buf[i] != '/' && buf[i] != '\0') continue;
+        char saved = buf[i];
+        buf[i] = '\0';
+        if (mkdir(buf, 0777) != 0) {
+            int code = errno;
+            if (code != EEXIST)
+                st = cdl_error_set(err, folder_failure_status(code), "%s: cannot create the folder for the results%s%s: %s",
+                                   out_dir, i < n ? " at " : "", i < n ? buf : "", strerror(code));
+            else if (stat(buf, &sb) == 0 && !S_ISDIR(sb.st_mode))
+                st = cdl_error_set(err, CDL_ERR_INPUT, "%s: expected a folder for the results, found %s%s%s", out_dir,
+                                   kind_of(&sb), i < n ? " at " : "", i < n ? buf : "");
+        }
+        buf[i] = saved;
+    }
+    free(buf);
+    if (st != CDL_OK) return st;
+    if (stat(out_dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
+        return cdl_error_set(err, CDL_ERR_INPUT, "%s: expected a folder for the results, found something else", out_dir);
+    /* Find out now, not after a long solve, that nothing can be written there. */
+    if (access(out_dir, W_OK | X_OK) != 0) {
+        int code = errno;
+        return cdl_error_set(err, folder_failure_status(code), "%s: cannot write into the folder for the results: %s",
+                             out_dir, strerror(code));
+    }
+    return CDL_OK;
+}
+
+static char *join_path(const char *dir, const char *name, const char *ext)
+{
+    size_t n = strlen(dir) + strlen(name) + strlen(ext) + 2;
+    char *p = malloc(n);
+    if (p) snprintf(p, n, "%s/%s%s", dir, name, ext);
+    return p;
+}
+
+static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol, const cdl_grid_stats *stats,
+                                const char *path, cdl_error *err)
+{
+    cJSON *root = cJSON_CreateObject();
+    if (!root) return cdl_error_out_of_memory(err);
+    cJSON_AddStringToObject(root, "candela_version", CANDELA_VERSION);
+    cJSON_AddStringToObject(root, "scene", scene->path);
+    cJSON *grids = cJSON_AddObjectToObject(root, "grids");
+    for (size_t g = 0; g < sol->grid_count; ++g) {
+        cJSON *o = cJSON_AddObjectToObject(grids, scene->grids[g].name);
+        cJSON_AddNumberToObject(o, "count", (double)stats[g].count);
+        cJSON_AddNumberToObject(o, "E_avg_lx", stats[g].E_avg_lx);
+        cJSON_AddNumberToObject(o, "E_min_lx", stats[g].E_min_lx);
+        cJSON_AddNumberToObject(o, "E_max_lx", stats[g].E_max_lx);
+        cJSON_AddNumberToObject(o, "U0", stats[g].U0);
+        cJSON_AddNumberToObject(o, "Ud", stats[g].Ud);
+        double worst = 0.0;
+        for (size_t i = 0; i < sol->grids[g].grid.count; ++i)
+            if (sol->grids[g].E_stderr[i] > worst) worst = sol->grids[g].E_stderr[i];
+        cJSON_AddNumberToObject(o, "E_stderr_max_lx", worst);
+        cJSON_AddNumberToObject(o, "edge_points", (double)sol->grids[g].edge_point_count);
+        if (scene->grids[g].kind == CDL_GRID_POLYGON)
+            cJSON_AddNumberToObject(o, "spacing_m", sol->grids[g].grid.spacing_m);
+    }
+    cJSON_AddStringToObject(root, "method", cdl_method_name(sol->method));
+    cJSON_AddStringToObject(root, "quality", cdl_quality_name(sol->settings.quality));
+    cJSON *set = cJSON_AddObjectToObject(root, "settings");
+    cJSON_AddStringToObject(set, "method", cdl_method_name(sol->settings.method));
+    cJSON_AddStringToObject(set, "quality", cdl_quality_name(sol->settings.quality));
+    cJSON_AddNumberToObject(set, "bounces", sol->settings.bounces);
+    cJSON_AddNumberToObject(set, "seed", (double)sol->settings.seed);
+    cJSON_AddNumberToObject(set, "threads", sol->threads_used);
+    cJSON_AddNumberToObject(set, "direct_samples", sol->settings.direct_samples);
+    cJSON_AddNumberToObject(set, "ao_samples", sol->settings.ao_samples);
+    cJSON_AddNumberToObject(root, "seconds", sol->seconds);
+    cJSON_AddNumberToObject(root, "rays", (double)sol->rays);
+    cJSON *plan = cJSON_Parse(sol->plan_json ? sol->plan_json : "{}");
+    if (plan) cJSON_AddItemToObject(root, "plan", plan);
+    char *text = cJSON_Print(root);
+    cJSON_Delete(root);
+    if (!text) return cdl_error_out_of_memory(err);
+
+    cdl_atomic_file f;
+    cdl_status st = cdl_atomic_file_open(&f, path, err);
+    if (st == CDL_OK) {
+        fputs(text, f.fp);
+        fputc('\n', f.fp);
+        st = cdl_atomic_file_commit(&f, err);
+    }
+    free(text);
+    return st;
+}
+
+cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, const char *out_dir,
+                              const char *ocio_config, cdl_error *err)
+{
+    cdl_status st = cdl_solution_prepare_folder(out_dir, err);
+    if (st != CDL_OK) return st;
+    cdl_grid_stats *stats = calloc(sol->grid_count ? sol->grid_count : 1, sizeof *stats);
+    if (!stats) return cdl_error_out_of_memory(err);
+
+    /* Settings recorded in every EXR. */
+    char seed[32], threads[16], bounces[16], ds[16], as[16];
+    snprintf(seed, sizeof seed, "%llu", (unsigned long long)sol->settings.seed);
+    snprintf(threads, sizeof threads, "%d", sol->threads_used);
+    snprintf(bounces, sizeof bounces, "%d", sol->settings.bounces);
+    snprintf(ds, sizeof ds, "%d", sol->settings.direct_samples);
+    snprintf(as, sizeof as, "%d", sol->settings.ao_samples);
+    const cdl_key_value attrs[] = {
+        {"candela_version", CANDELA_VERSION}, {"scene", scene->path},
+        {"method", cdl_method_name(sol->method)}, {"quality", cdl_quality_name(sol->settings.quality)},
+        {"seed", seed}, {"threads", threads}, {"bounces", bounces},
+        {"direct_samples", ds}, {"ao_samples", as},
+    };
+
+    for (size_t g = 0; g < sol->grid_count && st == CDL_OK; ++g) {
+        const cdl_grid_solution *gs = &sol->grids[g];
+        cdl_grid_result r = {scene->grids[g].name, &gs->grid, gs->E, gs->E_direct, gs->E_indirect, gs->E_stderr, gs->ao};
+        cdl_grid_result_stats(&r, &stats[g]);
+        char *csv = join_path(out_dir, r.name, ".csv");
+        char *exr = join_path(out_dir, r.name, ".exr");
+        char *png = join_path(out_dir, r.name, ".png");
+        if (!csv || !exr || !png) {
+            st = cdl_error_out_of_memory(err);
+        } else {
+            st = cdl_grid_result_write_csv(&r, csv, err);
+            if (st == CDL_OK && gs->grid.raster_width > 0) {
+                st = cdl_grid_result_write_exr(&r, exr, attrs, sizeof attrs / sizeof attrs[0], err);
+                if (st == CDL_OK) st = cdl_grid_result_write_png(&r, png, ocio_config, err);
+            }
+        }
+        free(csv);
+        free(exr);
+        free(png);
+    }
+    if (st == CDL_OK) {
+        char *summary = join_path(out_dir, "summary", ".json");
+        st = summary ? write_summary(scene, sol, stats, summary, err) : cdl_error_out_of_memory(err);
+        free(summary);
+    }
+    free(stats);
+    return st;
+}

@@ -1,0 +1,608 @@
+/* scene_load.c - the JSON scene file of DESIGN.md into a cdl_scene.
+ *
+ * Top level: version (required, 1), surfaces, luminaires, grids (required,
+ * at least one), solver. Luminaire keys by type (all take
+ * maintenance_factor in (0, 1], default 1):
+ *   point        position; exactly one of intensity_cd, flux_lm (>= 0)
+ *   spot         position, direction; exactly one of intensity_cd, flux_lm;
+ *                either half_angle in (0, 180] with falloff_start in
+ *                [0, half_angle] (default half_angle), or exponent >= 0
+ *   goniometric  file, position; rotation (default [0, 0, 0]), multiplier
+ *                (>= 0, default 1), flux_lm (> 0, optional rescale)
+ *   area         shape (rect, disk, polygon, mesh); exactly one of
+ *                luminance_cd_m2, flux_lm (>= 0); reflectance (default 0)
+ *   directional  direction, illuminance_lx (>= 0)
+ *   environment  exactly one of luminance_cd_m2 (>= 0) or file (with
+ *                scale >= 0, default 1); up (default [0, 0, 1]);
+ *                hemisphere "full" (default) or "upper"
+ * Grids: name (letters, digits, '.', '_', '-'; unique ignoring case, so the
+ * output files differ on every file system), type, outputs (["ao"]), and
+ *   rect     origin, u, v, nu, nv, normal (default u x v)
+ *   polygon  vertices, holes, spacing (metres > 0 or "auto", default "auto"), normal
+ *   points   points: [{"p": [x, y, z], "n": [nx, ny, nz]}, ...]
+ * Solver: method, quality, bounces, seed, threads, direct_samples, ao_samples.
+ * The photometric values (intensity_cd, flux_lm, luminance_cd_m2,
+ * illuminance_lx) are a number in the unit the key names or text with any
+ * unit of the same dimension, as people type it: "46.45 fc", "2 kcd",
+ * "3 klm", "1200 cd/m2" (radiometry/quantity.h).
+ */
+#include "solver/scene/scene.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "solver/grid/grid.h"
+#include "radiometry/file_bytes.h"
+#include "solver/scene/scene_file.h"
+#include "solver/scene/scene_parse.h"
+
+#define GRID_NAME_MAX 64
+
+static const char *const method_names[] = {"auto", "direct", "icache", "pathtrace", NULL};
+static const char *const quality_names[] = {"draft", "normal", "high", "reference", NULL};
+
+const char *cdl_method_name(cdl_method method)
+{
+    return (unsigned)method < 4 ? method_names[method] : "unknown";
+}
+
+const char *cdl_quality_name(cdl_quality quality)
+{
+    return (unsigned)quality < 4 ? quality_names[quality] : "unknown";
+}
+
+/* ---- helpers ------------------------------------------------------------------ */
+
+/* At most one of keys a and b; with `required`, exactly one. *which = 0 (a), 1 (b) or -1. */
+static cdl_status one_of(const cdl_scene_parse *ctx, const cJSON *node, const char *path, const char *a,
+                         const char *b, int required, int *which)
+{
+    const cJSON *na = cdl_scene_json_member(node, a), *nb = cdl_scene_json_member(node, b);
+    char p[CDL_SCENE_PATH_MAX], exp[128];
+    if (na && nb) {
+        cdl_scene_json_path_key(p, path, b);
+        snprintf(exp, sizeof exp, "either \"%s\" or \"%s\"", a, b);
+        return cdl_scene_json_failf(ctx, p, exp, "both");
+    }
+    if (!na && !nb && required) {
+        snprintf(exp, sizeof exp, "exactly one of \"%s\" and \"%s\"", a, b);
+        return cdl_scene_json_failf(ctx, path, exp, "neither");
+    }
+    *which = na ? 0 : nb ? 1 : -1;
+    return CDL_OK;
+}
+
+static const cJSON *field(const cJSON *node, const char *path, const char *key, char *p)
+{
+    return cdl_scene_json_field(node, path, key, p);
+}
+
+/* An object with a "type" among `types` whose keys are all in keys[type]. */
+static cdl_status read_kind(const cdl_scene_parse *ctx, const cJSON *node, const char *path, const char *noun,
+                            const char *const *types, const char *const (*keys)[10], int *kind)
+{
+    char p[CDL_SCENE_PATH_MAX], what[64];
+    if (!cJSON_IsObject(node)) {
+        snprintf(what, sizeof what, "a %s (a JSON object)", noun);
+        return cdl_scene_json_fail(ctx, path, what, node);
+    }
+    if (cdl_scene_json_read_choice(ctx, field(node, path, "type", p), p, types, 1, kind) != CDL_OK)
+        return CDL_ERR_INPUT;
+    snprintf(what, sizeof what, "a %s %s", types[*kind], noun);
+    return cdl_scene_json_check_object(ctx, node, path, what, keys[*kind]);
+}
+
+/* ---- luminaires ----------------------------------------------------------------- */
+
+static const char *const luminaire_types[] = {"point", "spot", "goniometric", "area", "directional", "environment", NULL};
+static const char *const luminaire_keys[][10] = {
+    {"type", "position", "intensity_cd", "flux_lm", "maintenance_factor", NULL},
+    {"type", "position", "direction", "intensity_cd", "flux_lm", "half_angle", "falloff_start", "exponent",
+     "maintenance_factor", NULL},
+    {"type", "file", "position", "rotation", "multiplier", "flux_lm", "maintenance_factor", NULL},
+    {"type", "shape", "luminance_cd_m2", "flux_lm", "reflectance", "maintenance_factor", NULL},
+    {"type", "direction", "illuminance_lx", "maintenance_factor", NULL},
+    {"type", "luminance_cd_m2", "file", "scale", "up", "hemisphere", "maintenance_factor", NULL},
+};
+
+static cdl_status read_intensity(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                 cdl_luminaire_spec *out)
+{
+    char p[CDL_SCENE_PATH_MAX];
+    int which = -1;
+    if (one_of(ctx, node, path, "intensity_cd", "flux_lm", 1, &which) != CDL_OK) return CDL_ERR_INPUT;
+    out->has_intensity = which == 0;
+    out->has_flux = which == 1;
+    if (which == 0)
+        return cdl_scene_json_read_quantity(ctx, field(node, path, "intensity_cd", p), p, CDL_DIM_LUMINOUS_INTENSITY,
+                                            CDL_RANGE_NONNEGATIVE, 1, &out->intensity_cd);
+    return cdl_scene_json_read_quantity(ctx, field(node, path, "flux_lm", p), p, CDL_DIM_LUMINOUS_FLUX,
+                                        CDL_RANGE_NONNEGATIVE, 1, &out->flux_lm);
+}
+
+static cdl_status read_spot(const cdl_scene_parse *ctx, const cJSON *node, const char *path, cdl_luminaire_spec *out)
+{
+    char p[CDL_SCENE_PATH_MAX];
+    if (cdl_scene_json_read_vec3(ctx, field(node, path, "direction", p), p, 1, 1, &out->direction) != CDL_OK ||
+        read_intensity(ctx, node, path, out) != CDL_OK)
+        return CDL_ERR_INPUT;
+    out->direction = cdl_vec3_normalize(out->direction);
+    const cJSON *exponent = field(node, path, "exponent", p);
+    if (exponent) {
+        out->has_exponent = 1;
+        if (cdl_scene_json_read_number(ctx, exponent, p, CDL_RANGE_NONNEGATIVE, 1, &out->exponent) != CDL_OK)
+            return CDL_ERR_INPUT;
+        for (int i = 0; i < 2; ++i) {
+            const char *key = i ? "falloff_start" : "half_angle";
+            if (field(node, path, key, p))
+                return cdl_scene_json_failf(ctx, p, "no beam edge on a cos^n spot (\"exponent\" is given)",
+                                            "\"%s\"", key);
+        }
+        return CDL_OK;
+    }
+    const cJSON *half = field(node, path, "half_angle", p);
+    if (!cJSON_IsNumber(half) || !isfinite(half->valuedouble) || !(half->valuedouble > 0.0) ||
+        half->valuedouble > 180.0)
+        return cdl_scene_json_fail(ctx, p, "a half angle in (0, 180] degrees (or \"exponent\" instead)", half);
+    out->half_angle_deg = half->valuedouble;
+    out->falloff_start_deg = out->half_angle_deg;
+    const cJSON *falloff = field(node, path, "falloff_start", p);
+    if (falloff) {
+        if (!cJSON_IsNumber(falloff) || !isfinite(falloff->valuedouble) || falloff->valuedouble < 0.0 ||
+            falloff->valuedouble > out->half_angle_deg) {
+            char exp[96];
+            snprintf(exp, sizeof exp, "an angle in [0, half_angle = %.10g] degrees", out->half_angle_deg);
+            return cdl_scene_json_fail(ctx, p, exp, falloff);
+        }
+        out->falloff_start_deg = falloff->valuedouble;
+    }
+    return CDL_OK;
+}
+
+static cdl_status read_environment(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                   cdl_luminaire_spec *out)
+{
+    char p[CDL_SCENE_PATH_MAX];
+    int which = -1;
+    if (one_of(ctx, node, path, "luminance_cd_m2", "file", 1, &which) != CDL_OK) return CDL_ERR_INPUT;
+    if (which == 0) {
+        out->has_luminance = 1;
+        if (cdl_scene_json_read_quantity(ctx, field(node, path, "luminance_cd_m2", p), p, CDL_DIM_LUMINANCE,
+                                         CDL_RANGE_NONNEGATIVE, 1, &out->luminance_cd_m2) != CDL_OK)
+            return CDL_ERR_INPUT;
+        if (field(node, path, "scale", p))
+            return cdl_scene_json_failf(ctx, p, "\"scale\" only with an image \"file\"", "it with luminance_cd_m2");
+    } else {
+        if (cdl_scene_json_read_path(ctx, field(node, path, "file", p), p, 1, &out->file) != CDL_OK ||
+            cdl_scene_json_read_number(ctx, field(node, path, "scale", p), p, CDL_RANGE_NONNEGATIVE, 0, &out->scale) !=
+                CDL_OK)
+            return CDL_ERR_INPUT;
+    }
+    static const char *const hemispheres[] = {"full", "upper", NULL};
+    if (cdl_scene_json_read_vec3(ctx, field(node, path, "up", p), p, 1, 0, &out->up) != CDL_OK ||
+        cdl_scene_json_read_choice(ctx, field(node, path, "hemisphere", p), p, hemispheres, 0,
+                                   &out->upper_hemisphere_only) != CDL_OK)
+        return CDL_ERR_INPUT;
+    out->up = cdl_vec3_normalize(out->up);
+    return CDL_OK;
+}
+
+static cdl_status read_luminaire(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                 cdl_luminaire_spec *out)
+{
+    char p[CDL_SCENE_PATH_MAX];
+    cdl_scene_json_copy_path(out->json_path, path);
+    out->multiplier = 1.0;
+    out->maintenance_factor = 1.0;
+    out->scale = 1.0;
+    out->up = cdl_vec3_make(0, 0, 1);
+    int kind = 0;
+    if (read_kind(ctx, node, path, "luminaire", luminaire_types, luminaire_keys, &kind) != CDL_OK) return CDL_ERR_INPUT;
+    out->kind = (cdl_luminaire_kind)kind;
+    if (cdl_scene_json_read_number(ctx, field(node, path, "maintenance_factor", p), p, CDL_RANGE_UNIT_OPEN0, 0,
+                                   &out->maintenance_factor) != CDL_OK)
+        return CDL_ERR_INPUT;
+    switch (out->kind) {
+    case CDL_LUMINAIRE_POINT:
+        if (cdl_scene_json_read_vec3(ctx, field(node, path, "position", p), p, 0, 1, &out->position) != CDL_OK)
+            return CDL_ERR_INPUT;
+        return read_intensity(ctx, node, path, out);
+    case CDL_LUMINAIRE_SPOT:
+        if (cdl_scene_json_read_vec3(ctx, field(node, path, "position", p), p, 0, 1, &out->position) != CDL_OK)
+            return CDL_ERR_INPUT;
+        return read_spot(ctx, node, path, out);
+    case CDL_LUMINAIRE_GONIOMETRIC: {
+        cdl_vec3 rotation = cdl_vec3_make(0, 0, 0);
+        if (cdl_scene_json_read_path(ctx, field(node, path, "file", p), p, 1, &out->file) != CDL_OK ||
+            cdl_scene_json_read_vec3(ctx, field(node, path, "position", p), p, 0, 1, &out->position) != CDL_OK ||
+            cdl_scene_json_read_vec3(ctx, field(node, path, "rotation", p), p, 0, 0, &rotation) != CDL_OK ||
+            cdl_scene_json_read_number(ctx, field(node, path, "multiplier", p), p, CDL_RANGE_NONNEGATIVE, 0,
+                                       &out->multiplier) != CDL_OK)
+            return CDL_ERR_INPUT;
+        out->rotation_deg[0] = rotation.x;
+        out->rotation_deg[1] = rotation.y;
+        out->rotation_deg[2] = rotation.z;
+        const cJSON *flux = field(node, path, "flux_lm", p);
+        out->has_flux = flux != NULL;
+        return cdl_scene_json_read_quantity(ctx, flux, p, CDL_DIM_LUMINOUS_FLUX, CDL_RANGE_POSITIVE, 0, &out->flux_lm);
+    }
+    case CDL_LUMINAIRE_AREA: {
+        int which = -1;
+        if (cdl_scene_json_read_surface(ctx, field(node, path, "shape", p), p, CDL_SHAPE_USE_LUMINAIRE, &out->shape) !=
+                CDL_OK ||
+            one_of(ctx, node, path, "luminance_cd_m2", "flux_lm", 1, &which) != CDL_OK ||
+            cdl_scene_json_read_number(ctx, field(node, path, "reflectance", p), p, CDL_RANGE_UNIT, 0,
+                                       &out->reflectance) != CDL_OK)
+            return CDL_ERR_INPUT;
+        out->has_luminance = which == 0;
+        out->has_flux = which == 1;
+        if (which == 0)
+            return cdl_scene_json_read_quantity(ctx, field(node, path, "luminance_cd_m2", p), p, CDL_DIM_LUMINANCE,
+                                                CDL_RANGE_NONNEGATIVE, 1, &out->luminance_cd_m2);
+        return cdl_scene_json_read_quantity(ctx, field(node, path, "flux_lm", p), p, CDL_DIM_LUMINOUS_FLUX,
+                                            CDL_RANGE_NONNEGATIVE, 1, &out->flux_lm);
+    }
+    case CDL_LUMINAIRE_DIRECTIONAL:
+        if (cdl_scene_json_read_vec3(ctx, field(node, path, "direction", p), p, 1, 1, &out->direction) != CDL_OK)
+            return CDL_ERR_INPUT;
+        out->direction = cdl_vec3_normalize(out->direction);
+        return cdl_scene_json_read_quantity(ctx, field(node, path, "illuminance_lx", p), p, CDL_DIM_ILLUMINANCE,
+                                            CDL_RANGE_NONNEGATIVE, 1, &out->illuminance_lx);
+    case CDL_LUMINAIRE_ENVIRONMENT:
+        return read_environment(ctx, node, path, out);
+    }
+    return CDL_OK;
+}
+
+/* ---- grids ------------------------------------------------------------------------ */
+
+static const char *const grid_types[] = {"rect", "polygon", "points", NULL};
+static const char *const grid_keys[][10] = {
+    {"name", "type", "origin", "u", "v", "nu", "nv", "normal", "outputs", NULL},
+    {"name", "type", "vertices", "holes", "spacing", "normal", "outputs", NULL},
+    {"name", "type", "points", "outputs", NULL},
+};
+
+static int grid_name_ok(const char *name)
+{
+    size_t n = strlen(name);
+    if (n == 0 || n > GRID_NAME_MAX || name[0] == '.' || name[0] == '-') return 0;
+    for (size_t i = 0; i < n; ++i)
+        if (!isalnum((unsigned char)name[i]) && name[i] != '.' && name[i] != '_' && name[i] != '-') return 0;
+    return 1;
+}
+
+static int names_equal_ignoring_case(const char *a, const char *b)
+{
+    for (; *a && *b; ++a, ++b)
+        if (tolower((unsigned char)*a) != tolower((unsigned char)*b)) return 0;
+    return *a == *b;
+}
+
+static cdl_status read_grid_points(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                   cdl_grid_spec *out)
+{
+    if (cdl_scene_json_check_array(ctx, node, path, "a non-empty list of points {\"p\": [x, y, z], \"n\": [nx, ny, nz]}",
+                                   1) != CDL_OK)
+        return CDL_ERR_INPUT;
+    size_t n = (size_t)cJSON_GetArraySize(node);
+    if (n > CDL_GRID_MAX_POINTS)
+        return cdl_scene_json_failf(ctx, path, "at most 10000000 points", "%zu", n);
+    out->points = malloc(n * sizeof *out->points);
+    out->normals = malloc(n * sizeof *out->normals);
+    if (!out->points || !out->normals) return cdl_error_out_of_memory(ctx->err);
+    static const char *const keys[] = {"p", "n", NULL};
+    size_t i = 0;
+    char item[CDL_SCENE_PATH_MAX], p[CDL_SCENE_PATH_MAX];
+    for (const cJSON *e = node->child; e; e = e->next, ++i) {
+        cdl_scene_json_path_index(item, path, i);
+        if (cdl_scene_json_check_object(ctx, e, item, "a calculation point", keys) != CDL_OK ||
+            cdl_scene_json_read_vec3(ctx, field(e, item, "p", p), p, 0, 1, &out->points[i]) != CDL_OK ||
+            cdl_scene_json_read_vec3(ctx, field(e, item, "n", p), p, 1, 1, &out->normals[i]) != CDL_OK)
+            return CDL_ERR_INPUT;
+        out->normals[i] = cdl_vec3_normalize(out->normals[i]);
+    }
+    out->point_count = n;
+    return CDL_OK;
+}
+
+static cdl_status read_grid_outputs(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                    cdl_grid_spec *out)
+{
+    if (!node) return CDL_OK;
+    if (cdl_scene_json_check_array(ctx, node, path, "a list of extra outputs ([\"ao\"])", 0) != CDL_OK)
+        return CDL_ERR_INPUT;
+    static const char *const outputs[] = {"ao", NULL};
+    size_t i = 0;
+    char item[CDL_SCENE_PATH_MAX];
+    for (const cJSON *e = node->child; e; e = e->next, ++i) {
+        int which = 0;
+        cdl_scene_json_path_index(item, path, i);
+        if (cdl_scene_json_read_choice(ctx, e, item, outputs, 1, &which) != CDL_OK) return CDL_ERR_INPUT;
+        if (out->want_ao) return cdl_scene_json_fail(ctx, item, "each output named once", e);
+        out->want_ao = 1;
+    }
+    return CDL_OK;
+}
+
+static cdl_status read_grid(const cdl_scene_parse *ctx, const cJSON *node, const char *path, cdl_grid_spec *out)
+{
+    char p[CDL_SCENE_PATH_MAX];
+    cdl_scene_json_copy_path(out->json_path, path);
+    int kind = 0;
+    if (read_kind(ctx, node, path, "grid", grid_types, grid_keys, &kind) != CDL_OK) return CDL_ERR_INPUT;
+    out->kind = (cdl_grid_kind)kind;
+    const cJSON *name = field(node, path, "name", p);
+    if (!cJSON_IsString(name) || !grid_name_ok(name->valuestring))
+        return cdl_scene_json_fail(ctx, p,
+                                   "a grid name usable as a file name (1 to 64 letters, digits, '.', '_', '-', not "
+                                   "starting with '.' or '-')",
+                                   name);
+    if (cdl_scene_json_read_string(ctx, name, p, 1, &out->name) != CDL_OK ||
+        read_grid_outputs(ctx, field(node, path, "outputs", p), p, out) != CDL_OK)
+        return CDL_ERR_INPUT;
+    switch (out->kind) {
+    case CDL_GRID_RECT: {
+        double nu = 0, nv = 0;
+        if (cdl_scene_json_read_span(ctx, node, path, &out->origin, &out->u, &out->v) != CDL_OK ||
+            cdl_scene_json_read_integer(ctx, field(node, path, "nu", p), p, 1, CDL_GRID_MAX_POINTS, 1, &nu) != CDL_OK ||
+            cdl_scene_json_read_integer(ctx, field(node, path, "nv", p), p, 1, CDL_GRID_MAX_POINTS, 1, &nv) != CDL_OK)
+            return CDL_ERR_INPUT;
+        if (nu * nv > CDL_GRID_MAX_POINTS)
+            return cdl_scene_json_failf(ctx, p, "nu x nv at most 10000000 points", "%.0f x %.0f", nu, nv);
+        out->nu = (int)nu;
+        out->nv = (int)nv;
+        break;
+    }
+    case CDL_GRID_POLYGON: {
+        if (cdl_scene_json_read_polygon(ctx, node, path, &out->outer, &out->holes, &out->hole_count) != CDL_OK)
+            return CDL_ERR_INPUT;
+        const cJSON *spacing = field(node, path, "spacing", p);
+        out->spacing = 0.0;
+        if (spacing && !(cJSON_IsString(spacing) && strcmp(spacing->valuestring, "auto") == 0) &&
+            (!cJSON_IsNumber(spacing) || !isfinite(spacing->valuedouble) || !(spacing->valuedouble > 0.0) ||
+             spacing->valuedouble > CDL_SCENE_MAX_MAGNITUDE))
+            return cdl_scene_json_fail(ctx, p, "a spacing in metres > 0 or \"auto\"", spacing);
+        if (cJSON_IsNumber(spacing)) out->spacing = spacing->valuedouble;
+        break;
+    }
+    case CDL_GRID_POINTS:
+        return read_grid_points(ctx, field(node, path, "points", p), p, out);
+    }
+    const cJSON *normal = field(node, path, "normal", p);
+    out->has_normal = normal != NULL;
+    if (cdl_scene_json_read_vec3(ctx, normal, p, 1, 0, &out->normal) != CDL_OK) return CDL_ERR_INPUT;
+    out->normal = cdl_vec3_normalize(out->normal);
+    return CDL_OK;
+}
+
+/* ---- solver settings --------------------------------------------------------------- */
+
+static cdl_status read_settings(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                cdl_solver_settings *out)
+{
+    static const char *const keys[] = {"method", "quality", "bounces", "seed", "threads", "direct_samples",
+                                       "ao_samples", NULL};
+    char p[CDL_SCENE_PATH_MAX];
+    out->method = CDL_METHOD_AUTO;
+    out->quality = CDL_QUALITY_NORMAL;
+    out->bounces = 5;
+    out->seed = 1;
+    out->threads = 0;
+    if (!node) return CDL_OK;
+    int method = 0, quality = 1;
+    double bounces = 5, seed = 1, threads = 0, direct = 0, ao = 0;
+    if (cdl_scene_json_check_object(ctx, node, path, "the solver settings", keys) != CDL_OK ||
+        cdl_scene_json_read_choice(ctx, field(node, path, "method", p), p, method_names, 0, &method) != CDL_OK ||
+        cdl_scene_json_read_choice(ctx, field(node, path, "quality", p), p, quality_names, 0, &quality) != CDL_OK ||
+        cdl_scene_json_read_integer(ctx, field(node, path, "bounces", p), p, 0, 10000, 0, &bounces) != CDL_OK ||
+        /* 2^53: every integer up to it is exact in a JSON (double) number. */
+        cdl_scene_json_read_integer(ctx, field(node, path, "seed", p), p, 0, 9007199254740992.0, 0, &seed) != CDL_OK ||
+        cdl_scene_json_read_integer(ctx, field(node, path, "threads", p), p, 0, 4096, 0, &threads) != CDL_OK ||
+        cdl_scene_json_read_integer(ctx, field(node, path, "direct_samples", p), p, 1, CDL_SCENE_MAX_SAMPLES, 0,
+                                    &direct) != CDL_OK ||
+        cdl_scene_json_read_integer(ctx, field(node, path, "ao_samples", p), p, 1, CDL_SCENE_MAX_SAMPLES, 0, &ao) !=
+            CDL_OK)
+        return CDL_ERR_INPUT;
+    out->method = (cdl_method)method;
+    out->quality = (cdl_quality)quality;
+    out->bounces = (int)bounces;
+    out->seed = (uint64_t)seed;
+    out->threads = (int)threads;
+    out->direct_samples = (int)direct;
+    out->ao_samples = (int)ao;
+    return CDL_OK;
+}
+
+/* ---- the document ------------------------------------------------------------------ */
+
+/* Allocate *items for the array `node` (optional unless min_count > 0). */
+static cdl_status array_items(const cdl_scene_parse *ctx, const cJSON *node, const char *path, const char *expected,
+                              size_t min_count, size_t item_size, void **items, size_t *count)
+{
+    *count = 0;
+    if (!node && min_count == 0) return CDL_OK;
+    if (cdl_scene_json_check_array(ctx, node, path, expected, min_count) != CDL_OK) return CDL_ERR_INPUT;
+    size_t n = (size_t)cJSON_GetArraySize(node);
+    *items = calloc(n ? n : 1, item_size);
+    if (!*items) return cdl_error_out_of_memory(ctx->err);
+    *count = n;
+    return CDL_OK;
+}
+
+static cdl_status read_document(const cdl_scene_parse *ctx, const cJSON *root, cdl_scene *scene)
+{
+    static const char *const keys[] = {"version", "surfaces", "luminaires", "grids", "solver", NULL};
+    char p[CDL_SCENE_PATH_MAX], item[CDL_SCENE_PATH_MAX];
+    if (cdl_scene_json_check_object(ctx, root, "", "a scene", keys) != CDL_OK) return CDL_ERR_INPUT;
+    const cJSON *version = field(root, "", "version", p);
+    if (!cJSON_IsNumber(version) || version->valuedouble != 1.0)
+        return cdl_scene_json_fail(ctx, p, "the scene format version 1", version);
+
+    const cJSON *list = field(root, "", "surfaces", p);
+    if (array_items(ctx, list, p, "a list of surfaces", 0, sizeof *scene->surfaces, (void **)&scene->surfaces,
+                    &scene->surface_count) != CDL_OK)
+        return CDL_ERR_INPUT;
+    size_t i = 0;
+    for (const cJSON *e = list ? list->child : NULL; e; e = e->next, ++i) {
+        cdl_scene_json_path_index(item, p, i);
+        if (cdl_scene_json_read_surface(ctx, e, item, CDL_SHAPE_USE_SURFACE, &scene->surfaces[i]) != CDL_OK)
+            return CDL_ERR_INPUT;
+    }
+
+    list = field(root, "", "luminaires", p);
+    if (array_items(ctx, list, p, "a list of luminaires", 0, sizeof *scene->luminaires, (void **)&scene->luminaires,
+                    &scene->luminaire_count) != CDL_OK)
+        return CDL_ERR_INPUT;
+    i = 0;
+    for (const cJSON *e = list ? list->child : NULL; e; e = e->next, ++i) {
+        cdl_scene_json_path_index(item, p, i);
+        if (read_luminaire(ctx, e, item, &scene->luminaires[i]) != CDL_OK) return CDL_ERR_INPUT;
+    }
+
+    list = field(root, "", "grids", p);
+    if (array_items(ctx, list, p, "a list of at least one calculation grid", 1, sizeof *scene->grids,
+                    (void **)&scene->grids, &scene->grid_count) != CDL_OK)
+        return CDL_ERR_INPUT;
+    i = 0;
+    for (const cJSON *e = list->child; e; e = e->next, ++i) {
+        cdl_scene_json_path_index(item, p, i);
+        if (read_grid(ctx, e, item, &scene->grids[i]) != CDL_OK) return CDL_ERR_INPUT;
+        for (size_t k = 0; k < i; ++k)
+            if (names_equal_ignoring_case(scene->grids[k].name, scene->grids[i].name)) {
+                cdl_scene_json_path_key(p, item, "name");
+                return cdl_scene_json_failf(ctx, p, "a grid name not used before (ignoring case)",
+                                            "\"%s\", already the name of grids[%zu]", scene->grids[i].name, k);
+            }
+    }
+    return read_settings(ctx, field(root, "", "solver", p), p, &scene->settings);
+}
+
+/* Line and column (1-based) of byte `offset` in text. */
+static void line_column(const char *text, size_t offset, size_t *line, size_t *column)
+{
+    *line = 1;
+    *column = 1;
+    for (size_t i = 0; i < offset && text[i]; ++i) {
+        if (text[i] == '\n') {
+            ++*line;
+            *column = 1;
+        } else {
+            ++*column;
+        }
+    }
+}
+
+/* cJSON reports where it gave up, which is at or shortly after the error. */
+static cdl_status json_syntax_error(cdl_error *err, const char *file, const char *text, size_t size, size_t offset)
+{
+    size_t line, column;
+    line_column(text, offset, &line, &column);
+    char near[48];
+    size_t k = 0;
+    for (size_t i = offset; i < size && k + 4 < sizeof near && text[i] != '\n'; ++i)
+        near[k++] = isprint((unsigned char)text[i]) ? text[i] : '?';
+    near[k] = '\0';
+    if (offset >= size)
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "%s:%zu:%zu: invalid JSON: expected a well-formed JSON document, found a syntax error at "
+                             "or before the end of the file",
+                             file, line, column);
+    return cdl_error_set(err, CDL_ERR_INPUT,
+                         "%s:%zu:%zu: invalid JSON: expected a well-formed JSON document, found a syntax error at or "
+                         "before \"%s\"",
+                         file, line, column, near);
+}
+
+static char *copy_string(const char *s, size_t n)
+{
+    char *c = malloc(n + 1);
+    if (c) {
+        memcpy(c, s, n);
+        c[n] = '\0';
+    }
+    return c;
+}
+
+cdl_status cdl_scene_load_string(const char *json, const char *path, cdl_scene **out, cdl_error *err)
+{
+    *out = NULL;
+    if (!path) path = "scene.json";
+    cdl_scene *scene = calloc(1, sizeof *scene);
+    if (!scene) return cdl_error_out_of_memory(err);
+    const char *slash = strrchr(path, '/');
+    scene->path = copy_string(path, strlen(path));
+    scene->base_dir = !slash ? copy_string(".", 1) : slash == path ? copy_string("/", 1)
+                                                                   : copy_string(path, (size_t)(slash - path));
+    if (!scene->path || !scene->base_dir) {
+        cdl_scene_release(scene);
+        return cdl_error_out_of_memory(err);
+    }
+
+    size_t size = strlen(json);
+    size_t skip = size >= 3 && memcmp(json, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0; /* UTF-8 byte-order mark */
+    const char *end = NULL;
+    cJSON *root = cJSON_ParseWithOpts(json + skip, &end, 1);
+    if (!root) {
+        size_t offset = end && end >= json + skip ? (size_t)(end - json) : skip;
+        cdl_status st = json_syntax_error(err, path, json, size, offset);
+        cdl_scene_release(scene);
+        return st;
+    }
+    cdl_scene_parse ctx = {path, scene->base_dir, err};
+    cdl_status st = read_document(&ctx, root, scene);
+    cJSON_Delete(root);
+    if (st != CDL_OK) {
+        cdl_scene_release(scene);
+        return st;
+    }
+    *out = scene;
+    return CDL_OK;
+}
+
+cdl_status cdl_scene_load(const char *path, cdl_scene **out, cdl_error *err)
+{
+    *out = NULL;
+    char *text = NULL;
+    size_t size = 0;
+    cdl_status read = cdl_file_read_bytes(path, "scene file", CDL_SCENE_MAX_JSON_BYTES, &text, &size, err);
+    if (read != CDL_OK) return read;
+    const char *nul = memchr(text, '\0', size);
+    if (nul) {
+        size_t line, column;
+        line_column(text, (size_t)(nul - text), &line, &column);
+        free(text);
+        return cdl_error_set(err, CDL_ERR_INPUT, "%s:%zu:%zu: invalid JSON: expected text, found a NUL byte", path,
+                             line, column);
+    }
+    cdl_status st = cdl_scene_load_string(text, path, out, err);
+    free(text);
+    return st;
+}
+
+void cdl_scene_release(cdl_scene *scene)
+{
+    if (!scene) return;
+    for (size_t i = 0; i < scene->surface_count; ++i) cdl_scene_surface_spec_free(&scene->surfaces[i]);
+    free(scene->surfaces);
+    for (size_t i = 0; i < scene->luminaire_count; ++i) {
+        free(scene->luminaires[i].file);
+        cdl_scene_surface_spec_free(&scene->luminaires[i].shape);
+    }
+    free(scene->luminaires);
+    for (size_t i = 0; i < scene->grid_count; ++i) {
+        cdl_grid_spec *g = &scene->grids[i];
+        free(g->name);
+        cdl_scene_rings_free(&g->outer, g->holes, g->hole_count);
+        free(g->points);
+        free(g->normals);
+    }
+    free(scene->grids);
+    free(scene->path);
+    free(scene->base_dir);
+    free(scene);
+}
