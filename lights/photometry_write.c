@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "lights/photometry_writer.h"
+#include "radiometry/atomic_file.h"
 
 void cdl_photometry_notes_free(cdl_photometry_notes *notes)
 {
@@ -99,29 +100,22 @@ cdl_status cdl_photometry_write_file(const cdl_photometry *p, const char *path, 
     else st = cdl_error_set(err, CDL_ERR_USAGE, "%s: can write IES or EULUMDAT only", path);
     if (st != CDL_OK) return st;
 
-    /* No half-written output: a temporary file in the same folder, renamed over the target. */
-    size_t plen = strlen(path);
-    char *tmp = malloc(plen + 16);
-    if (!tmp) {
-        free(text);
-        return cdl_error_out_of_memory(err);
-    }
-    memcpy(tmp, path, plen);
-    memcpy(tmp + plen, ".tmp-XXXXXX", 12);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        st = cdl_error_set(err, CDL_ERR_INPUT, "%s: cannot create a file there: %s", path, strerror(errno));
+    /* No half-written output (radiometry/atomic_file.h). A file that cannot
+     * be created there (a missing or read-only folder) is the user's path
+     * to fix: bad input; failing writes and syncs stay internal failures. */
+    cdl_atomic_file out;
+    st = cdl_atomic_file_open(&out, path, err);
+    if (st != CDL_OK) {
+        st = CDL_ERR_INPUT;
+        if (err) err->status = st;
     } else {
-        FILE *f = fdopen(fd, "wb");
-        int ok = f && fwrite(text, 1, len, f) == len;
-        if (f) ok = fclose(f) == 0 && ok;
-        else close(fd);
-        if (!ok) st = cdl_error_set(err, CDL_ERR_INTERNAL, "%s: write failed: %s", path, strerror(errno));
-        else if (rename(tmp, path) != 0)
-            st = cdl_error_set(err, CDL_ERR_INPUT, "%s: cannot write: %s", path, strerror(errno));
-        if (st != CDL_OK) remove(tmp);
+        if (len > 0 && fwrite(text, 1, len, out.fp) != len) {
+            cdl_atomic_file_abort(&out);
+            st = cdl_error_set(err, CDL_ERR_INTERNAL, "%s: write failed", path);
+        } else {
+            st = cdl_atomic_file_commit(&out, err);
+        }
     }
-    free(tmp);
     free(text);
     return st;
 }

@@ -52,6 +52,7 @@ const char *cdl_status_name(cdl_status status)
     case CDL_ERR_INPUT: return "bad input";
     case CDL_ERR_USAGE: return "usage error";
     case CDL_ERR_INTERNAL: return "internal or resource failure";
+    case CDL_ERR_CANCELLED: return "cancelled";
     }
     return "unknown status";
 }

@@ -18,7 +18,9 @@ typedef enum cdl_status {
     CDL_OK = 0,            /* success */
     CDL_ERR_INPUT = 1,     /* bad input: a file, scene or value the user gave */
     CDL_ERR_USAGE = 2,     /* the call itself was wrong (bad option, missing argument) */
-    CDL_ERR_INTERNAL = 3   /* internal or resource failure: memory, I/O, a library */
+    CDL_ERR_INTERNAL = 3,  /* internal or resource failure: memory, I/O, a library */
+    CDL_ERR_CANCELLED = 4  /* the caller's progress callback asked to stop (library calls only:
+                            * the command line never cancels, so it never exits with 4) */
 } cdl_status;
 
 #define CDL_ERROR_MESSAGE_SIZE 1024

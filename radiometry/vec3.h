@@ -45,6 +45,8 @@ static inline cdl_vec3 cdl_vec3_normalize(cdl_vec3 a)
     return cdl_vec3_scale(a, 1.0 / len);
 }
 static inline double cdl_vec3_distance(cdl_vec3 a, cdl_vec3 b) { return cdl_vec3_length(cdl_vec3_sub(a, b)); }
+/* Component k (0: x, 1: y, 2: z). */
+static inline double cdl_vec3_axis(cdl_vec3 a, int k) { return k == 0 ? a.x : (k == 1 ? a.y : a.z); }
 static inline int cdl_vec3_is_finite(cdl_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
 #endif

@@ -1,27 +1,20 @@
-/* solve.c - the direct-illuminance solve: plan, compute on threads, collect. */
+/* solve.c - the solve: choose the method, plan each light per grid, dispatch, collect. */
 #include "solver/solve.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>
-#include <pthread.h>
-#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include <unistd.h>
 
 #include "radiometry/constants.h"
 #include "radiometry/rng.h"
 #include "solver/direct/direct.h"
+#include "solver/direct/direct_grid.h"
 #include "solver/geometry/occluder_index.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_lights.h"
-
-const char *cdl_default_ocio_config(void)
-{
-    return CANDELA_DEFAULT_OCIO_CONFIG;
-}
+#include "solver/scene/scene_occluders.h"
 
 /* Sample counts implied by the quality level (explicit knobs override).
  * Direct: per partly hidden extended light and point; the standard error of
@@ -97,227 +90,6 @@ static cdl_status choose_method(const cdl_scene *scene, cdl_method *method, cJSO
     return cdl_error_set(err, CDL_ERR_INTERNAL, "unknown method");
 }
 
-static int cpu_count(void)
-{
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n > 0 ? (int)n : 1;
-}
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-/* ---- occluder index from the geometry pieces ------------------------------ */
-
-static cdl_status build_occluders(const cdl_scene_geometry *g, cdl_occluder_index **out, cdl_error *err)
-{
-    size_t pieces = cdl_scene_geometry_piece_count(g);
-    size_t tri_cap = 0, vert_cap = 0, sph = 0;
-    /* Disks enter as circumscribed 32-gons: a superset, so never a missed occluder. */
-    const int disk_sides = 32;
-    for (size_t i = 0; i < pieces; ++i) {
-        const cdl_shape *s = &cdl_scene_geometry_piece(g, i)->shape;
-        switch (s->kind) {
-        case CDL_SHAPE_TRIANGLES: tri_cap += s->triangle_count; vert_cap += s->vertex_count; break;
-        case CDL_SHAPE_RECT: tri_cap += 2; vert_cap += 4; break;
-        case CDL_SHAPE_DISK: tri_cap += disk_sides; vert_cap += disk_sides + 1; break;
-        case CDL_SHAPE_SPHERE: sph++; break;
-        }
-    }
-    double *v = malloc((vert_cap + 1) * 3 * sizeof(double));
-    uint32_t *t = malloc((tri_cap + 1) * 3 * sizeof(uint32_t));
-    uint32_t *towner = malloc((tri_cap + 1) * sizeof(uint32_t));
-    double *sc = malloc((sph + 1) * 3 * sizeof(double));
-    double *sr = malloc((sph + 1) * sizeof(double));
-    uint32_t *sowner = malloc((sph + 1) * sizeof(uint32_t));
-    cdl_status st = CDL_OK;
-    if (!v || !t || !towner || !sc || !sr || !sowner) {
-        st = cdl_error_out_of_memory(err);
-        goto done;
-    }
-    size_t nv = 0, nt = 0, ns = 0;
-#define PUSH_V(p)                  \
-    do {                           \
-        v[3 * nv] = (p).x;         \
-        v[3 * nv + 1] = (p).y;     \
-        v[3 * nv + 2] = (p).z;     \
-        nv++;                      \
-    } while (0)
-#define PUSH_T(a, b, c, o)         \
-    do {                           \
-        t[3 * nt] = (uint32_t)(a); \
-        t[3 * nt + 1] = (uint32_t)(b); \
-        t[3 * nt + 2] = (uint32_t)(c); \
-        towner[nt] = (o);          \
-        nt++;                      \
-    } while (0)
-    for (size_t i = 0; i < pieces; ++i) {
-        const cdl_shape *s = &cdl_scene_geometry_piece(g, i)->shape;
-        uint32_t o = (uint32_t)i;
-        size_t base = nv;
-        switch (s->kind) {
-        case CDL_SHAPE_TRIANGLES:
-            for (size_t k = 0; k < s->vertex_count; ++k)
-                PUSH_V(cdl_vec3_make(s->vertices[3 * k], s->vertices[3 * k + 1], s->vertices[3 * k + 2]));
-            for (size_t k = 0; k < s->triangle_count; ++k)
-                PUSH_T(base + s->triangles[3 * k], base + s->triangles[3 * k + 1], base + s->triangles[3 * k + 2], o);
-            break;
-        case CDL_SHAPE_RECT:
-            PUSH_V(s->origin);
-            PUSH_V(cdl_vec3_add(s->origin, s->u));
-            PUSH_V(cdl_vec3_add(cdl_vec3_add(s->origin, s->u), s->v));
-            PUSH_V(cdl_vec3_add(s->origin, s->v));
-            PUSH_T(base, base + 1, base + 2, o);
-            PUSH_T(base, base + 2, base + 3, o);
-            break;
-        case CDL_SHAPE_DISK: {
-            cdl_vec3 n = cdl_vec3_normalize(s->normal);
-            cdl_vec3 e1 = fabs(n.x) < 0.9 ? cdl_vec3_normalize(cdl_vec3_cross(n, cdl_vec3_make(1, 0, 0)))
-                                          : cdl_vec3_normalize(cdl_vec3_cross(n, cdl_vec3_make(0, 1, 0)));
-            cdl_vec3 e2 = cdl_vec3_cross(n, e1);
-            double R = s->radius / cos(CDL_PI / disk_sides);
-            PUSH_V(s->center);
-            for (int k = 0; k < disk_sides; ++k) {
-                double a = CDL_TWO_PI * k / disk_sides;
-                PUSH_V(cdl_vec3_add(s->center, cdl_vec3_add(cdl_vec3_scale(e1, R * cos(a)), cdl_vec3_scale(e2, R * sin(a)))));
-            }
-            for (int k = 0; k < disk_sides; ++k) PUSH_T(base, base + 1 + k, base + 1 + (k + 1) % disk_sides, o);
-            break;
-        }
-        case CDL_SHAPE_SPHERE:
-            sc[3 * ns] = s->center.x;
-            sc[3 * ns + 1] = s->center.y;
-            sc[3 * ns + 2] = s->center.z;
-            sr[ns] = s->radius;
-            sowner[ns] = o;
-            ns++;
-            break;
-        }
-    }
-#undef PUSH_V
-#undef PUSH_T
-    cdl_occluder_input in = {v, t, towner, nt, sc, sr, sowner, ns};
-    st = cdl_occluder_index_build(&in, out, err);
-done:
-    free(v);
-    free(t);
-    free(towner);
-    free(sc);
-    free(sr);
-    free(sowner);
-    return st;
-}
-
-/* ---- the worker pool -------------------------------------------------------- */
-
-typedef struct grid_job {
-    const cdl_direct_context *ctx;
-    const cdl_light_strategy *strategies;
-    cdl_grid_solution *gs;
-    size_t grid_index;
-    int want_ao;
-    atomic_size_t next;           /* next chunk start */
-    size_t chunk;
-} grid_job;
-
-
-typedef struct worker_state {
-    grid_job *job;
-    cdl_direct_sample_stats stats;
-    uint32_t *active;             /* light indices for the current chunk */
-    cdl_direct_scratch scratch;
-    cdl_status status;            /* CDL_OK unless the worker failed */
-    cdl_error err;
-} worker_state;
-
-static void *worker_main(void *arg)
-{
-    worker_state *w = arg;
-    grid_job *job = w->job;
-    const cdl_grid *grid = &job->gs->grid;
-    for (;;) {
-        size_t start = atomic_fetch_add(&job->next, job->chunk);
-        if (start >= grid->count) break;
-        size_t end = start + job->chunk < grid->count ? start + job->chunk : grid->count;
-        /* Skip, once for the whole chunk, the lights that cannot reach it. */
-        cdl_vec3 lo = grid->points[start], hi = grid->points[start];
-        for (size_t i = start + 1; i < end; ++i) {
-            cdl_vec3 q = grid->points[i];
-            lo.x = q.x < lo.x ? q.x : lo.x;
-            lo.y = q.y < lo.y ? q.y : lo.y;
-            lo.z = q.z < lo.z ? q.z : lo.z;
-            hi.x = q.x > hi.x ? q.x : hi.x;
-            hi.y = q.y > hi.y ? q.y : hi.y;
-            hi.z = q.z > hi.z ? q.z : hi.z;
-        }
-        size_t active = cdl_direct_select_lights(job->ctx, cdl_vec3_scale(cdl_vec3_add(lo, hi), 0.5),
-                                                 0.5 * cdl_vec3_distance(lo, hi), w->active);
-        uint64_t streams[CDL_DIRECT_CHUNK_MAX];
-        double var[CDL_DIRECT_CHUNK_MAX];
-        for (size_t i = start; i < end; ++i)
-            streams[i - start] =
-                cdl_rng_stream_id((uint64_t)job->grid_index, (uint64_t)i, 0x6772696470ull /* "gridp" */);
-        w->status = cdl_direct_illuminance_chunk(job->ctx, job->strategies, w->active, active, streams,
-                                                 grid->points + start, grid->normals + start, end - start,
-                                                 job->gs->E + start, var, &w->stats, &w->scratch, &w->err);
-        if (w->status != CDL_OK) break;
-        for (size_t i = start; i < end; ++i) {
-            job->gs->E_direct[i] = job->gs->E[i];
-            job->gs->E_indirect[i] = 0.0;
-            job->gs->E_stderr[i] = sqrt(var[i - start]);
-            if (job->want_ao)
-                job->gs->ao[i] = cdl_direct_ambient_occlusion(job->ctx, streams[i - start], grid->points[i],
-                                                              grid->normals[i], &w->stats);
-        }
-    }
-    return NULL;
-}
-
-static cdl_status run_grid(grid_job *job, int threads, cdl_direct_sample_stats *total, cdl_error *err)
-{
-    worker_state *ws = calloc((size_t)threads, sizeof *ws);
-    pthread_t *tid = calloc((size_t)threads, sizeof *tid);
-    if (!ws || !tid) {
-        free(ws);
-        free(tid);
-        return cdl_error_out_of_memory(err);
-    }
-    int started = 0;
-    uint32_t *active = malloc((size_t)threads * (job->ctx->light_count + 1) * sizeof(uint32_t));
-    if (!active) {
-        free(ws);
-        free(tid);
-        return cdl_error_out_of_memory(err);
-    }
-    for (int i = 0; i < threads; ++i) {
-        ws[i].job = job;
-        ws[i].active = active + (size_t)i * (job->ctx->light_count + 1);
-        if (i == 0) continue; /* the calling thread works too */
-        if (pthread_create(&tid[i], NULL, worker_main, &ws[i]) != 0) break;
-        started = i;
-    }
-    worker_main(&ws[0]);
-    for (int i = 1; i <= started; ++i) pthread_join(tid[i], NULL);
-    cdl_status st = CDL_OK;
-    for (int i = 0; i < threads; ++i) {
-        total->rays += ws[i].stats.rays;
-        total->exact_evaluations += ws[i].stats.exact_evaluations;
-        total->sampled_evaluations += ws[i].stats.sampled_evaluations;
-        if (st == CDL_OK && ws[i].status != CDL_OK) {
-            st = ws[i].status;
-            if (err) *err = ws[i].err;
-        }
-        cdl_direct_scratch_release(&ws[i].scratch);
-    }
-    free(active);
-    free(ws);
-    free(tid);
-    return st;
-}
-
 /* ---- results a double cannot hold ------------------------------------------------ */
 
 /* A light closer to a grid point than a double's range allows (1e-200 m)
@@ -352,47 +124,11 @@ static cdl_status check_finite(const cdl_scene *scene, const cdl_scene_lights *l
 
 /* ---- the solve ------------------------------------------------------------------ */
 
-/* A point's rays start one epsilon along its normal n (ray_offsets in
- * scene_geometry.h). That moves the start off every surface through the
- * point by epsilon x |cos| of the angle between n and the surface's normal:
- * the whole epsilon for the surface the point faces, nothing for one whose
- * plane contains n (a wall standing on the floor a point lies on). A surface
- * within an eighth of an epsilon of the start (an axis-aligned box: within
- * 0.125 to 0.22 epsilon) therefore passes through the point nearly along n,
- * and which side of it the point is on is unknown: an edge point. */
-static void find_edge_points(const cdl_direct_context *ctx, cdl_grid_solution *gs)
-{
-    gs->edge_point_count = 0;
-    gs->first_edge_point = 0;
-    for (size_t i = 0; i < gs->grid.count; ++i) {
-        cdl_vec3 p = gs->grid.points[i];
-        double eps = cdl_ray_offsets_epsilon(&ctx->offsets, p);
-        cdl_vec3 o = cdl_vec3_madd(p, eps, gs->grid.normals[i]);
-        cdl_vec3 h = cdl_vec3_make(0.125 * eps, 0.125 * eps, 0.125 * eps);
-        if (cdl_occluder_index_surface_in_box(ctx->occluders, cdl_vec3_sub(o, h), cdl_vec3_add(o, h))) {
-            if (gs->edge_point_count++ == 0) gs->first_edge_point = i;
-        }
-    }
-}
-
-static cdl_status alloc_grid_arrays(cdl_grid_solution *gs, int want_ao, cdl_error *err)
-{
-    size_t n = gs->grid.count ? gs->grid.count : 1;
-    gs->E = calloc(n, sizeof(double));
-    gs->E_direct = calloc(n, sizeof(double));
-    gs->E_indirect = calloc(n, sizeof(double));
-    gs->E_stderr = calloc(n, sizeof(double));
-    gs->ao = want_ao ? calloc(n, sizeof(double)) : NULL;
-    if (!gs->E || !gs->E_direct || !gs->E_indirect || !gs->E_stderr || (want_ao && !gs->ao))
-        return cdl_error_out_of_memory(err);
-    return CDL_OK;
-}
-
 cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *options, cdl_solution *out,
                            cdl_error *err)
 {
     memset(out, 0, sizeof *out);
-    double t0 = now_seconds();
+    double t0 = cdl_pool_now_seconds();
     cdl_solve_options opts = CDL_SOLVE_OPTIONS_DEFAULT;
     if (options) opts = *options;
 
@@ -410,7 +146,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     if (out->settings.direct_samples <= 0) out->settings.direct_samples = ds;
     if (out->settings.ao_samples <= 0) out->settings.ao_samples = as;
     int threads = opts.threads >= 0 ? opts.threads : scene->settings.threads;
-    if (threads <= 0) threads = cpu_count();
+    if (threads <= 0) threads = cdl_pool_cpu_count();
     if (opts.ray_log) threads = 1;
     out->threads_used = threads;
 
@@ -421,12 +157,16 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     cdl_light_strategy *strategies = NULL;
     cJSON **plan_grids = NULL;
 
-    if (opts.progress) opts.progress(opts.progress_user, "geometry", 0, 1);
+    cdl_progress stage = {.stage = "geometry"};
+    if (cdl_progress_report(&opts.progress, &stage) != 0) {
+        st = cdl_error_set(err, CDL_ERR_CANCELLED, "geometry: cancelled by the caller");
+        goto fail;
+    }
     st = cdl_scene_geometry_build(scene, &geometry, err);
     if (st != CDL_OK) goto fail;
     size_t pieces = cdl_scene_geometry_piece_count(geometry);
     if (pieces > 0) {
-        st = build_occluders(geometry, &occluders, err);
+        st = cdl_scene_occluders_build(geometry, &occluders, err);
         if (st != CDL_OK) goto fail;
     }
     st = cdl_scene_lights_build(scene, geometry, &lights, err);
@@ -484,27 +224,27 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
             cdl_error_prefix(err, "%s: ", scene->path);
             goto fail;
         }
-        st = alloc_grid_arrays(gs, spec->want_ao, err);
+        st = cdl_grid_solution_alloc(gs, spec->want_ao, err);
         if (st != CDL_OK) goto fail;
-        if (ctx.occluders) find_edge_points(&ctx, gs);
+        gs->edge_point_count = cdl_direct_find_edge_points(&ctx, &gs->grid, &gs->first_edge_point);
         cdl_direct_plan_grid(&ctx, gs->grid.points, gs->grid.count, strategies);
         for (size_t l = 0; l < lights.count; ++l)
             cJSON_AddStringToObject(plan_grids[l], spec->name, cdl_light_strategy_name(strategies[l]));
-        if (opts.progress) opts.progress(opts.progress_user, spec->name, 0, gs->grid.count);
-        grid_job job;
-        job.ctx = &ctx;
-        job.strategies = strategies;
-        job.gs = gs;
-        job.grid_index = g;
-        job.want_ao = spec->want_ao;
-        atomic_init(&job.next, 0);
-        job.chunk = 16;
-        double tc = now_seconds();
-        st = run_grid(&job, threads, &total, err);
-        out->compute_seconds += now_seconds() - tc;
-        if (st == CDL_OK) st = check_finite(scene, &lights, g, gs, err);
+        char stage_name[160];
+        snprintf(stage_name, sizeof stage_name, "grid %s", spec->name);
+        double tc = cdl_pool_now_seconds();
+        /* E_stderr holds the variance until the grid is done. */
+        st = cdl_direct_solve_grid(&ctx, strategies, &gs->grid, g, gs->E_direct, gs->E_stderr, gs->ao, threads,
+                                   &opts.progress, stage_name, &total, err);
+        out->compute_seconds += cdl_pool_now_seconds() - tc;
         if (st != CDL_OK) goto fail;
-        if (opts.progress) opts.progress(opts.progress_user, spec->name, gs->grid.count, gs->grid.count);
+        for (size_t i = 0; i < gs->grid.count; ++i) {
+            gs->E[i] = gs->E_direct[i];
+            gs->E_indirect[i] = 0.0;
+            gs->E_stderr[i] = sqrt(gs->E_stderr[i]);
+        }
+        st = check_finite(scene, &lights, g, gs, err);
+        if (st != CDL_OK) goto fail;
     }
     {
         cJSON *counts = cJSON_AddObjectToObject(plan, "evaluations");
@@ -523,7 +263,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);
     cdl_scene_geometry_release(geometry);
-    out->seconds = now_seconds() - t0;
+    out->seconds = cdl_pool_now_seconds() - t0;
     return CDL_OK;
 
 fail:
@@ -535,21 +275,4 @@ fail:
     cdl_scene_geometry_release(geometry);
     cdl_solution_release(out);
     return st;
-}
-
-void cdl_solution_release(cdl_solution *s)
-{
-    if (!s) return;
-    for (size_t g = 0; g < s->grid_count && s->grids; ++g) {
-        cdl_grid_solution *gs = &s->grids[g];
-        cdl_grid_release(&gs->grid);
-        free(gs->E);
-        free(gs->E_direct);
-        free(gs->E_indirect);
-        free(gs->E_stderr);
-        free(gs->ao);
-    }
-    free(s->grids);
-    free(s->plan_json);
-    memset(s, 0, sizeof *s);
 }

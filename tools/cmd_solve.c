@@ -7,6 +7,7 @@
 #include "cli_args.h"
 #include "command.h"
 #include "solver/output/grid_result.h"
+#include "solver/output/solution_write.h"
 #include "solver/solve.h"
 
 static void print_help(FILE *out)
@@ -46,13 +47,34 @@ static void print_help(FILE *out)
           out);
 }
 
-static void progress(void *user, const char *stage, size_t done, size_t total)
+/* Progress on stderr (a terminal): the stage, items done, cache records and
+ * the time left at the rate so far; at most five lines a second. */
+typedef struct progress_state {
+    double last;              /* when the line was last written */
+    const char *stage;        /* the stage it showed */
+} progress_state;
+
+static int progress(void *user, const cdl_progress *p)
 {
-    (void)user;
-    if (total > 1)
-        fprintf(stderr, "\rcandela solve: %s: %zu/%zu points%s", stage, done, total, done == total ? "\n" : "");
-    else
-        fprintf(stderr, "candela solve: %s\n", stage);
+    progress_state *ps = user;
+    int finished = p->total > 0 && p->done == p->total;
+    int new_stage = ps->stage != p->stage;
+    if (!finished && !new_stage && p->elapsed_seconds - ps->last < 0.2) return 0;
+    ps->last = p->elapsed_seconds;
+    ps->stage = p->stage;
+    if (p->total == 0) {
+        fprintf(stderr, "candela solve: %s\n", p->stage);
+        return 0;
+    }
+    char left[64] = "";
+    if (p->done > 0 && !finished)
+        snprintf(left, sizeof left, ", %.0f s left",
+                 p->elapsed_seconds * (double)(p->total - p->done) / (double)p->done);
+    char records[64] = "";
+    if (p->records > 0) snprintf(records, sizeof records, ", %zu records", p->records);
+    fprintf(stderr, "\r\033[Kcandela solve: %s: %zu/%zu%s%s%s", p->stage, p->done, p->total, records, left,
+            finished ? "\n" : "");
+    return 0;
 }
 
 static int run(int argc, char **argv)
@@ -93,7 +115,11 @@ static int run(int argc, char **argv)
         }
         so.threads = (int)t;
     }
-    if (!cdl_cli_find(opts, nopts, "quiet")->present && isatty(STDERR_FILENO)) so.progress = progress;
+    progress_state shown = {-1.0, NULL};
+    if (!cdl_cli_find(opts, nopts, "quiet")->present && isatty(STDERR_FILENO)) {
+        so.progress.fn = progress;
+        so.progress.user = &shown;
+    }
     const char *ocio = cdl_cli_find(opts, nopts, "ocio")->present ? cdl_cli_find(opts, nopts, "ocio")->value
                                                                    : cdl_default_ocio_config();
 

@@ -38,24 +38,14 @@ static double region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p)
     return 10.0 * cdl_ray_offsets_epsilon(&ctx->offsets, p);
 }
 
-static void grow(cdl_vec3 *lo, cdl_vec3 *hi, cdl_vec3 p)
-{
-    lo->x = fmin(lo->x, p.x);
-    lo->y = fmin(lo->y, p.y);
-    lo->z = fmin(lo->z, p.z);
-    hi->x = fmax(hi->x, p.x);
-    hi->y = fmax(hi->y, p.y);
-    hi->z = fmax(hi->z, p.z);
-}
-
 void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points, size_t count,
                           cdl_light_strategy *strategies)
 {
-    cdl_vec3 glo = cdl_vec3_make(DBL_MAX, DBL_MAX, DBL_MAX), ghi = cdl_vec3_make(-DBL_MAX, -DBL_MAX, -DBL_MAX);
-    for (size_t i = 0; i < count; ++i) grow(&glo, &ghi, points[i]);
+    cdl_bounds3 grid = cdl_bounds3_empty();
+    for (size_t i = 0; i < count; ++i) cdl_bounds3_grow(&grid, points[i]);
 
     for (size_t l = 0; l < ctx->light_count; ++l) {
-        const cdl_direct_light *light = &ctx->lights[l];
+        const cdl_scene_light *light = &ctx->lights[l];
         int delta = cdl_emitter_is_delta(light->emitter);
         /* Can any surface lie between this light and any point of the grid?
          * Conservative test: the box around the grid and the light. Unbounded
@@ -66,9 +56,9 @@ void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points,
         } else if (!light->bounded) {
             may_occlude = cdl_occluder_index_primitive_count(ctx->occluders) > 0;
         } else {
-            cdl_vec3 lo = glo, hi = ghi;
-            grow(&lo, &hi, light->bounds_lo);
-            grow(&lo, &hi, light->bounds_hi);
+            cdl_bounds3 both = grid;
+            cdl_bounds3_merge(&both, light->bounds);
+            cdl_vec3 lo = both.lo, hi = both.hi;
             double tol = fmin(region_tolerance(ctx, lo), region_tolerance(ctx, hi));
             /* The test shrinks the box by tol so that surfaces which only
              * touch it (the floor under a grid) do not count. Along an axis
@@ -143,7 +133,7 @@ static void unshrink_planes(cdl_convex_region *region, int first, int count, dou
  * 2 tol (a small emitter), so a table just above a floor point went unseen.
  * The sides are therefore kept where they are; only the caps (the plane
  * of p, the plane of the emitter) shrink. */
-static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_vec3 p, cdl_vec3 n)
+static int light_fully_visible(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n)
 {
     cdl_convex_region region;
     region.plane_count = 0;
@@ -168,7 +158,7 @@ static int light_fully_visible(const cdl_direct_context *ctx, const cdl_direct_l
 /* Stratified Monte-Carlo over the light: the mean of f = L cos / pdf over
  * visible samples (or, with `hidden_only`, of f over hidden samples) and the
  * variance of that mean; returns the number of samples. */
-static double sample_light(const cdl_direct_context *ctx, const cdl_direct_light *light, uint64_t stream, cdl_vec3 p,
+static double sample_light(const cdl_direct_context *ctx, const cdl_scene_light *light, uint64_t stream, cdl_vec3 p,
                            cdl_vec3 n, int hidden_only, double *mean, double *variance, cdl_direct_sample_stats *stats)
 {
     /* 64-bit counts: k x k overflows an int from 2^31 samples on. */
@@ -204,7 +194,7 @@ size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, 
 {
     size_t count = 0;
     for (size_t l = 0; l < ctx->light_count; ++l) {
-        const cdl_direct_light *light = &ctx->lights[l];
+        const cdl_scene_light *light = &ctx->lights[l];
         if (light->has_cone && light->cone_angle < 0.5 * CDL_PI) {
             /* The ball, seen from the light under the half-angle b with
              * sin b = r / d, meets the cone (half-angle a) iff the angle t
@@ -226,7 +216,7 @@ size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, 
 
 /* Exact unshadowed illuminance from a delta light, and the direction and
  * distance its shadow ray needs; 0 when the light does not reach p. */
-static double delta_unshadowed(const cdl_direct_light *light, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *d)
+static double delta_unshadowed(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *d)
 {
     if (light->has_cone) {
         /* Outside the emission cone: no light, no lookup. For cones up to a
@@ -245,7 +235,7 @@ static double delta_unshadowed(const cdl_direct_light *light, cdl_vec3 p, cdl_ve
 }
 
 /* Exact illuminance from a delta light, 0 if it is shadowed. */
-static double delta_contribution(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_light_strategy st,
+static double delta_contribution(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy st,
                                  cdl_vec3 p, cdl_vec3 n, cdl_direct_sample_stats *stats)
 {
     cdl_delta_light d;
@@ -257,7 +247,7 @@ static double delta_contribution(const cdl_direct_context *ctx, const cdl_direct
 /* Illuminance from an area emitter or environment: closed form where nothing
  * hides it, closed form minus the sampled hidden part where something does,
  * plain sampling where there is no closed form. Adds to *E and *var. */
-static void extended_contribution(const cdl_direct_context *ctx, const cdl_direct_light *light, cdl_light_strategy st,
+static void extended_contribution(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy st,
                                   uint64_t stream, cdl_vec3 p, cdl_vec3 n, double *E, double *var,
                                   cdl_direct_sample_stats *stats)
 {

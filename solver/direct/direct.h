@@ -28,6 +28,7 @@
 #include "solver/geometry/occluder_index.h"
 #include "solver/geometry/ray_scene.h"
 #include "solver/scene/scene_geometry.h"
+#include "solver/scene/scene_lights.h"
 
 /* How a light's contribution is obtained (per light, per grid). */
 typedef enum cdl_light_strategy {
@@ -52,42 +53,12 @@ typedef struct cdl_ray_log {
     int overflow;                     /* 1 if a ray could not be recorded (out of memory) */
 } cdl_ray_log;
 
-#define CDL_DIRECT_OUTLINE_MAX (CDL_REGION_MAX_PLANES - 2)
-
-/* A light as the direct solver sees it. */
-typedef struct cdl_direct_light {
-    const cdl_emitter *emitter;
-    char label[160];                  /* "luminaires[3]" or "surfaces[2]" (+ face) for the plan */
-    uint32_t owner;                   /* geometry piece id of its own surface, UINT32_MAX if none */
-    int has_closed_form;              /* area or uniform environment */
-    int is_environment;
-    int upper_only;                   /* environment: sky above the horizon of `up` only */
-    cdl_vec3 up;
-    /* A convex outline bounding the emitter (area emitters), for the
-     * per-point visibility region; outline_count = 0 when there is none.
-     * Kept out of line so that the records the per-point loop walks stay small. */
-    cdl_vec3 *outline;                /* up to CDL_DIRECT_OUTLINE_MAX points, owned by whoever built the light */
-    int outline_count;
-    int outline_is_sphere;            /* use center/radius instead */
-    cdl_vec3 sphere_center;
-    double sphere_radius;
-    cdl_vec3 bounds_lo, bounds_hi;    /* world bounds of the emitter (delta: its position) */
-    int bounded;                      /* 0 for directional and environment */
-    /* Emission cone (cdl_emitter_emission_cone): no light outside the
-     * directions within cone_angle of cone_axis from cone_position. */
-    int has_cone;
-    cdl_vec3 cone_position, cone_axis;
-    double cone_angle;                /* radians */
-    double cone_cos, cone_sin;        /* cos and sin of cone_angle */
-    double cone_cos2;                 /* cos^2 of cone_angle */
-} cdl_direct_light;
-
 typedef struct cdl_direct_context {
     const cdl_scene_geometry *geometry;  /* rays and their epsilons; NULL: nothing can occlude */
     cdl_ray_offsets offsets;          /* the geometry's ray offsets (when geometry != NULL) */
     const cdl_ray_scene *rays;        /* the geometry's rays; NULL when there is no geometry */
     const cdl_occluder_index *occluders; /* NULL when the scene has no geometry */
-    const cdl_direct_light *lights;
+    const cdl_scene_light *lights;
     size_t light_count;
     int samples;                      /* per partly hidden extended light (rounded up to a square) */
     int ao_samples;                   /* per point for ambient occlusion (rounded up to a square) */

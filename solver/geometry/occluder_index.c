@@ -6,23 +6,20 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "radiometry/bounds.h"
 #include "radiometry/constants.h"
 
 #define LEAF_SIZE 4
 
-typedef struct box3 {
-    double lo[3], hi[3];
-} box3;
-
 typedef struct prim {
-    box3 box;
+    cdl_bounds3 box;
     double centroid[3];
     uint32_t index;    /* triangle index, or triangle_count + sphere index */
     uint32_t owner;
 } prim;
 
 typedef struct node {
-    box3 box;
+    cdl_bounds3 box;
     uint32_t first;    /* leaf: first prim; inner: right child index */
     uint16_t count;    /* leaf: number of prims; 0 for inner nodes */
 } node;
@@ -37,22 +34,6 @@ struct cdl_occluder_index {
     node *nodes;
     size_t node_count;
 };
-
-static void box_empty(box3 *b)
-{
-    for (int k = 0; k < 3; ++k) {
-        b->lo[k] = DBL_MAX;
-        b->hi[k] = -DBL_MAX;
-    }
-}
-
-static void box_grow(box3 *b, const box3 *o)
-{
-    for (int k = 0; k < 3; ++k) {
-        if (o->lo[k] < b->lo[k]) b->lo[k] = o->lo[k];
-        if (o->hi[k] > b->hi[k]) b->hi[k] = o->hi[k];
-    }
-}
 
 /* Reorder p[0..n) so that p[k] has the k-th smallest centroid along `axis`,
  * smaller ones before it and larger ones after (quickselect, Hoare
@@ -88,14 +69,12 @@ static uint32_t build_node(cdl_occluder_index *ix, size_t first, size_t count)
 {
     uint32_t id = (uint32_t)ix->node_count++;
     node *nd = &ix->nodes[id];
-    box_empty(&nd->box);
-    box3 cbox;
-    box_empty(&cbox);
+    nd->box = cdl_bounds3_empty();
+    cdl_bounds3 cbox = cdl_bounds3_empty();
     for (size_t i = first; i < first + count; ++i) {
-        box_grow(&nd->box, &ix->prims[i].box);
-        box3 c = {{ix->prims[i].centroid[0], ix->prims[i].centroid[1], ix->prims[i].centroid[2]},
-                  {ix->prims[i].centroid[0], ix->prims[i].centroid[1], ix->prims[i].centroid[2]}};
-        box_grow(&cbox, &c);
+        cdl_bounds3_merge(&nd->box, ix->prims[i].box);
+        const double *c = ix->prims[i].centroid;
+        cdl_bounds3_grow(&cbox, cdl_vec3_make(c[0], c[1], c[2]));
     }
     if (count <= LEAF_SIZE) {
         nd->first = (uint32_t)first;
@@ -104,9 +83,10 @@ static uint32_t build_node(cdl_occluder_index *ix, size_t first, size_t count)
     }
     int axis = 0;
     double ext = -1.0;
+    cdl_vec3 size = cdl_vec3_sub(cbox.hi, cbox.lo);
     for (int k = 0; k < 3; ++k)
-        if (cbox.hi[k] - cbox.lo[k] > ext) {
-            ext = cbox.hi[k] - cbox.lo[k];
+        if (cdl_vec3_axis(size, k) > ext) {
+            ext = cdl_vec3_axis(size, k);
             axis = k;
         }
     size_t half = count / 2;
@@ -136,16 +116,16 @@ cdl_status cdl_occluder_index_build(const cdl_occluder_input *in, cdl_occluder_i
     }
     for (size_t t = 0; t < in->triangle_count; ++t) {
         prim *p = &ix->prims[t];
-        box_empty(&p->box);
+        p->box = cdl_bounds3_empty();
         for (int c = 0; c < 3; ++c) {
             const double *v = &in->vertices[3 * in->triangles[3 * t + c]];
-            for (int k = 0; k < 3; ++k) {
-                ix->vertices[9 * t + 3 * c + k] = v[k];
-                if (v[k] < p->box.lo[k]) p->box.lo[k] = v[k];
-                if (v[k] > p->box.hi[k]) p->box.hi[k] = v[k];
-            }
+            for (int k = 0; k < 3; ++k) ix->vertices[9 * t + 3 * c + k] = v[k];
+            cdl_bounds3_grow(&p->box, cdl_vec3_make(v[0], v[1], v[2]));
         }
-        for (int k = 0; k < 3; ++k) p->centroid[k] = 0.5 * (p->box.lo[k] + p->box.hi[k]);
+        cdl_vec3 mid = cdl_bounds3_centre(p->box);
+        p->centroid[0] = mid.x;
+        p->centroid[1] = mid.y;
+        p->centroid[2] = mid.z;
         p->index = (uint32_t)t;
         p->owner = in->triangle_owner ? in->triangle_owner[t] : 0;
     }
@@ -153,12 +133,12 @@ cdl_status cdl_occluder_index_build(const cdl_occluder_input *in, cdl_occluder_i
         prim *p = &ix->prims[in->triangle_count + s];
         double r = in->sphere_radii[s];
         for (int k = 0; k < 3; ++k) {
-            double c = in->sphere_centers[3 * s + k];
-            ix->spheres[4 * s + k] = c;
-            p->box.lo[k] = c - r;
-            p->box.hi[k] = c + r;
-            p->centroid[k] = c;
+            ix->spheres[4 * s + k] = in->sphere_centers[3 * s + k];
+            p->centroid[k] = in->sphere_centers[3 * s + k];
         }
+        cdl_vec3 c = cdl_vec3_make(p->centroid[0], p->centroid[1], p->centroid[2]);
+        p->box.lo = cdl_vec3_sub(c, cdl_vec3_make(r, r, r));
+        p->box.hi = cdl_vec3_add(c, cdl_vec3_make(r, r, r));
         ix->spheres[4 * s + 3] = r;
         p->index = (uint32_t)(in->triangle_count + s);
         p->owner = in->sphere_owner ? in->sphere_owner[s] : 0;
@@ -185,11 +165,11 @@ size_t cdl_occluder_index_primitive_count(const cdl_occluder_index *ix)
 
 /* The box lies entirely outside the half-space: its corner nearest to the
  * half-space (smallest normal . x) is already beyond the offset. */
-static int box_outside(const box3 *b, const cdl_halfspace *h, double offset)
+static int box_outside(const cdl_bounds3 *b, const cdl_halfspace *h, double offset)
 {
-    double m = 0.0;
-    const double n[3] = {h->normal.x, h->normal.y, h->normal.z};
-    for (int k = 0; k < 3; ++k) m += n[k] * (n[k] >= 0.0 ? b->lo[k] : b->hi[k]);
+    cdl_vec3 n = h->normal;
+    double m = n.x * (n.x >= 0.0 ? b->lo.x : b->hi.x) + n.y * (n.y >= 0.0 ? b->lo.y : b->hi.y) +
+               n.z * (n.z >= 0.0 ? b->lo.z : b->hi.z);
     return m > offset;
 }
 

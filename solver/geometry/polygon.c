@@ -13,20 +13,21 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "radiometry/bounds.h"
 #include "radiometry/frame.h"
 
 /* A polygon whose area is below this fraction of its squared size has no
  * usable normal (its points are collinear up to rounding). */
 #define NO_AREA_TOLERANCE 1e-10
 
-void cdl_scene_polygon_project(const cdl_polygon_plane *plane, cdl_vec3 p, double *x, double *y)
+void cdl_polygon_project(const cdl_polygon_plane *plane, cdl_vec3 p, double *x, double *y)
 {
     cdl_vec3 d = cdl_vec3_sub(p, plane->origin);
     *x = cdl_vec3_dot(d, plane->e1);
     *y = cdl_vec3_dot(d, plane->e2);
 }
 
-cdl_vec3 cdl_scene_polygon_lift(const cdl_polygon_plane *plane, double x, double y)
+cdl_vec3 cdl_polygon_lift(const cdl_polygon_plane *plane, double x, double y)
 {
     return cdl_vec3_add(plane->origin, cdl_vec3_add(cdl_vec3_scale(plane->e1, x), cdl_vec3_scale(plane->e2, y)));
 }
@@ -207,7 +208,7 @@ static int check_in_plane(const cdl_polygon_plane *plane, const cdl_ring3 *outer
         const cdl_ring3 *ring = ring_at(outer, holes, r);
         start[r + 1] = k;
         for (size_t i = 0; i < ring->count; ++i)
-            cdl_scene_polygon_project(plane, ring->points[i], &xy[2 * (k + i)], &xy[2 * (k + i) + 1]);
+            cdl_polygon_project(plane, ring->points[i], &xy[2 * (k + i)], &xy[2 * (k + i) + 1]);
         for (size_t i = 0; i < ring->count; ++i) {
             const double *a = &xy[2 * (k + (i + ring->count - 1) % ring->count)];
             const double *b = &xy[2 * (k + i)], *c = &xy[2 * (k + (i + 1) % ring->count)];
@@ -253,7 +254,7 @@ done:
     return 1;
 }
 
-int cdl_scene_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hole_count,
+int cdl_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hole_count,
                             cdl_polygon_plane *plane, cdl_polygon_problem *problem)
 {
     problem->defect = CDL_POLYGON_VALID;
@@ -261,13 +262,9 @@ int cdl_scene_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size
     problem->vertex = problem->other_vertex = 0;
     problem->distance = 0.0;
 
-    cdl_vec3 lo = outer->points[0], hi = outer->points[0];
-    for (size_t i = 1; i < outer->count; ++i) {
-        cdl_vec3 p = outer->points[i];
-        lo = cdl_vec3_make(fmin(lo.x, p.x), fmin(lo.y, p.y), fmin(lo.z, p.z));
-        hi = cdl_vec3_make(fmax(hi.x, p.x), fmax(hi.y, p.y), fmax(hi.z, p.z));
-    }
-    plane->size = cdl_vec3_distance(lo, hi);
+    cdl_bounds3 box = cdl_bounds3_empty();
+    for (size_t i = 0; i < outer->count; ++i) cdl_bounds3_grow(&box, outer->points[i]);
+    plane->size = cdl_bounds3_diagonal(box);
 
     for (long r = -1; r < (long)hole_count; ++r) {
         const cdl_ring3 *ring = ring_at(outer, holes, r);
@@ -332,7 +329,7 @@ int cdl_scene_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size
     return ok;
 }
 
-cdl_status cdl_scene_polygon_triangulate(const cdl_polygon_plane *plane, const cdl_ring3 *outer,
+cdl_status cdl_polygon_triangulate(const cdl_polygon_plane *plane, const cdl_ring3 *outer,
                                          const cdl_ring3 *holes, size_t hole_count, double max_edge,
                                          size_t max_vertices, cdl_mesh2d *out, cdl_error *err)
 {
@@ -351,7 +348,7 @@ cdl_status cdl_scene_polygon_triangulate(const cdl_polygon_plane *plane, const c
         rings[r + 1].xy = &xy[2 * k];
         rings[r + 1].count = ring->count;
         for (size_t i = 0; i < ring->count; ++i, ++k)
-            cdl_scene_polygon_project(plane, ring->points[i], &xy[2 * k], &xy[2 * k + 1]);
+            cdl_polygon_project(plane, ring->points[i], &xy[2 * k], &xy[2 * k + 1]);
     }
     cdl_status st = cdl_mesh2d_triangulate_bounded(rings[0], rings + 1, hole_count, max_edge, max_vertices, out, err);
     free(xy);

@@ -11,15 +11,20 @@
  * method), e2 = normal x e1. Counter-clockwise in (e1, e2) coordinates is
  * counter-clockwise seen from the front.
  */
-#ifndef CANDELA_SOLVER_SCENE_POLYGON_H
-#define CANDELA_SOLVER_SCENE_POLYGON_H
+#ifndef CANDELA_SOLVER_GEOMETRY_POLYGON_H
+#define CANDELA_SOLVER_GEOMETRY_POLYGON_H
 
 #include <stddef.h>
 
 #include "radiometry/error.h"
 #include "radiometry/vec3.h"
 #include "solver/geometry/mesh2d.h"
-#include "solver/scene/scene.h"
+
+/* A ring of points (a polygon's outline or one of its holes), in order. */
+typedef struct cdl_ring3 {
+    cdl_vec3 *points;
+    size_t count;
+} cdl_ring3;
 
 typedef struct cdl_polygon_plane {
     cdl_vec3 origin;   /* the outer ring's first vertex */
@@ -59,18 +64,18 @@ typedef struct cdl_polygon_problem {
 
 /* Check the polygon and compute its plane. Returns 1 when valid (then *plane
  * is set); 0 with *problem filled otherwise. Rings need >= 3 points. */
-int cdl_scene_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hole_count,
+int cdl_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hole_count,
                             cdl_polygon_plane *plane, cdl_polygon_problem *problem);
 
 /* Plane coordinates of p, and back (the point on the plane). */
-void cdl_scene_polygon_project(const cdl_polygon_plane *plane, cdl_vec3 p, double *x, double *y);
-cdl_vec3 cdl_scene_polygon_lift(const cdl_polygon_plane *plane, double x, double y);
+void cdl_polygon_project(const cdl_polygon_plane *plane, cdl_vec3 p, double *x, double *y);
+cdl_vec3 cdl_polygon_lift(const cdl_polygon_plane *plane, double x, double y);
 
 /* Triangulate a checked polygon in its plane (mesh2d.h: max_edge <= 0 keeps
  * the ring vertices only; refinement stops with an error beyond
  * max_vertices). The 2D mesh is in plane coordinates; its triangles are
  * counter-clockwise seen from the front. */
-cdl_status cdl_scene_polygon_triangulate(const cdl_polygon_plane *plane, const cdl_ring3 *outer,
+cdl_status cdl_polygon_triangulate(const cdl_polygon_plane *plane, const cdl_ring3 *outer,
                                          const cdl_ring3 *holes, size_t hole_count, double max_edge,
                                          size_t max_vertices, cdl_mesh2d *out, cdl_error *err);
 

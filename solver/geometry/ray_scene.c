@@ -8,6 +8,7 @@
 #include "solver/geometry/ray_scene.h"
 
 #include <embree3/rtcore.h>
+#include "radiometry/bounds.h"
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -126,18 +127,17 @@ cdl_status cdl_ray_scene_commit(cdl_ray_scene *s, cdl_error *err)
     s->device_error = &build_err;
 
     /* Bounding box of everything, for the recentring offset. */
-    double lo[3] = {DBL_MAX, DBL_MAX, DBL_MAX}, hi[3] = {-DBL_MAX, -DBL_MAX, -DBL_MAX};
+    cdl_bounds3 box = cdl_bounds3_empty();
     for (size_t g = 0; g < s->geometry_count; ++g) {
         const pending_geometry *pg = &s->geometry[g];
         double r = pg->is_sphere ? pg->radius : 0.0;
-        for (size_t v = 0; v < pg->vertex_count; ++v)
-            for (int k = 0; k < 3; ++k) {
-                lo[k] = fmin(lo[k], pg->xyz[3 * v + k] - r);
-                hi[k] = fmax(hi[k], pg->xyz[3 * v + k] + r);
-            }
+        for (size_t v = 0; v < pg->vertex_count; ++v) {
+            cdl_vec3 p = cdl_vec3_make(pg->xyz[3 * v], pg->xyz[3 * v + 1], pg->xyz[3 * v + 2]);
+            cdl_bounds3_grow(&box, cdl_vec3_sub(p, cdl_vec3_make(r, r, r)));
+            cdl_bounds3_grow(&box, cdl_vec3_add(p, cdl_vec3_make(r, r, r)));
+        }
     }
-    s->offset = s->geometry_count ? cdl_vec3_make(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]))
-                                  : cdl_vec3_make(0, 0, 0);
+    s->offset = s->geometry_count ? cdl_bounds3_centre(box) : cdl_vec3_make(0, 0, 0);
     const double off[3] = {s->offset.x, s->offset.y, s->offset.z};
 
     s->scene = rtcNewScene(s->device);

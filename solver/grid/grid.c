@@ -103,14 +103,14 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
 {
     cdl_polygon_plane plane;
     cdl_polygon_problem problem;
-    if (!cdl_scene_polygon_check(&spec->outer, spec->holes, spec->hole_count, &plane, &problem))
+    if (!cdl_polygon_check(&spec->outer, spec->holes, spec->hole_count, &plane, &problem))
         return cdl_error_set(err, CDL_ERR_INPUT, "%s: expected a valid polygon, found defect %d at ring %ld vertex %zu",
                              spec->json_path, (int)problem.defect, problem.ring, problem.vertex);
     /* Bounding rectangle in the plane, axes along the first edge and across it. */
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
     for (size_t i = 0; i < spec->outer.count; ++i) {
         double x, y;
-        cdl_scene_polygon_project(&plane, spec->outer.points[i], &x, &y);
+        cdl_polygon_project(&plane, spec->outer.points[i], &x, &y);
         x0 = fmin(x0, x);
         x1 = fmax(x1, x);
         y0 = fmin(y0, y);
@@ -121,7 +121,7 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
 
     /* Estimate the count from the outer ring's area before meshing. */
     cdl_mesh2d mesh;
-    cdl_status st = cdl_scene_polygon_triangulate(&plane, &spec->outer, NULL, 0, 0.0, SIZE_MAX, &mesh, err);
+    cdl_status st = cdl_polygon_triangulate(&plane, &spec->outer, NULL, 0, 0.0, SIZE_MAX, &mesh, err);
     if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", spec->json_path);
     double outer_area = mesh.area;
     cdl_mesh2d_release(&mesh);
@@ -138,7 +138,7 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
      * the estimate, plus room for grading down to small features, then stop
      * (a vertex a hair's breadth from an edge would otherwise take minutes). */
     double vertex_cap = fmin((double)CDL_GRID_MAX_POINTS, 2.0 * estimate + 10000.0);
-    st = cdl_scene_polygon_triangulate(&plane, &spec->outer, spec->holes, spec->hole_count, p, (size_t)vertex_cap,
+    st = cdl_polygon_triangulate(&plane, &spec->outer, spec->holes, spec->hole_count, p, (size_t)vertex_cap,
                                        &mesh, err);
     if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", spec->json_path);
     if (mesh.triangle_count > CDL_GRID_MAX_POINTS) {
@@ -164,7 +164,7 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
         const double *c = &mesh.xy[2 * mesh.triangles[3 * t + 2]];
         /* Centroid and area of a triangle: (a + b + c) / 3, |(b - a) x (c - a)| / 2. */
         double cx = (a[0] + b[0] + c[0]) / 3.0, cy = (a[1] + b[1] + c[1]) / 3.0;
-        g->points[t] = cdl_scene_polygon_lift(&plane, cx, cy);
+        g->points[t] = cdl_polygon_lift(&plane, cx, cy);
         g->normals[t] = n;
         g->weights[t] = 0.5 * fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
         raster_triangle(g, x0, y1, pixel, a, b, c, (int32_t)t);

@@ -41,10 +41,6 @@ typedef struct cdl_grid {
     double spacing_m;         /* polygon: spacing used; rect: |u|/nu */
 } cdl_grid;
 
-/* Largest number of points a grid may have (the scene loader refuses more;
- * polygon grids check their estimated count before meshing). */
-#define CDL_GRID_MAX_POINTS 10000000
-
 /* EN 12464-1 grid spacing for a longest dimension d (m): 0.2 x 5^log10(d), capped at 10 m. */
 double cdl_grid_auto_spacing(double longest_dimension_m);
 

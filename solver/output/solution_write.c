@@ -1,4 +1,6 @@
 /* solution_write.c - the files of a solve: per grid CSV, EXR, PNG; summary.json. */
+#include "solver/output/solution_write.h"
+
 #include <cjson/cJSON.h>
 #include <errno.h>
 #include <stdio.h>
@@ -9,7 +11,11 @@
 
 #include "radiometry/atomic_file.h"
 #include "solver/output/grid_result.h"
-#include "solver/solve.h"
+
+const char *cdl_default_ocio_config(void)
+{
+    return CANDELA_DEFAULT_OCIO_CONFIG;
+}
 
 /* Errors of the file system that are the machine's, not the path's. */
 static cdl_status folder_failure_status(int code)

@@ -19,6 +19,7 @@
 
 #include "radiometry/error.h"
 #include "radiometry/vec3.h"
+#include "solver/geometry/polygon.h"
 
 #define CDL_JSON_PATH_SIZE 96
 
@@ -36,11 +37,6 @@ typedef enum cdl_surface_kind {
 /* Box faces, in the order of the names -x, +x, -y, +y, -z, +z. With the
  * floor/walls/ceiling naming, floor = -z, ceiling = +z, walls = the other four. */
 enum { CDL_BOX_NEG_X, CDL_BOX_POS_X, CDL_BOX_NEG_Y, CDL_BOX_POS_Y, CDL_BOX_NEG_Z, CDL_BOX_POS_Z, CDL_BOX_FACES };
-
-typedef struct cdl_ring3 {
-    cdl_vec3 *points;
-    size_t count;
-} cdl_ring3;
 
 typedef struct cdl_surface_spec {
     char json_path[CDL_JSON_PATH_SIZE]; /* "surfaces[3]" */
@@ -117,6 +113,10 @@ typedef struct cdl_luminaire_spec {
 } cdl_luminaire_spec;
 
 /* ---- grids -------------------------------------------------------------- */
+
+/* Largest number of points a grid may have (the scene loader refuses more;
+ * polygon grids check their estimated count before meshing). */
+#define CDL_GRID_MAX_POINTS 10000000
 
 typedef enum cdl_grid_kind { CDL_GRID_RECT, CDL_GRID_POLYGON, CDL_GRID_POINTS } cdl_grid_kind;
 

@@ -30,6 +30,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "radiometry/bounds.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "solver/geometry/polygon.h"
@@ -54,17 +55,12 @@ struct cdl_scene_geometry {
     piece_data *pieces;
     size_t piece_count, piece_capacity;
     size_t triangle_count;
-    cdl_vec3 lo, hi, centre;
+    cdl_bounds3 bounds;
+    cdl_vec3 centre;
     double extent;
 };
 
 /* ---- building ---------------------------------------------------------------- */
-
-static void grow_bounds(cdl_scene_geometry *g, cdl_vec3 lo, cdl_vec3 hi)
-{
-    g->lo = cdl_vec3_make(fmin(g->lo.x, lo.x), fmin(g->lo.y, lo.y), fmin(g->lo.z, lo.z));
-    g->hi = cdl_vec3_make(fmax(g->hi.x, hi.x), fmax(g->hi.y, hi.y), fmax(g->hi.z, hi.z));
-}
 
 static double triangle_area(const double *xyz, const uint32_t *t)
 {
@@ -114,10 +110,7 @@ static cdl_status add_triangles(cdl_scene_geometry *g, const cdl_geometry_piece 
         pd->piece.shape.triangle_count = nt;
     }
     g->triangle_count += nt;
-    for (size_t v = 0; v < nv; ++v) {
-        cdl_vec3 p = cdl_vec3_make(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);
-        grow_bounds(g, p, p);
-    }
+    for (size_t v = 0; v < nv; ++v) cdl_bounds3_grow(&g->bounds, cdl_vec3_make(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]));
     return CDL_OK;
 }
 
@@ -255,7 +248,8 @@ static cdl_status add_sphere(cdl_scene_geometry *g, cdl_geometry_piece *tmpl, co
     pd->piece.triangle_count = 0;
     pd->piece.area = 4.0 * CDL_PI * s->radius * s->radius;
     cdl_vec3 r = cdl_vec3_make(s->radius, s->radius, s->radius);
-    grow_bounds(g, cdl_vec3_sub(s->center, r), cdl_vec3_add(s->center, r));
+    cdl_bounds3_grow(&g->bounds, cdl_vec3_sub(s->center, r));
+    cdl_bounds3_grow(&g->bounds, cdl_vec3_add(s->center, r));
     return CDL_OK;
 }
 
@@ -276,11 +270,11 @@ static cdl_status add_polygon(cdl_scene_geometry *g, cdl_geometry_piece *tmpl, c
 {
     cdl_polygon_plane plane;
     cdl_polygon_problem problem;
-    if (!cdl_scene_polygon_check(&s->outer, s->holes, s->hole_count, &plane, &problem))
+    if (!cdl_polygon_check(&s->outer, s->holes, s->hole_count, &plane, &problem))
         return cdl_error_set(err, CDL_ERR_INPUT, "invalid polygon (defect %d at ring %ld vertex %zu)",
                              (int)problem.defect, problem.ring, problem.vertex);
     cdl_mesh2d mesh;
-    cdl_status st = cdl_scene_polygon_triangulate(&plane, &s->outer, s->holes, s->hole_count, 0.0, SIZE_MAX, &mesh, err);
+    cdl_status st = cdl_polygon_triangulate(&plane, &s->outer, s->holes, s->hole_count, 0.0, SIZE_MAX, &mesh, err);
     if (st != CDL_OK) return st;
     /* Map the mesh's vertices back to the rings' own 3D points (the
      * projection is exact for them, and triangulation adds none). */
@@ -299,14 +293,14 @@ static cdl_status add_polygon(cdl_scene_geometry *g, cdl_geometry_piece *tmpl, c
         const cdl_ring3 *ring = r < 0 ? &s->outer : &s->holes[r];
         for (size_t i = 0; i < ring->count; ++i, ++k) {
             keys[k].p = ring->points[i];
-            cdl_scene_polygon_project(&plane, ring->points[i], &keys[k].x, &keys[k].y);
+            cdl_polygon_project(&plane, ring->points[i], &keys[k].x, &keys[k].y);
         }
     }
     qsort(keys, total, sizeof *keys, compare_keyed);
     for (size_t v = 0; v < mesh.vertex_count; ++v) {
         keyed_point key = {mesh.xy[2 * v], mesh.xy[2 * v + 1], {0, 0, 0}};
         const keyed_point *hit = bsearch(&key, keys, total, sizeof *keys, compare_keyed);
-        put_vertex(xyz, v, hit ? hit->p : cdl_scene_polygon_lift(&plane, key.x, key.y));
+        put_vertex(xyz, v, hit ? hit->p : cdl_polygon_lift(&plane, key.x, key.y));
     }
     memcpy(tri, mesh.triangles, mesh.triangle_count * 3 * sizeof *tri);
     size_t nv = mesh.vertex_count, nt = mesh.triangle_count;
@@ -360,8 +354,7 @@ cdl_status cdl_scene_geometry_build(const cdl_scene *scene, cdl_scene_geometry *
     *out = NULL;
     cdl_scene_geometry *g = calloc(1, sizeof *g);
     if (!g) return cdl_error_out_of_memory(err);
-    g->lo = cdl_vec3_make(DBL_MAX, DBL_MAX, DBL_MAX);
-    g->hi = cdl_vec3_make(-DBL_MAX, -DBL_MAX, -DBL_MAX);
+    g->bounds = cdl_bounds3_empty();
     cdl_status st = cdl_ray_scene_create(&g->rays, err);
     const char *file = scene->path ? scene->path : "scene";
     for (size_t i = 0; i < scene->surface_count && st == CDL_OK; ++i) {
@@ -413,11 +406,9 @@ cdl_status cdl_scene_geometry_build(const cdl_scene *scene, cdl_scene_geometry *
         cdl_scene_geometry_release(g);
         return st;
     }
-    if (g->piece_count == 0) {
-        g->lo = g->hi = cdl_vec3_make(0, 0, 0);
-    }
-    g->centre = cdl_vec3_scale(cdl_vec3_add(g->lo, g->hi), 0.5);
-    g->extent = cdl_vec3_distance(g->lo, g->hi);
+    if (g->piece_count == 0) g->bounds.lo = g->bounds.hi = cdl_vec3_make(0, 0, 0);
+    g->centre = cdl_bounds3_centre(g->bounds);
+    g->extent = cdl_bounds3_diagonal(g->bounds);
     *out = g;
     return CDL_OK;
 }
@@ -474,8 +465,8 @@ size_t cdl_scene_geometry_triangle_count(const cdl_scene_geometry *g)
 
 void cdl_scene_geometry_bounds(const cdl_scene_geometry *g, cdl_vec3 *lo, cdl_vec3 *hi)
 {
-    *lo = g->lo;
-    *hi = g->hi;
+    *lo = g->bounds.lo;
+    *hi = g->bounds.hi;
 }
 
 double cdl_scene_geometry_extent(const cdl_scene_geometry *g)

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "radiometry/constants.h"
+#include "radiometry/frame.h"
 #include "solver/scene/exr_image.h"
 
 static const char *luminaire_kind_name(cdl_luminaire_kind k)
@@ -23,15 +24,11 @@ static const char *luminaire_kind_name(cdl_luminaire_kind k)
     return "unknown";
 }
 
-static void bounds_add(cdl_direct_light *l, cdl_vec3 p)
+static void bounds_add(cdl_scene_light *l, cdl_vec3 p)
 {
-    if (!l->bounded) {
-        l->bounds_lo = l->bounds_hi = p;
-        l->bounded = 1;
-        return;
-    }
-    l->bounds_lo = cdl_vec3_make(fmin(l->bounds_lo.x, p.x), fmin(l->bounds_lo.y, p.y), fmin(l->bounds_lo.z, p.z));
-    l->bounds_hi = cdl_vec3_make(fmax(l->bounds_hi.x, p.x), fmax(l->bounds_hi.y, p.y), fmax(l->bounds_hi.z, p.z));
+    if (!l->bounded) l->bounds = cdl_bounds3_empty();
+    l->bounded = 1;
+    cdl_bounds3_grow(&l->bounds, p);
 }
 
 /* 2D convex hull (Andrew's monotone chain) of n points, counter-clockwise;
@@ -71,7 +68,7 @@ static int convex_hull_2d(double *pts, int n, double *hull)
 /* Outline of a triangle-set emitter: its convex hull in its plane (or the
  * bounding rectangle of the hull if that has too many corners). Leaves
  * outline_count = 0 for non-planar sets (then the light is always sampled). */
-static cdl_status outline_of_triangles(cdl_direct_light *l, const cdl_shape *s, cdl_error *err)
+static cdl_status outline_of_triangles(cdl_scene_light *l, const cdl_shape *s, cdl_error *err)
 {
     if (s->vertex_count < 3) return CDL_OK;
     const double *v = s->vertices;
@@ -93,9 +90,8 @@ static cdl_status outline_of_triangles(cdl_direct_light *l, const cdl_shape *s, 
         cdl_vec3 p = cdl_vec3_make(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
         if (fabs(cdl_vec3_dot(cdl_vec3_sub(p, o), nrm)) > 1e-9 * size) return CDL_OK; /* not planar */
     }
-    cdl_vec3 e1 = fabs(nrm.x) < 0.9 ? cdl_vec3_normalize(cdl_vec3_cross(nrm, cdl_vec3_make(1, 0, 0)))
-                                    : cdl_vec3_normalize(cdl_vec3_cross(nrm, cdl_vec3_make(0, 1, 0)));
-    cdl_vec3 e2 = cdl_vec3_cross(nrm, e1);
+    cdl_frame plane = cdl_frame_from_normal(nrm);
+    cdl_vec3 e1 = plane.s, e2 = plane.t;
     double *pts = malloc(s->vertex_count * 2 * sizeof(double));
     double *hull = malloc((s->vertex_count + 2) * 2 * sizeof(double));
     if (!pts || !hull) {
@@ -109,7 +105,7 @@ static cdl_status outline_of_triangles(cdl_direct_light *l, const cdl_shape *s, 
         pts[2 * i + 1] = cdl_vec3_dot(d, e2);
     }
     int h = convex_hull_2d(pts, (int)s->vertex_count, hull);
-    const int max_outline = CDL_DIRECT_OUTLINE_MAX;
+    const int max_outline = CDL_SCENE_LIGHT_OUTLINE_MAX;
     if (h >= 3 && h <= max_outline) {
         for (int i = 0; i < h; ++i)
             l->outline[i] = cdl_vec3_add(o, cdl_vec3_add(cdl_vec3_scale(e1, hull[2 * i]), cdl_vec3_scale(e2, hull[2 * i + 1])));
@@ -132,10 +128,10 @@ static cdl_status outline_of_triangles(cdl_direct_light *l, const cdl_shape *s, 
 }
 
 /* Outline, bounds and closed-form flag of an area emitter from its shape. */
-static cdl_status describe_area(cdl_direct_light *l, const cdl_shape *s, cdl_error *err)
+static cdl_status describe_area(cdl_scene_light *l, const cdl_shape *s, cdl_error *err)
 {
     l->has_closed_form = 1;
-    l->outline = malloc(CDL_DIRECT_OUTLINE_MAX * sizeof *l->outline);
+    l->outline = malloc(CDL_SCENE_LIGHT_OUTLINE_MAX * sizeof *l->outline);
     if (!l->outline) return cdl_error_out_of_memory(err);
     switch (s->kind) {
     case CDL_SHAPE_RECT: {
@@ -152,13 +148,10 @@ static cdl_status describe_area(cdl_direct_light *l, const cdl_shape *s, cdl_err
         /* Circumscribed 16-gon: contains the disk. */
         const int sides = 16;
         double R = s->radius / cos(CDL_PI / sides);
-        cdl_vec3 n = cdl_vec3_normalize(s->normal);
-        cdl_vec3 e1 = fabs(n.x) < 0.9 ? cdl_vec3_normalize(cdl_vec3_cross(n, cdl_vec3_make(1, 0, 0)))
-                                      : cdl_vec3_normalize(cdl_vec3_cross(n, cdl_vec3_make(0, 1, 0)));
-        cdl_vec3 e2 = cdl_vec3_cross(n, e1);
+        cdl_frame disk = cdl_frame_from_normal(cdl_vec3_normalize(s->normal));
         for (int i = 0; i < sides; ++i) {
             double a = CDL_TWO_PI * i / sides;
-            l->outline[i] = cdl_vec3_add(s->center, cdl_vec3_add(cdl_vec3_scale(e1, R * cos(a)), cdl_vec3_scale(e2, R * sin(a))));
+            l->outline[i] = cdl_vec3_add(s->center, cdl_frame_to_world(&disk, cdl_vec3_make(R * cos(a), R * sin(a), 0.0)));
             bounds_add(l, l->outline[i]);
         }
         l->outline_count = sides;
@@ -243,10 +236,10 @@ static size_t find_luminaire_piece(const cdl_scene_geometry *g, size_t k)
 
 /* Append a light; takes the emitter and the prototype's outline, releasing
  * both if it fails. */
-static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kind, const cdl_direct_light *proto,
+static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kind, const cdl_scene_light *proto,
                             cdl_error *err)
 {
-    cdl_direct_light light = *proto;
+    cdl_scene_light light = *proto;
     double cos_min;
     if (cdl_emitter_emission_cone(e, &light.cone_position, &light.cone_axis, &cos_min)) {
         /* The solver culls with cosines computed in double precision, a few
@@ -262,7 +255,7 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
             light.cone_cos2 = c * c;
         }
     }
-    cdl_direct_light *nl = realloc(L->lights, (L->count + 1) * sizeof *nl);
+    cdl_scene_light *nl = realloc(L->lights, (L->count + 1) * sizeof *nl);
     if (!nl) {
         cdl_emitter_release(e);
         free(light.outline);
@@ -295,7 +288,7 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
                                   cdl_scene_lights *L, cdl_error *err)
 {
     const cdl_luminaire_spec *sp = &scene->luminaires[k];
-    cdl_direct_light proto;
+    cdl_scene_light proto;
     memset(&proto, 0, sizeof proto);
     snprintf(proto.label, sizeof proto.label, "%s", sp->json_path);
     proto.owner = UINT32_MAX;
@@ -450,7 +443,7 @@ cdl_status cdl_scene_lights_build(const cdl_scene *scene, const cdl_scene_geomet
         const cdl_geometry_piece *gp = cdl_scene_geometry_piece(geometry, i);
         if (gp->is_luminaire || !(gp->luminance_cd_m2 > 0.0)) continue;
         const cdl_surface_spec *ss = &scene->surfaces[gp->source_index];
-        cdl_direct_light proto;
+        cdl_scene_light proto;
         memset(&proto, 0, sizeof proto);
         if (gp->box_face >= 0)
             snprintf(proto.label, sizeof proto.label, "%s (face %s)", ss->json_path, box_face_name(gp->box_face));

@@ -17,12 +17,44 @@
 
 #include "lights/emitter.h"
 #include "lights/photometry.h"
-#include "solver/direct/direct.h"
+#include "radiometry/bounds.h"
+#include "solver/geometry/occluder_index.h"
 #include "solver/scene/scene.h"
 #include "solver/scene/scene_geometry.h"
 
+#define CDL_SCENE_LIGHT_OUTLINE_MAX (CDL_REGION_MAX_PLANES - 2)
+
+/* A light as placed in the scene: its emitter and what the solvers need to
+ * know of where its light can go (bounds, outline, emission cone). */
+typedef struct cdl_scene_light {
+    const cdl_emitter *emitter;
+    char label[160];                  /* "luminaires[3]" or "surfaces[2]" (+ face) for the plan */
+    uint32_t owner;                   /* geometry piece id of its own surface, UINT32_MAX if none */
+    int has_closed_form;              /* area or uniform environment */
+    int is_environment;
+    int upper_only;                   /* environment: sky above the horizon of `up` only */
+    cdl_vec3 up;
+    /* A convex outline bounding the emitter (area emitters), for the
+     * per-point visibility region; outline_count = 0 when there is none.
+     * Kept out of line so that the records the per-point loop walks stay small. */
+    cdl_vec3 *outline;                /* up to CDL_SCENE_LIGHT_OUTLINE_MAX points, owned by whoever built the light */
+    int outline_count;
+    int outline_is_sphere;            /* use center/radius instead */
+    cdl_vec3 sphere_center;
+    double sphere_radius;
+    cdl_bounds3 bounds;               /* world bounds of the emitter (delta: its position); */
+    int bounded;                      /* 0 (and bounds empty) for directional and environment */
+    /* Emission cone (cdl_emitter_emission_cone): no light outside the
+     * directions within cone_angle of cone_axis from cone_position. */
+    int has_cone;
+    cdl_vec3 cone_position, cone_axis;
+    double cone_angle;                /* radians */
+    double cone_cos, cone_sin;        /* cos and sin of cone_angle */
+    double cone_cos2;                 /* cos^2 of cone_angle */
+} cdl_scene_light;
+
 typedef struct cdl_scene_lights {
-    cdl_direct_light *lights;       /* one per emitter, in scene order: luminaires, then emitting surfaces */
+    cdl_scene_light *lights;       /* one per emitter, in scene order: luminaires, then emitting surfaces */
     const char **kinds;             /* "point", "area", ... per light */
     cdl_emitter **emitters;
     size_t count;

@@ -35,7 +35,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "solver/grid/grid.h"
 #include "radiometry/file_bytes.h"
 #include "solver/scene/scene_file.h"
 #include "solver/scene/scene_parse.h"

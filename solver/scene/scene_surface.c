@@ -147,7 +147,7 @@ cdl_status cdl_scene_json_read_polygon(const cdl_scene_parse *ctx, const cJSON *
     }
     cdl_polygon_plane plane;
     cdl_polygon_problem problem;
-    if (!cdl_scene_polygon_check(outer, *holes, *hole_count, &plane, &problem))
+    if (!cdl_polygon_check(outer, *holes, *hole_count, &plane, &problem))
         return report_polygon(ctx, path, &problem);
     return CDL_OK;
 }

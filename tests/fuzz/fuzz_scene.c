@@ -44,6 +44,7 @@
 #include "solver/scene/scene.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_lights.h"
+#include "solver/output/solution_write.h"
 #include "solver/solve.h"
 
 /* Budget of one input: points over all grids, samples per point. */

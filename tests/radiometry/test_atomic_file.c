@@ -4,7 +4,7 @@
 #include <sys/stat.h>
 
 #include "check.h"
-#include "solver/output/grid_result_fixture.h"
+#include "file_fixture.h"
 #include "radiometry/atomic_file.h"
 
 static int file_equals(const char *path, const char *expected)

@@ -1,0 +1,34 @@
+/* direct_grid.h - the direct illuminance of a whole grid, on worker threads.
+ *
+ * Points are taken in chunks of 16; for each chunk the lights whose
+ * emission cone misses the chunk's bounding ball are skipped once, and the
+ * rest go through cdl_direct_illuminance_chunk. Random numbers are keyed by
+ * (seed, grid index, point index): results do not depend on the threads.
+ */
+#ifndef CANDELA_SOLVER_DIRECT_GRID_H
+#define CANDELA_SOLVER_DIRECT_GRID_H
+
+#include <stddef.h>
+
+#include "radiometry/error.h"
+#include "solver/direct/direct.h"
+#include "solver/grid/grid.h"
+#include "solver/pool.h"
+
+/* The stream of grid point `index` of grid `grid_index` (the key every
+ * per-point random number derives from). */
+uint64_t cdl_direct_point_stream(size_t grid_index, size_t index);
+
+/* Direct illuminance (lux) at every point of `grid`, the variance of each
+ * value (0 where exact) and, when `ao` is not NULL, the ambient occlusion.
+ * Sample counts are added to *stats. */
+cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                                 const cdl_grid *grid, size_t grid_index, double *E, double *variance, double *ao,
+                                 int threads, const cdl_progress_sink *progress, const char *stage,
+                                 cdl_direct_sample_stats *stats, cdl_error *err);
+
+/* Points lying where two surfaces meet (see find_edge_points in
+ * direct_grid.c): their number, and the index of the first in *first. */
+size_t cdl_direct_find_edge_points(const cdl_direct_context *ctx, const cdl_grid *grid, size_t *first);
+
+#endif

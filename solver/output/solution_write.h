@@ -1,0 +1,29 @@
+/* solution_write.h - a solve's files (DESIGN.md, "Outputs of solve").
+ *
+ * Per grid NAME.csv, NAME.exr and NAME.png (EXR and PNG for rect and
+ * polygon grids), and summary.json; each written atomically (to a
+ * temporary name in the same folder, renamed when complete). */
+#ifndef CANDELA_SOLVER_SOLUTION_WRITE_H
+#define CANDELA_SOLVER_SOLUTION_WRITE_H
+
+#include "radiometry/error.h"
+#include "solver/scene/scene.h"
+#include "solver/solution.h"
+
+/* Make out_dir ready for the results: created with its parents when
+ * missing, and writable. Callers run it before a long solve. CDL_ERR_INPUT
+ * when the path cannot be the folder (empty, an existing file or a file
+ * among its parents, no permission, a read-only file system), with a
+ * message naming the path and what was found; CDL_ERR_INTERNAL for the
+ * machine's failures (no space, I/O errors). */
+cdl_status cdl_solution_prepare_folder(const char *out_dir, cdl_error *err);
+
+/* Write the files into out_dir (prepared as by cdl_solution_prepare_folder).
+ * ocio_config: the OpenColorIO config for the PNG maps. */
+cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *solution, const char *out_dir,
+                              const char *ocio_config, cdl_error *err);
+
+/* The OCIO config shipped with Candela (data/ocio/config.ocio). */
+const char *cdl_default_ocio_config(void);
+
+#endif
