@@ -1,5 +1,6 @@
 /* direct.c - direct illuminance: exact where possible, sampled where hidden. */
 #include "solver/direct/direct.h"
+#include "solver/direct/direct_internal.h"
 
 #include <float.h>
 #include <math.h>
@@ -29,15 +30,6 @@ const char *cdl_light_strategy_name(cdl_light_strategy s)
     return "unknown";
 }
 
-/* Geometric tolerance of region tests around p: a surface must reach ten
- * ray epsilons into the region to count as an occluder, so surfaces that
- * only touch it (the floor under a grid point, the ceiling around a
- * recessed emitter) do not. */
-static double region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p)
-{
-    return 10.0 * cdl_ray_offsets_epsilon(&ctx->offsets, p);
-}
-
 void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points, size_t count,
                           cdl_light_strategy *strategies)
 {
@@ -59,7 +51,7 @@ void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points,
             cdl_bounds3 both = grid;
             cdl_bounds3_merge(&both, light->bounds);
             cdl_vec3 lo = both.lo, hi = both.hi;
-            double tol = fmin(region_tolerance(ctx, lo), region_tolerance(ctx, hi));
+            double tol = fmin(cdl_direct_region_tolerance(ctx, lo), cdl_direct_region_tolerance(ctx, hi));
             /* The test shrinks the box by tol so that surfaces which only
              * touch it (the floor under a grid) do not count. Along an axis
              * where the box is thinner than that (a probe straight below its
@@ -88,106 +80,6 @@ void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points,
         else
             strategies[l] = CDL_STRATEGY_EXTENDED_TESTED;
     }
-}
-
-static void record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_near, double t_far)
-{
-    if (log->count == log->capacity) {
-        size_t cap = log->capacity ? 2 * log->capacity : 4096;
-        cdl_ray_record *r = realloc(log->rays, cap * sizeof *r);
-        if (!r) {
-            log->overflow = 1;
-            return;
-        }
-        log->rays = r;
-        log->capacity = cap;
-    }
-    cdl_ray_record rec = {o, dir, t_near, t_far};
-    log->rays[log->count++] = rec;
-}
-
-/* Is the segment from p towards the light blocked? (offsets: scene_geometry.h) */
-static int shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
-                    cdl_direct_sample_stats *stats)
-{
-    cdl_vec3 o;
-    double t_near, t_far;
-    if (!cdl_ray_offsets_shadow_ray(&ctx->offsets, p, n, dir, distance, &o, &t_near, &t_far)) return 0;
-    stats->rays++;
-    if (ctx->log) record_ray(ctx->log, o, dir, t_near, t_far);
-    return cdl_ray_scene_occluded(ctx->rays, o, dir, t_near, t_far);
-}
-
-/* Move planes first .. first + count - 1 of a region outward by tol, so
- * that the index's shrink by tol leaves them where they were. */
-static void unshrink_planes(cdl_convex_region *region, int first, int count, double tol)
-{
-    for (int i = first; i < first + count && i < region->plane_count; ++i) region->planes[i].offset += tol;
-}
-
-/* Is the region between p and the whole of the light clear of surfaces?
- * The index shrinks every plane by tol, so that the surface p lies on and
- * the one the emitter is set into do not count. The side planes of a
- * pyramid meet at p, though: shrunk, they cut away everything within about
- * tol x distance / emitter size of p, and all of a pyramid thinner than
- * 2 tol (a small emitter), so a table just above a floor point went unseen.
- * The sides are therefore kept where they are; only the caps (the plane
- * of p, the plane of the emitter) shrink. */
-static int light_fully_visible(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n)
-{
-    cdl_convex_region region;
-    region.plane_count = 0;
-    double tol = region_tolerance(ctx, p);
-    if (light->is_environment) {
-        /* The open half-space above the receiving plane (and above the
-         * horizon for an upper-hemisphere sky): {x : -n.x <= -n.p}. */
-        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
-        if (light->upper_only) cdl_region_add(&region, cdl_vec3_neg(light->up), -cdl_vec3_dot(light->up, p));
-    } else if (light->outline_is_sphere) {
-        cdl_region_sphere_view(&region, p, light->sphere_center, light->sphere_radius);
-        if (region.plane_count == CDL_REGION_SPHERE_SIDES + 1) unshrink_planes(&region, 0, CDL_REGION_SPHERE_SIDES, tol);
-        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
-    } else {
-        if (!cdl_region_pyramid(&region, p, light->outline, light->outline_count)) return 0;
-        unshrink_planes(&region, 1, light->outline_count, tol);
-        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
-    }
-    return !cdl_occluder_index_intersects(ctx->occluders, &region, tol, light->owner);
-}
-
-/* Stratified Monte-Carlo over the light: the mean of f = L cos / pdf over
- * visible samples (or, with `hidden_only`, of f over hidden samples) and the
- * variance of that mean; returns the number of samples. */
-static double sample_light(const cdl_direct_context *ctx, const cdl_scene_light *light, uint64_t stream, cdl_vec3 p,
-                           cdl_vec3 n, int hidden_only, double *mean, double *variance, cdl_direct_sample_stats *stats)
-{
-    /* 64-bit counts: k x k overflows an int from 2^31 samples on. */
-    int64_t k = (int64_t)ceil(sqrt((double)(ctx->samples > 0 ? ctx->samples : 1)));
-    double count = (double)(k * k);
-    cdl_rng_key key = {ctx->seed, stream};
-    double sum = 0.0, sum2 = 0.0;
-    for (int64_t j = 0; j < k; ++j)
-        for (int64_t i = 0; i < k; ++i) {
-            double u[2];
-            cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
-            cdl_light_sample s;
-            double f = 0.0;
-            if (cdl_emitter_sample(light->emitter, p, n, (i + u[0]) / k, (j + u[1]) / k, &s) && s.pdf > 0.0) {
-                double c = cdl_vec3_dot(n, s.to_light);
-                if (c > 0.0) {
-                    double contribution = s.L.cd_m2 * c / s.pdf;
-                    int occluded = ctx->geometry ? shadowed(ctx, p, n, s.to_light, s.distance, stats) : 0;
-                    if (hidden_only ? occluded : !occluded) f = contribution;
-                }
-            }
-            sum += f;
-            sum2 += f * f;
-        }
-    double m = sum / count;
-    double var = count > 1 ? fmax(0.0, (sum2 - count * m * m) / (count - 1)) / count : 0.0;
-    *mean = m;
-    *variance = var;
-    return count;
 }
 
 size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, double radius, uint32_t *active)
@@ -240,48 +132,8 @@ static double delta_contribution(const cdl_direct_context *ctx, const cdl_scene_
 {
     cdl_delta_light d;
     double E = delta_unshadowed(light, p, n, &d);
-    if (E > 0.0 && st == CDL_STRATEGY_DELTA_SHADOWED && shadowed(ctx, p, n, d.to_light, d.distance, stats)) return 0.0;
+    if (E > 0.0 && st == CDL_STRATEGY_DELTA_SHADOWED && cdl_direct_shadowed(ctx, p, n, d.to_light, d.distance, stats)) return 0.0;
     return E;
-}
-
-/* Illuminance from an area emitter or environment: closed form where nothing
- * hides it, closed form minus the sampled hidden part where something does,
- * plain sampling where there is no closed form. Adds to *E and *var. */
-static void extended_contribution(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy st,
-                                  uint64_t stream, cdl_vec3 p, cdl_vec3 n, double *E, double *var,
-                                  cdl_direct_sample_stats *stats)
-{
-    cdl_illuminance exact;
-    if (st != CDL_STRATEGY_SAMPLED && cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK) {
-        if (!(exact.lx > 0.0)) return; /* behind the emitter or below the horizon */
-        if (st == CDL_STRATEGY_EXTENDED_EXACT || light_fully_visible(ctx, light, p, n)) {
-            *E += exact.lx;
-            stats->exact_evaluations++;
-            return;
-        }
-        /* E = E_exact - E_hidden: a control variate that is exact when nothing
-         * is hidden and whose variance comes only from the hidden part. */
-        double hidden, v;
-        double c = sample_light(ctx, light, stream, p, n, 1, &hidden, &v, stats);
-        if (hidden == 0.0) {
-            /* No sample was hidden, so the sample variance is 0, yet a surface
-             * lies in the way and may hide less than the samples resolve. The
-             * error reported is the posterior standard deviation of a hidden
-             * fraction h seen in none of c samples (uniform prior:
-             * h ~ Beta(1, c + 1), variance (c + 1) / ((c + 2)^2
-             * (c + 3))), times the unhidden illuminance. */
-            v = exact.lx * exact.lx * (c + 1.0) / ((c + 2.0) * (c + 2.0) * (c + 3.0));
-        }
-        *E += fmax(0.0, exact.lx - hidden);
-        *var += v;
-        stats->sampled_evaluations++;
-        return;
-    }
-    double m, v;
-    sample_light(ctx, light, stream, p, n, 0, &m, &v, stats);
-    *E += m;
-    *var += v;
-    stats->sampled_evaluations++;
 }
 
 void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
@@ -297,7 +149,7 @@ void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strat
             E += delta_contribution(ctx, &ctx->lights[l], st, p, n, stats);
         } else {
             uint64_t light_stream = cdl_rng_stream_id(stream, (uint64_t)l, 0x6c69676874ull /* "light" */);
-            extended_contribution(ctx, &ctx->lights[l], st, light_stream, p, n, &E, &var, stats);
+            cdl_direct_extended_contribution(ctx, &ctx->lights[l], st, light_stream, p, n, &E, &var, stats);
         }
     }
     *E_out = E;
@@ -363,7 +215,7 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
             for (size_t i = 0; i < count; ++i) {
                 double e = 0.0;
                 uint64_t light_stream = cdl_rng_stream_id(streams[i], (uint64_t)l, 0x6c69676874ull /* "light" */);
-                extended_contribution(ctx, &ctx->lights[l], strategy, light_stream, points[i], normals[i], &e,
+                cdl_direct_extended_contribution(ctx, &ctx->lights[l], strategy, light_stream, points[i], normals[i], &e,
                                       &variance[i], stats);
                 scratch->contribution[i * lights + a] = e;
             }
@@ -372,7 +224,7 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
     /* 2. The shadow rays, one after another. */
     for (size_t k = 0; k < pending; ++k) {
         const cdl_ray_record *r = &scratch->rays[k];
-        if (ctx->log) record_ray(ctx->log, r->origin, r->dir, r->t_near, r->t_far);
+        if (ctx->log) cdl_direct_record_ray(ctx->log, r->origin, r->dir, r->t_near, r->t_far);
         if (cdl_ray_scene_occluded(ctx->rays, r->origin, r->dir, r->t_near, r->t_far))
             scratch->contribution[scratch->ray_slot[k]] = 0.0;
     }
@@ -400,7 +252,7 @@ double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stre
             double u[2];
             cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
             cdl_vec3 w = cdl_frame_to_world(&frame, cdl_sample_cosine_hemisphere_stratified((int)j, (int)i, (int)k, (int)k, u[0], u[1]));
-            if (!shadowed(ctx, p, n, w, INFINITY, stats)) open++;
+            if (!cdl_direct_shadowed(ctx, p, n, w, INFINITY, stats)) open++;
         }
     return (double)open / (double)(k * k);
 }

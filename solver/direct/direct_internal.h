@@ -1,0 +1,28 @@
+/* direct_internal.h - what the files of direct/ share (private to direct/). */
+#ifndef CANDELA_SOLVER_DIRECT_INTERNAL_H
+#define CANDELA_SOLVER_DIRECT_INTERNAL_H
+
+#include "solver/direct/direct.h"
+
+/* Geometric tolerance of region tests around p (direct_visibility.c). */
+double cdl_direct_region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p);
+
+/* Append a shadow ray to a benchmark's log. */
+void cdl_direct_record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_near, double t_far);
+
+/* Is the segment from p (normal n) along unit dir over `distance` blocked?
+ * Counts the ray in stats. */
+int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                        cdl_direct_sample_stats *stats);
+
+/* Is the region between p and the whole of the light clear of surfaces? */
+int cdl_direct_light_fully_visible(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p,
+                                   cdl_vec3 n);
+
+/* Illuminance from an area emitter or environment (direct_extended.c):
+ * adds to *E and its variance to *var. */
+void cdl_direct_extended_contribution(const cdl_direct_context *ctx, const cdl_scene_light *light,
+                                      cdl_light_strategy st, uint64_t stream, cdl_vec3 p, cdl_vec3 n, double *E,
+                                      double *var, cdl_direct_sample_stats *stats);
+
+#endif

@@ -1,0 +1,78 @@
+/* direct_visibility.c - is a shadow ray blocked, is a whole emitter in view? */
+#include "solver/direct/direct_internal.h"
+
+#include <stdlib.h>
+
+/* Geometric tolerance of region tests around p: a surface must reach ten
+ * ray epsilons into the region to count as an occluder, so surfaces that
+ * only touch it (the floor under a grid point, the ceiling around a
+ * recessed emitter) do not. */
+double cdl_direct_region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p)
+{
+    return 10.0 * cdl_ray_offsets_epsilon(&ctx->offsets, p);
+}
+
+void cdl_direct_record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_near, double t_far)
+{
+    if (log->count == log->capacity) {
+        size_t cap = log->capacity ? 2 * log->capacity : 4096;
+        cdl_ray_record *r = realloc(log->rays, cap * sizeof *r);
+        if (!r) {
+            log->overflow = 1;
+            return;
+        }
+        log->rays = r;
+        log->capacity = cap;
+    }
+    cdl_ray_record rec = {o, dir, t_near, t_far};
+    log->rays[log->count++] = rec;
+}
+
+/* Is the segment from p towards the light blocked? (offsets: scene_geometry.h) */
+int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                    cdl_direct_sample_stats *stats)
+{
+    cdl_vec3 o;
+    double t_near, t_far;
+    if (!cdl_ray_offsets_shadow_ray(&ctx->offsets, p, n, dir, distance, &o, &t_near, &t_far)) return 0;
+    stats->rays++;
+    if (ctx->log) cdl_direct_record_ray(ctx->log, o, dir, t_near, t_far);
+    return cdl_ray_scene_occluded(ctx->rays, o, dir, t_near, t_far);
+}
+
+/* Move planes first .. first + count - 1 of a region outward by tol, so
+ * that the index's shrink by tol leaves them where they were. */
+static void unshrink_planes(cdl_convex_region *region, int first, int count, double tol)
+{
+    for (int i = first; i < first + count && i < region->plane_count; ++i) region->planes[i].offset += tol;
+}
+
+/* Is the region between p and the whole of the light clear of surfaces?
+ * The index shrinks every plane by tol, so that the surface p lies on and
+ * the one the emitter is set into do not count. The side planes of a
+ * pyramid meet at p, though: shrunk, they cut away everything within about
+ * tol x distance / emitter size of p, and all of a pyramid thinner than
+ * 2 tol (a small emitter), so a table just above a floor point went unseen.
+ * The sides are therefore kept where they are; only the caps (the plane
+ * of p, the plane of the emitter) shrink. */
+int cdl_direct_light_fully_visible(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n)
+{
+    cdl_convex_region region;
+    region.plane_count = 0;
+    double tol = cdl_direct_region_tolerance(ctx, p);
+    if (light->is_environment) {
+        /* The open half-space above the receiving plane (and above the
+         * horizon for an upper-hemisphere sky): {x : -n.x <= -n.p}. */
+        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+        if (light->upper_only) cdl_region_add(&region, cdl_vec3_neg(light->up), -cdl_vec3_dot(light->up, p));
+    } else if (light->outline_is_sphere) {
+        cdl_region_sphere_view(&region, p, light->sphere_center, light->sphere_radius);
+        if (region.plane_count == CDL_REGION_SPHERE_SIDES + 1) unshrink_planes(&region, 0, CDL_REGION_SPHERE_SIDES, tol);
+        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+    } else {
+        if (!cdl_region_pyramid(&region, p, light->outline, light->outline_count)) return 0;
+        unshrink_planes(&region, 1, light->outline_count, tol);
+        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+    }
+    return !cdl_occluder_index_intersects(ctx->occluders, &region, tol, light->owner);
+}
