@@ -54,6 +54,11 @@ typedef struct cdl_grid_stats {
     double E_max_lx;
     double U0;                /* uniformity Emin / Em (0 when Em = 0) */
     double Ud;                /* diversity Emin / Emax (0 when Emax = 0) */
+    /* The stated error, relative: E_stderr / E over the points with E > 0
+     * (a dark point's relative error has no value; its E_stderr_lx is
+     * still in the CSV): the area-weighted mean and the worst. */
+    double stderr_mean_rel, stderr_max_rel;
+    double stderr_max_lx;     /* the worst E_stderr over all points */
 } cdl_grid_stats;
 
 /* Statistics of E over the grid (EN 12464-1 terms). Em is weighted by

@@ -53,4 +53,19 @@ void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats)
      * (DESIGN.md, summary.json); 0 when the denominator is 0. */
     stats->U0 = Em != 0.0 ? lo / Em : 0.0;
     stats->Ud = hi != 0.0 ? lo / hi : 0.0;
+
+    if (!result->E_stderr) return;
+    compensated_sum rel = {0.0, 0.0}, rel_weight = {0.0, 0.0};
+    for (size_t i = 0; i < n; ++i) {
+        double s = result->E_stderr[i];
+        if (s > stats->stderr_max_lx) stats->stderr_max_lx = s;
+        if (!(E[i] > 0.0)) continue;
+        double r = s / E[i];
+        if (r > stats->stderr_max_rel) stats->stderr_max_rel = r;
+        double wi = w && total_weight > 0.0 ? w[i] : 1.0;
+        compensated_add(&rel, wi * r);
+        compensated_add(&rel_weight, wi);
+    }
+    double rw = rel_weight.sum + rel_weight.carry;
+    stats->stderr_mean_rel = rw > 0.0 ? (rel.sum + rel.carry) / rw : 0.0;
 }

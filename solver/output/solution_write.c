@@ -92,20 +92,24 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
         cJSON_AddNumberToObject(o, "E_max_lx", stats[g].E_max_lx);
         cJSON_AddNumberToObject(o, "U0", stats[g].U0);
         cJSON_AddNumberToObject(o, "Ud", stats[g].Ud);
-        double worst = 0.0;
-        for (size_t i = 0; i < sol->grids[g].grid.count; ++i)
-            if (sol->grids[g].E_stderr[i] > worst) worst = sol->grids[g].E_stderr[i];
-        cJSON_AddNumberToObject(o, "E_stderr_max_lx", worst);
+        cJSON_AddNumberToObject(o, "stderr_mean_rel", stats[g].stderr_mean_rel);
+        cJSON_AddNumberToObject(o, "stderr_max_rel", stats[g].stderr_max_rel);
+        cJSON_AddNumberToObject(o, "E_stderr_max_lx", stats[g].stderr_max_lx);
         cJSON_AddNumberToObject(o, "edge_points", (double)sol->grids[g].edge_point_count);
         if (scene->grids[g].kind == CDL_GRID_POLYGON)
             cJSON_AddNumberToObject(o, "spacing_m", sol->grids[g].grid.spacing_m);
     }
     cJSON_AddStringToObject(root, "method", cdl_method_name(sol->method));
     cJSON_AddStringToObject(root, "quality", cdl_quality_name(sol->settings.quality));
+    cJSON_AddNumberToObject(root, "target_error", cdl_solver_settings_target(&sol->settings));
     cJSON *set = cJSON_AddObjectToObject(root, "settings");
     cJSON_AddStringToObject(set, "method", cdl_method_name(sol->settings.method));
     cJSON_AddStringToObject(set, "quality", cdl_quality_name(sol->settings.quality));
-    cJSON_AddNumberToObject(set, "bounces", sol->settings.bounces);
+    cJSON_AddNumberToObject(set, "target_error", cdl_solver_settings_target(&sol->settings));
+    if (sol->settings.bounces == CDL_BOUNCES_AUTO)
+        cJSON_AddStringToObject(set, "bounces", "auto");
+    else
+        cJSON_AddNumberToObject(set, "bounces", sol->settings.bounces);
     cJSON_AddNumberToObject(set, "seed", (double)sol->settings.seed);
     cJSON_AddNumberToObject(set, "threads", sol->threads_used);
     cJSON_AddNumberToObject(set, "direct_samples", sol->settings.direct_samples);
@@ -138,16 +142,20 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
     if (!stats) return cdl_error_out_of_memory(err);
 
     /* Settings recorded in every EXR. */
-    char seed[32], threads[16], bounces[16], ds[16], as[16];
+    char seed[32], threads[16], bounces[16], ds[16], as[16], target[32];
     snprintf(seed, sizeof seed, "%llu", (unsigned long long)sol->settings.seed);
     snprintf(threads, sizeof threads, "%d", sol->threads_used);
-    snprintf(bounces, sizeof bounces, "%d", sol->settings.bounces);
+    if (sol->settings.bounces == CDL_BOUNCES_AUTO)
+        snprintf(bounces, sizeof bounces, "auto");
+    else
+        snprintf(bounces, sizeof bounces, "%d", sol->settings.bounces);
+    snprintf(target, sizeof target, "%.17g", cdl_solver_settings_target(&sol->settings));
     snprintf(ds, sizeof ds, "%d", sol->settings.direct_samples);
     snprintf(as, sizeof as, "%d", sol->settings.ao_samples);
     const cdl_key_value attrs[] = {
         {"candela_version", CANDELA_VERSION}, {"scene", scene->path},
         {"method", cdl_method_name(sol->method)}, {"quality", cdl_quality_name(sol->settings.quality)},
-        {"seed", seed}, {"threads", threads}, {"bounces", bounces},
+        {"target_error", target}, {"seed", seed}, {"threads", threads}, {"bounces", bounces},
         {"direct_samples", ds}, {"ao_samples", as},
     };
 

@@ -146,15 +146,33 @@ typedef struct cdl_grid_spec {
 typedef enum cdl_method { CDL_METHOD_AUTO, CDL_METHOD_DIRECT, CDL_METHOD_ICACHE, CDL_METHOD_PATHTRACE } cdl_method;
 typedef enum cdl_quality { CDL_QUALITY_DRAFT, CDL_QUALITY_NORMAL, CDL_QUALITY_HIGH, CDL_QUALITY_REFERENCE } cdl_quality;
 
+/* `bounces` value meaning "auto": reflections are followed (Russian
+ * roulette) until what is left out is below a tenth of the target. */
+#define CDL_BOUNCES_AUTO (-1)
+
 typedef struct cdl_solver_settings {
     cdl_method method;                   /* default auto */
     cdl_quality quality;                 /* default normal */
-    int bounces;                         /* default 5 */
+    double target_error;                 /* relative standard error of E per point; 0 = the quality's */
+    int bounces;                         /* CDL_BOUNCES_AUTO (default) or the most reflections followed */
     uint64_t seed;                       /* default 1 */
     int threads;                         /* 0 = all cores (default) */
-    int direct_samples;                  /* 0 = from quality: samples per partly hidden emitter */
+    int direct_samples;                  /* 0 = adaptive to the target: samples per partly hidden emitter */
     int ao_samples;                      /* 0 = from quality */
 } cdl_solver_settings;
+
+/* The target relative standard error of a quality preset (DESIGN.md):
+ * draft 2 %, normal 0.5 %, high 0.1 %, reference 0.02 %. */
+double cdl_quality_target_error(cdl_quality quality);
+
+/* The target the settings ask for: target_error when given, else the
+ * quality's. */
+double cdl_solver_settings_target(const cdl_solver_settings *settings);
+
+/* Bounds of an explicit target_error: tighter than 1e-5 would ask for
+ * billions of samples per point; looser than 0.5 is no estimate at all. */
+#define CDL_TARGET_ERROR_MIN 1e-5
+#define CDL_TARGET_ERROR_MAX 0.5
 
 /* Most samples per point the scene may ask for (direct_samples, ao_samples):
  * 2^24, 4096 times the "reference" quality's AO count and far beyond any

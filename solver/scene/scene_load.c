@@ -20,7 +20,7 @@
  *   rect     origin, u, v, nu, nv, normal (default u x v)
  *   polygon  vertices, holes, spacing (metres > 0 or "auto", default "auto"), normal
  *   points   points: [{"p": [x, y, z], "n": [nx, ny, nz]}, ...]
- * Solver: method, quality, bounces, seed, threads, direct_samples, ao_samples.
+ * Solver: method, quality, target_error, bounces, seed, threads, direct_samples, ao_samples.
  * The photometric values (intensity_cd, flux_lm, luminance_cd_m2,
  * illuminance_lx) are a number in the unit the key names or text with any
  * unit of the same dimension, as people type it: "46.45 fc", "2 kcd",
@@ -47,6 +47,17 @@ static const char *const quality_names[] = {"draft", "normal", "high", "referenc
 const char *cdl_method_name(cdl_method method)
 {
     return (unsigned)method < 4 ? method_names[method] : "unknown";
+}
+
+double cdl_quality_target_error(cdl_quality quality)
+{
+    static const double targets[] = {0.02, 0.005, 0.001, 0.0002};
+    return (unsigned)quality < 4 ? targets[quality] : 0.005;
+}
+
+double cdl_solver_settings_target(const cdl_solver_settings *settings)
+{
+    return settings->target_error > 0.0 ? settings->target_error : cdl_quality_target_error(settings->quality);
 }
 
 const char *cdl_quality_name(cdl_quality quality)
@@ -384,21 +395,21 @@ static cdl_status read_grid(const cdl_scene_parse *ctx, const cJSON *node, const
 static cdl_status read_settings(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
                                 cdl_solver_settings *out)
 {
-    static const char *const keys[] = {"method", "quality", "bounces", "seed", "threads", "direct_samples",
-                                       "ao_samples", NULL};
+    static const char *const keys[] = {"method", "quality", "target_error", "bounces", "seed", "threads",
+                                       "direct_samples", "ao_samples", NULL};
     char p[CDL_SCENE_PATH_MAX];
     out->method = CDL_METHOD_AUTO;
     out->quality = CDL_QUALITY_NORMAL;
-    out->bounces = 5;
+    out->target_error = 0.0;
+    out->bounces = CDL_BOUNCES_AUTO;
     out->seed = 1;
     out->threads = 0;
     if (!node) return CDL_OK;
     int method = 0, quality = 1;
-    double bounces = 5, seed = 1, threads = 0, direct = 0, ao = 0;
+    double target = 0.0, bounces = CDL_BOUNCES_AUTO, seed = 1, threads = 0, direct = 0, ao = 0;
     if (cdl_scene_json_check_object(ctx, node, path, "the solver settings", keys) != CDL_OK ||
         cdl_scene_json_read_choice(ctx, field(node, path, "method", p), p, method_names, 0, &method) != CDL_OK ||
         cdl_scene_json_read_choice(ctx, field(node, path, "quality", p), p, quality_names, 0, &quality) != CDL_OK ||
-        cdl_scene_json_read_integer(ctx, field(node, path, "bounces", p), p, 0, 10000, 0, &bounces) != CDL_OK ||
         /* 2^53: every integer up to it is exact in a JSON (double) number. */
         cdl_scene_json_read_integer(ctx, field(node, path, "seed", p), p, 0, 9007199254740992.0, 0, &seed) != CDL_OK ||
         cdl_scene_json_read_integer(ctx, field(node, path, "threads", p), p, 0, 4096, 0, &threads) != CDL_OK ||
@@ -407,8 +418,25 @@ static cdl_status read_settings(const cdl_scene_parse *ctx, const cJSON *node, c
         cdl_scene_json_read_integer(ctx, field(node, path, "ao_samples", p), p, 1, CDL_SCENE_MAX_SAMPLES, 0, &ao) !=
             CDL_OK)
         return CDL_ERR_INPUT;
+    const cJSON *t = field(node, path, "target_error", p);
+    if (t && (!cJSON_IsNumber(t) || !(t->valuedouble >= CDL_TARGET_ERROR_MIN && t->valuedouble <= CDL_TARGET_ERROR_MAX))) {
+        char expected[128];
+        snprintf(expected, sizeof expected,
+                 "a relative standard error per point as a fraction in [%g, %g] (0.005 is 0.5 %%)",
+                 CDL_TARGET_ERROR_MIN, CDL_TARGET_ERROR_MAX);
+        return cdl_scene_json_fail(ctx, p, expected, t);
+    }
+    if (t) target = t->valuedouble;
+    /* "bounces": "auto" or a count. */
+    const cJSON *b = field(node, path, "bounces", p);
+    if (b && !(cJSON_IsString(b) && b->valuestring && strcmp(b->valuestring, "auto") == 0) &&
+        cdl_scene_json_read_integer(ctx, b, p, 0, 10000, 0, &bounces) != CDL_OK) {
+        cdl_error_clear(ctx->err);
+        return cdl_scene_json_fail(ctx, p, "\"auto\" or a whole number of reflections in [0, 10000]", b);
+    }
     out->method = (cdl_method)method;
     out->quality = (cdl_quality)quality;
+    out->target_error = target;
     out->bounces = (int)bounces;
     out->seed = (uint64_t)seed;
     out->threads = (int)threads;

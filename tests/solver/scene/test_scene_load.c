@@ -106,8 +106,12 @@ static void check_design_example(const cdl_scene *s, const char *base)
 
     /* solver */
     CHECK(s->settings.method == CDL_METHOD_AUTO && s->settings.quality == CDL_QUALITY_NORMAL &&
-          s->settings.bounces == 5 && s->settings.seed == 1 && s->settings.threads == 0 &&
-          s->settings.direct_samples == 0 && s->settings.ao_samples == 0);
+          s->settings.bounces == CDL_BOUNCES_AUTO && s->settings.seed == 1 && s->settings.threads == 0 &&
+          s->settings.direct_samples == 0 && s->settings.ao_samples == 0 && s->settings.target_error == 0.005);
+    /* The quality presets are target relative standard errors (DESIGN.md). */
+    CHECK(cdl_solver_settings_target(&s->settings) == 0.005);
+    const double presets[4] = {0.02, 0.005, 0.001, 0.0002};
+    for (int q = 0; q < 4; ++q) CHECK(cdl_quality_target_error((cdl_quality)q) == presets[q]);
 }
 
 static void check_defaults(void)
@@ -164,8 +168,23 @@ static void check_defaults(void)
     CHECK(s->settings.seed == 9007199254740992ull && s->settings.direct_samples == 64 &&
           s->settings.ao_samples == 32 && s->settings.threads == 2 && s->settings.bounces == 0);
     CHECK(strcmp(cdl_method_name(s->settings.method), "pathtrace") == 0);
+    CHECK(cdl_solver_settings_target(&s->settings) == 0.001); /* "high" */
     CHECK(strcmp(cdl_quality_name(CDL_QUALITY_DRAFT), "draft") == 0);
     cdl_scene_release(s);
+
+    /* target_error overrides the quality; bounces "auto". */
+    {
+        const char *t = "{\"version\": 1, \"grids\": [{\"name\": \"g\", \"type\": \"points\", \"points\": "
+                        "[{\"p\": [0,0,0], \"n\": [0,0,1]}]}], \"solver\": {\"quality\": \"draft\", "
+                        "\"target_error\": 0.003, \"bounces\": \"auto\"}}";
+        cdl_scene *ts = NULL;
+        CHECK_OK(cdl_scene_load_string(t, "target.json", &ts, &err), &err);
+        if (ts) {
+            CHECK(ts->settings.target_error == 0.003 && cdl_solver_settings_target(&ts->settings) == 0.003);
+            CHECK(ts->settings.bounces == CDL_BOUNCES_AUTO && ts->settings.quality == CDL_QUALITY_DRAFT);
+            cdl_scene_release(ts);
+        }
+    }
 
     /* A UTF-8 byte-order mark is read past; minimal scene: only a grid. */
     const char *minimal = "\xEF\xBB\xBF{\"version\": 1, \"grids\": [{\"name\": \"p\", \"type\": \"points\","
@@ -174,7 +193,7 @@ static void check_defaults(void)
     if (s) {
         CHECK(s->surface_count == 0 && s->luminaire_count == 0 && s->grid_count == 1);
         CHECK(strcmp(s->base_dir, "dir/sub") == 0 && strcmp(s->path, "dir/sub/minimal.json") == 0);
-        CHECK(s->settings.method == CDL_METHOD_AUTO && s->settings.bounces == 5 && s->settings.seed == 1);
+        CHECK(s->settings.method == CDL_METHOD_AUTO && s->settings.bounces == CDL_BOUNCES_AUTO && s->settings.seed == 1);
         cdl_scene_release(s);
     }
 }
