@@ -16,15 +16,12 @@
 #include "solver/scene/scene_lights.h"
 #include "solver/scene/scene_occluders.h"
 
-/* Sample counts implied by the quality level (explicit knobs override).
- * Direct: per partly hidden extended light and point; the standard error of
- * the hidden part falls as 1/sqrt(n). AO: per point. */
-static void quality_defaults(cdl_quality q, int *direct_samples, int *ao_samples)
+/* Ambient-occlusion samples per point implied by the quality level (an
+ * explicit ao_samples overrides). Direct light samples to the target. */
+static int quality_ao_samples(cdl_quality q)
 {
-    static const int direct[] = {16, 64, 256, 1024};
     static const int ao[] = {64, 256, 1024, 4096};
-    *direct_samples = direct[q];
-    *ao_samples = ao[q];
+    return ao[q];
 }
 
 /* Does light reflect anywhere? Returns the JSON path of the first reflecting
@@ -141,10 +138,8 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     }
     cJSON_AddStringToObject(plan, "method", cdl_method_name(out->method));
     out->settings = scene->settings;
-    int ds, as;
-    quality_defaults(scene->settings.quality, &ds, &as);
-    if (out->settings.direct_samples <= 0) out->settings.direct_samples = ds;
-    if (out->settings.ao_samples <= 0) out->settings.ao_samples = as;
+    if (out->settings.ao_samples <= 0) out->settings.ao_samples = quality_ao_samples(scene->settings.quality);
+    double target = cdl_solver_settings_target(&scene->settings);
     int threads = opts.threads >= 0 ? opts.threads : scene->settings.threads;
     if (threads <= 0) threads = cdl_pool_cpu_count();
     if (opts.ray_log) threads = 1;
@@ -181,6 +176,8 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     ctx.lights = lights.lights;
     ctx.light_count = lights.count;
     ctx.samples = out->settings.direct_samples;
+    /* Direct light alone: the whole target is its own. */
+    ctx.target = target;
     ctx.ao_samples = out->settings.ao_samples;
     ctx.seed = scene->settings.seed;
     ctx.log = opts.ray_log;

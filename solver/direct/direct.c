@@ -136,24 +136,49 @@ static double delta_contribution(const cdl_direct_context *ctx, const cdl_scene_
     return E;
 }
 
+static int is_delta(cdl_light_strategy st)
+{
+    return st == CDL_STRATEGY_DELTA_EXACT || st == CDL_STRATEGY_DELTA_SHADOWED;
+}
+
 void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
                             const uint32_t *active, size_t active_count, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
                             double *E_out, double *var_out, cdl_direct_sample_stats *stats)
 {
-    double E = 0.0, var = 0.0;
     size_t count = active ? active_count : ctx->light_count;
+    /* Per light: its contribution, and for the extended ones their index,
+     * their place among the lights and their value, in one block. */
+    size_t each = 2 * sizeof(double) + sizeof(size_t) + sizeof(uint32_t);
+    char *block = malloc((count ? count : 1) * each);
+    if (!block) {
+        *E_out = NAN; /* refused by the solve's finite check, never a silent number */
+        *var_out = NAN;
+        return;
+    }
+    double *contribution = (double *)block, *values = contribution + count;
+    size_t *slot = (size_t *)(values + count);
+    uint32_t *extended = (uint32_t *)(slot + count);
+    /* The same steps, in the same order, as cdl_direct_illuminance_chunk. */
+    double known = 0.0, var = 0.0;
+    size_t n_ext = 0;
     for (size_t a = 0; a < count; ++a) {
         size_t l = active ? active[a] : a;
-        cdl_light_strategy st = strategies[l];
-        if (st == CDL_STRATEGY_DELTA_EXACT || st == CDL_STRATEGY_DELTA_SHADOWED) {
-            E += delta_contribution(ctx, &ctx->lights[l], st, p, n, stats);
+        contribution[a] = 0.0;
+        if (is_delta(strategies[l])) {
+            contribution[a] = delta_contribution(ctx, &ctx->lights[l], strategies[l], p, n, stats);
         } else {
-            uint64_t light_stream = cdl_rng_stream_id(stream, (uint64_t)l, 0x6c69676874ull /* "light" */);
-            cdl_direct_extended_contribution(ctx, &ctx->lights[l], st, light_stream, p, n, &E, &var, stats);
+            slot[n_ext] = a;
+            extended[n_ext++] = (uint32_t)l;
         }
     }
+    for (size_t a = 0; a < count; ++a) known += contribution[a];
+    if (n_ext) cdl_direct_extended_point(ctx, strategies, extended, n_ext, stream, p, n, known, values, &var, stats);
+    for (size_t j = 0; j < n_ext; ++j) contribution[slot[j]] = values[j];
+    double E = 0.0;
+    for (size_t a = 0; a < count; ++a) E += contribution[a];
     *E_out = E;
     *var_out = var;
+    free(block);
 }
 
 void cdl_direct_scratch_release(cdl_direct_scratch *scratch)
@@ -161,11 +186,24 @@ void cdl_direct_scratch_release(cdl_direct_scratch *scratch)
     free(scratch->contribution);
     free(scratch->rays);
     free(scratch->ray_slot);
+    free(scratch->ext_light);
+    free(scratch->ext_slot);
+    free(scratch->ext_value);
     memset(scratch, 0, sizeof *scratch);
 }
 
-static cdl_status scratch_reserve(cdl_direct_scratch *s, size_t slots, cdl_error *err)
+static cdl_status scratch_reserve(cdl_direct_scratch *s, size_t slots, size_t lights, cdl_error *err)
 {
+    if (lights > s->light_capacity) {
+        uint32_t *el = realloc(s->ext_light, lights * sizeof *el);
+        if (el) s->ext_light = el;
+        size_t *es = realloc(s->ext_slot, lights * sizeof *es);
+        if (es) s->ext_slot = es;
+        double *ev = realloc(s->ext_value, lights * sizeof *ev);
+        if (ev) s->ext_value = ev;
+        if (!el || !es || !ev) return cdl_error_out_of_memory(err);
+        s->light_capacity = lights;
+    }
     if (slots <= s->capacity) return CDL_OK;
     double *c = realloc(s->contribution, slots * sizeof *c);
     if (c) s->contribution = c;
@@ -188,7 +226,7 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
     if (count > CDL_DIRECT_CHUNK_MAX)
         return cdl_error_set(err, CDL_ERR_INTERNAL, "direct chunk of %zu points (at most %d)", count,
                              CDL_DIRECT_CHUNK_MAX);
-    cdl_status st = scratch_reserve(scratch, count * lights + 1, err);
+    cdl_status st = scratch_reserve(scratch, count * lights + 1, lights + 1, err);
     if (st != CDL_OK) return st;
     size_t pending = 0;
     /* 1. Every light's contribution to every point, light by light (one
@@ -198,7 +236,8 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
     for (size_t a = 0; a < lights; ++a) {
         size_t l = active ? active[a] : a;
         cdl_light_strategy strategy = strategies[l];
-        if (strategy == CDL_STRATEGY_DELTA_EXACT || strategy == CDL_STRATEGY_DELTA_SHADOWED) {
+        for (size_t i = 0; i < count; ++i) scratch->contribution[i * lights + a] = 0.0;
+        if (is_delta(strategy)) {
             cdl_emitter_eval_delta_many(ctx->lights[l].emitter, points, normals, count, delta);
             for (size_t i = 0; i < count; ++i) {
                 double e = delta[i].E.lx > 0.0 ? delta[i].E.lx : 0.0;
@@ -211,14 +250,6 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
                     scratch->ray_slot[pending++] = (uint32_t)(i * lights + a);
                 }
             }
-        } else {
-            for (size_t i = 0; i < count; ++i) {
-                double e = 0.0;
-                uint64_t light_stream = cdl_rng_stream_id(streams[i], (uint64_t)l, 0x6c69676874ull /* "light" */);
-                cdl_direct_extended_contribution(ctx, &ctx->lights[l], strategy, light_stream, points[i], normals[i], &e,
-                                      &variance[i], stats);
-                scratch->contribution[i * lights + a] = e;
-            }
         }
     }
     /* 2. The shadow rays, one after another. */
@@ -229,11 +260,29 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
             scratch->contribution[scratch->ray_slot[k]] = 0.0;
     }
     stats->rays += pending;
-    /* 3. Each point's sum in light order, as cdl_direct_illuminance forms it
-     *    (adding the zeros of dark lights changes no bit). */
+    /* 3. Per point, the extended lights, sampled together to the point's
+     *    target given its exact terms; then the sum in light order, as
+     *    cdl_direct_illuminance forms it (adding the zeros of dark lights
+     *    changes no bit). */
+    size_t n_ext = 0;
+    for (size_t a = 0; a < lights; ++a) {
+        size_t l = active ? active[a] : a;
+        if (!is_delta(strategies[l])) {
+            scratch->ext_slot[n_ext] = a;
+            scratch->ext_light[n_ext++] = (uint32_t)l;
+        }
+    }
     for (size_t i = 0; i < count; ++i) {
+        double *c = &scratch->contribution[i * lights];
+        if (n_ext) {
+            double known = 0.0;
+            for (size_t a = 0; a < lights; ++a) known += c[a];
+            cdl_direct_extended_point(ctx, strategies, scratch->ext_light, n_ext, streams[i], points[i], normals[i],
+                                      known, scratch->ext_value, &variance[i], stats);
+            for (size_t j = 0; j < n_ext; ++j) c[scratch->ext_slot[j]] = scratch->ext_value[j];
+        }
         double sum = 0.0;
-        for (size_t a = 0; a < lights; ++a) sum += scratch->contribution[i * lights + a];
+        for (size_t a = 0; a < lights; ++a) sum += c[a];
         E[i] = sum;
     }
     return CDL_OK;

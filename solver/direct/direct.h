@@ -60,7 +60,9 @@ typedef struct cdl_direct_context {
     const cdl_occluder_index *occluders; /* NULL when the scene has no geometry */
     const cdl_scene_light *lights;
     size_t light_count;
-    int samples;                      /* per partly hidden extended light (rounded up to a square) */
+    double target;                    /* relative standard error of a point's direct E (sampled terms) */
+    int samples;                      /* > 0: exactly this many samples (rounded up to 2 k^2) per partly
+                                       * hidden extended light; 0: sample to the target */
     int ao_samples;                   /* per point for ambient occlusion (rounded up to a square) */
     uint64_t seed;
     cdl_ray_log *log;                 /* NULL, or records every shadow ray (one thread only) */
@@ -98,6 +100,10 @@ typedef struct cdl_direct_scratch {
     cdl_ray_record *rays;             /* pending shadow rays */
     uint32_t *ray_slot;               /* their slot in `contribution` */
     size_t capacity;                  /* slots */
+    uint32_t *ext_light;              /* the chunk's extended lights */
+    size_t *ext_slot;                 /* their place among the active lights */
+    double *ext_value;                /* a point's values of them */
+    size_t light_capacity;
 } cdl_direct_scratch;
 
 void cdl_direct_scratch_release(cdl_direct_scratch *scratch);

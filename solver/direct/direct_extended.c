@@ -1,82 +1,210 @@
 /* direct_extended.c - area emitters and skies: closed form where nothing
- * hides them, the hidden part sampled where something may. */
+ * hides them, the hidden part sampled where something may, each point
+ * sampled until its own target holds.
+ *
+ * A light with a closed form E_0 (area emitters, skies; cdl_emitter_exact_
+ * illuminance) that may be partly hidden is estimated as
+ *     E = E_0 - H,   H = int over the emitter of f (1 - V),
+ * f = L cos / pdf the unoccluded integrand and V the visibility: a control
+ * variate that is exact when nothing is hidden, whose variance comes from
+ * the hidden part alone. A light without a closed form is sampled plainly
+ * (E = int f V). Samples come in rounds of k x k strata with two samples
+ * each (radiometry/estimate.h), so that each round's variance has an
+ * unbiased estimate.
+ *
+ * A point's target: the variance of its direct illuminance (the sum over
+ * its sampled lights) at most (t R)^2, t = ctx->target, R = max(E, floor):
+ * E the point's direct illuminance so far (exact terms included), floor a
+ * thousandth of what its sampled lights would give with nothing in the way
+ * (a point almost wholly shadowed is held to an error relative to the light
+ * it could have had, not to the nothing it has). Rounds go to the light
+ * with the largest variance until the target holds or every light has had
+ * CDL_DIRECT_MAX_SAMPLES samples; whatever is stated is then honest.
+ *
+ * A light whose samples were all hidden, or none, is not certain: what the
+ * samples could have missed is the light's unhidden value times the
+ * posterior spread of a fraction seen in none of N samples
+ * (cdl_estimate_unseen_variance), and that is its variance at the least.
+ */
 #include "solver/direct/direct_internal.h"
 
 #include <math.h>
+#include <stdlib.h>
 
+#include "radiometry/estimate.h"
 #include "radiometry/rng.h"
 
-/* Stratified Monte-Carlo over the light: the mean of f = L cos / pdf over
- * visible samples (or, with `hidden_only`, of f over hidden samples) and the
- * variance of that mean; returns the number of samples. */
-static double sample_light(const cdl_direct_context *ctx, const cdl_scene_light *light, uint64_t stream, cdl_vec3 p,
-                           cdl_vec3 n, int hidden_only, double *mean, double *variance, cdl_direct_sample_stats *stats)
+/* Most samples per light and point when sampling to a target (an explicit
+ * direct_samples may ask for more). 2^18 shadow rays take about 30 ms. */
+#define CDL_DIRECT_MAX_SAMPLES 262144.0
+
+/* Strata per side of a point's first round: 6 x 6 strata, 72 samples, so
+ * that the first variance estimate (36 degrees of freedom) is sound enough
+ * to stop on. */
+#define FIRST_SIDE 6
+
+/* How a light's contribution is formed at a point. */
+enum { TERM_EXACT, TERM_HIDDEN, TERM_PLAIN };
+
+typedef struct term {
+    const cdl_scene_light *light;
+    uint64_t stream;
+    int mode;
+    double exact;            /* E_0 (TERM_EXACT, TERM_HIDDEN) */
+    double potential;        /* what the light gives with nothing in the way */
+    cdl_estimate est;        /* of H (hidden) or of E (plain) */
+    double carrying;         /* samples whose direction carries light at all */
+} term;
+
+/* One round of k x k strata, two samples each, added to t->est. */
+static void sample_round(const cdl_direct_context *ctx, term *t, int k, cdl_vec3 p, cdl_vec3 n,
+                         cdl_direct_sample_stats *stats)
 {
-    /* 64-bit counts: k x k overflows an int from 2^31 samples on. */
-    int64_t k = (int64_t)ceil(sqrt((double)(ctx->samples > 0 ? ctx->samples : 1)));
-    double count = (double)(k * k);
-    cdl_rng_key key = {ctx->seed, stream};
-    double sum = 0.0, sum2 = 0.0;
+    cdl_rng_key key = {ctx->seed, t->stream};
+    uint64_t base = (uint64_t)t->est.samples;
+    cdl_round round = {0.0, 0.0, 0.0, 0};
+    double unoccluded = 0.0;
     for (int64_t j = 0; j < k; ++j)
         for (int64_t i = 0; i < k; ++i) {
-            double u[2];
-            cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
-            cdl_light_sample s;
-            double f = 0.0;
-            if (cdl_emitter_sample(light->emitter, p, n, (i + u[0]) / k, (j + u[1]) / k, &s) && s.pdf > 0.0) {
-                double c = cdl_vec3_dot(n, s.to_light);
-                if (c > 0.0) {
-                    double contribution = s.L.cd_m2 * c / s.pdf;
-                    int occluded = ctx->geometry ? cdl_direct_shadowed(ctx, p, n, s.to_light, s.distance, stats) : 0;
-                    if (hidden_only ? occluded : !occluded) f = contribution;
-                }
+            double f[2];
+            for (int s = 0; s < 2; ++s) {
+                double u[2];
+                cdl_rng_uniform2(key, base + (uint64_t)(2 * (j * k + i) + s), u);
+                f[s] = 0.0;
+                cdl_light_sample ls;
+                if (!cdl_emitter_sample(t->light->emitter, p, n, (i + u[0]) / k, (j + u[1]) / k, &ls) ||
+                    !(ls.pdf > 0.0))
+                    continue;
+                double c = cdl_vec3_dot(n, ls.to_light);
+                if (!(c > 0.0)) continue;
+                double value = ls.L.cd_m2 * c / ls.pdf;
+                t->carrying += 1.0;
+                unoccluded += value;
+                int hidden = ctx->geometry ? cdl_direct_shadowed(ctx, p, n, ls.to_light, ls.distance, stats) : 0;
+                if (t->mode == TERM_HIDDEN ? hidden : !hidden) f[s] = value;
             }
-            sum += f;
-            sum2 += f * f;
+            cdl_round_add_pair(&round, f[0], f[1]);
         }
-    double m = sum / count;
-    double var = count > 1 ? fmax(0.0, (sum2 - count * m * m) / (count - 1)) / count : 0.0;
-    *mean = m;
-    *variance = var;
-    return count;
+    cdl_estimate_add_round(&t->est, &round);
+    if (t->mode == TERM_PLAIN) {
+        /* No closed form: the mean unoccluded sample stands for what the
+         * light could give (pooled over rounds by sample count). */
+        double n_before = t->est.samples - 2.0 * round.strata;
+        t->potential = (t->potential * n_before + unoccluded) / t->est.samples;
+    }
+    stats->sampled_evaluations++;
 }
 
-/* Illuminance from an area emitter or environment: closed form where nothing
- * hides it, closed form minus the sampled hidden part where something does,
- * plain sampling where there is no closed form. Adds to *E and *var. */
-void cdl_direct_extended_contribution(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy st,
-                                  uint64_t stream, cdl_vec3 p, cdl_vec3 n, double *E, double *var,
-                                  cdl_direct_sample_stats *stats)
+static double term_value(const term *t)
+{
+    switch (t->mode) {
+    case TERM_EXACT: return t->exact;
+    case TERM_HIDDEN: return fmax(0.0, t->exact - cdl_estimate_mean(&t->est));
+    default: return cdl_estimate_mean(&t->est);
+    }
+}
+
+static double term_variance(const term *t)
+{
+    if (t->mode == TERM_EXACT) return 0.0;
+    double v = cdl_estimate_variance(&t->est);
+    /* Every sample hidden, or none (or, sampled plainly, none lit): the
+     * samples could have missed the other kind. */
+    int one_sided = t->mode == TERM_HIDDEN ? t->est.nonzero == 0 || (double)t->est.nonzero >= t->carrying
+                                           : t->est.nonzero == 0;
+    if (one_sided) {
+        double unseen = cdl_estimate_unseen_variance(t->est.samples, t->potential);
+        if (unseen > v) v = unseen;
+    }
+    return v;
+}
+
+/* Set up a light's term at p: exact when nothing can hide it, else a first
+ * round of samples. */
+static void term_start(const cdl_direct_context *ctx, term *t, cdl_light_strategy st, cdl_vec3 p, cdl_vec3 n,
+                       cdl_direct_sample_stats *stats)
 {
     cdl_illuminance exact;
-    if (st != CDL_STRATEGY_SAMPLED && cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK) {
-        if (!(exact.lx > 0.0)) return; /* behind the emitter or below the horizon */
-        if (st == CDL_STRATEGY_EXTENDED_EXACT || cdl_direct_light_fully_visible(ctx, light, p, n)) {
-            *E += exact.lx;
-            stats->exact_evaluations++;
-            return;
+    t->exact = t->potential = t->carrying = 0.0;
+    t->est = (cdl_estimate){0.0, 0.0, 0.0, 0};
+    if (st != CDL_STRATEGY_SAMPLED || cdl_emitter_has_exact_illuminance(t->light->emitter)) {
+        if (cdl_emitter_exact_illuminance(t->light->emitter, p, n, &exact, NULL) == CDL_OK) {
+            t->exact = t->potential = exact.lx > 0.0 ? exact.lx : 0.0;
+            t->mode = TERM_EXACT;
+            if (!(exact.lx > 0.0)) return; /* behind the emitter or below the horizon */
+            if (st == CDL_STRATEGY_EXTENDED_EXACT) {
+                stats->exact_evaluations++;
+                return;
+            }
+            if (st == CDL_STRATEGY_EXTENDED_TESTED && cdl_direct_light_fully_visible(ctx, t->light, p, n)) {
+                stats->exact_evaluations++;
+                return;
+            }
+            t->mode = TERM_HIDDEN;
+        } else {
+            t->mode = TERM_PLAIN;
         }
-        /* E = E_exact - E_hidden: a control variate that is exact when nothing
-         * is hidden and whose variance comes only from the hidden part. */
-        double hidden, v;
-        double c = sample_light(ctx, light, stream, p, n, 1, &hidden, &v, stats);
-        if (hidden == 0.0) {
-            /* No sample was hidden, so the sample variance is 0, yet a surface
-             * lies in the way and may hide less than the samples resolve. The
-             * error reported is the posterior standard deviation of a hidden
-             * fraction h seen in none of c samples (uniform prior:
-             * h ~ Beta(1, c + 1), variance (c + 1) / ((c + 2)^2
-             * (c + 3))), times the unhidden illuminance. */
-            v = exact.lx * exact.lx * (c + 1.0) / ((c + 2.0) * (c + 2.0) * (c + 3.0));
+    } else {
+        t->mode = TERM_PLAIN;
+    }
+    int side = ctx->samples > 0 ? (int)ceil(sqrt(ctx->samples / 2.0)) : FIRST_SIDE;
+    sample_round(ctx, t, side, p, n, stats);
+}
+
+void cdl_direct_extended_point(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                               const uint32_t *lights, size_t count, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                               double known, double *contribution, double *variance, cdl_direct_sample_stats *stats)
+{
+    term local[16];
+    term *terms = count <= 16 ? local : malloc(count * sizeof *terms);
+    if (!terms) {
+        /* Out of memory for a point with many lights: one light at a time
+         * (each to the point's whole target), never a wrong number. */
+        double var_sum = 0.0;
+        for (size_t j = 0; j < count; ++j) {
+            double v = 0.0;
+            cdl_direct_extended_point(ctx, strategies, &lights[j], 1, stream, p, n, known, &contribution[j], &v,
+                                      stats);
+            var_sum += v;
         }
-        *E += fmax(0.0, exact.lx - hidden);
-        *var += v;
-        stats->sampled_evaluations++;
+        *variance = var_sum;
         return;
     }
-    double m, v;
-    sample_light(ctx, light, stream, p, n, 0, &m, &v, stats);
-    *E += m;
-    *var += v;
-    stats->sampled_evaluations++;
+    for (size_t j = 0; j < count; ++j) {
+        terms[j].light = &ctx->lights[lights[j]];
+        terms[j].stream = cdl_rng_stream_id(stream, (uint64_t)lights[j], 0x6c69676874ull /* "light" */);
+        term_start(ctx, &terms[j], strategies[lights[j]], p, n, stats);
+    }
+    /* Sample to the target, unless the scene fixed the sample count. */
+    while (ctx->samples <= 0) {
+        double E = known, V = 0.0, potential = 0.0;
+        size_t worst = count;
+        double worst_var = 0.0;
+        for (size_t j = 0; j < count; ++j) {
+            E += term_value(&terms[j]);
+            double v = term_variance(&terms[j]);
+            V += v;
+            potential += terms[j].potential;
+            if (v > worst_var && terms[j].est.samples < CDL_DIRECT_MAX_SAMPLES) {
+                worst_var = v;
+                worst = j;
+            }
+        }
+        double R = fmax(E, 1e-3 * potential);
+        double budget = ctx->target * ctx->target * R * R;
+        if (V <= budget || worst == count) break;
+        /* This light's share of the budget, in proportion to its variance. */
+        double goal = worst_var * budget / V;
+        int side = cdl_estimate_next_side(&terms[worst].est, goal, 2, 1 << 15);
+        double room = CDL_DIRECT_MAX_SAMPLES - terms[worst].est.samples;
+        while (side > 2 && 2.0 * side * side > room) side--;
+        sample_round(ctx, &terms[worst], side, p, n, stats);
+    }
+    double var_sum = 0.0;
+    for (size_t j = 0; j < count; ++j) {
+        contribution[j] = term_value(&terms[j]);
+        var_sum += term_variance(&terms[j]);
+    }
+    *variance = var_sum;
+    if (terms != local) free(terms);
 }

@@ -19,10 +19,14 @@ int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, c
 int cdl_direct_light_fully_visible(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p,
                                    cdl_vec3 n);
 
-/* Illuminance from an area emitter or environment (direct_extended.c):
- * adds to *E and its variance to *var. */
-void cdl_direct_extended_contribution(const cdl_direct_context *ctx, const cdl_scene_light *light,
-                                      cdl_light_strategy st, uint64_t stream, cdl_vec3 p, cdl_vec3 n, double *E,
-                                      double *var, cdl_direct_sample_stats *stats);
+/* The extended lights (area emitters, skies) of one point (direct_extended.c):
+ * lights[0 .. count) are their indices, in light order; `known` is the
+ * point's direct illuminance from its other (exact) lights. Each light's
+ * illuminance goes to contribution[j], the variance of their sum to
+ * *variance. Sampled until the point's target holds (ctx->target), or with
+ * ctx->samples samples a light when that is set. */
+void cdl_direct_extended_point(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                               const uint32_t *lights, size_t count, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                               double known, double *contribution, double *variance, cdl_direct_sample_stats *stats);
 
 #endif

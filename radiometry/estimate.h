@@ -1,0 +1,75 @@
+/* estimate.h - Monte-Carlo estimates in rounds, with an honest standard error.
+ *
+ * A round is a stratified estimate of an integral over the unit square: H
+ * strata of equal measure (a k x k grid), two independent uniform samples
+ * in each. Its mean is
+ *     m = 1/(2H) sum_h (f_h1 + f_h2),
+ * and, with two samples a stratum, the variance of m has an unbiased
+ * estimate from the within-stratum differences alone:
+ *     Var(m) = 1/H^2 sum_h sigma_h^2 / 2,  sigma_h^2 ~ (f_h1 - f_h2)^2 / 2
+ *     => v = 1/(4 H^2) sum_h (f_h1 - f_h2)^2
+ * (Cochran, "Sampling Techniques", 3rd ed., 1977, 5A.12: stratified
+ * sampling with n_h = 2 is the smallest design with an unbiased variance
+ * estimate). The plain sample variance of stratified samples would count
+ * the between-strata spread the strata remove, and overstate the error
+ * several times over.
+ *
+ * Rounds are independent; they are pooled with weights fixed by their
+ * sample counts n_r (not by their estimated variances, which would bias
+ * the mean): M = sum n_r m_r / N, Var(M) = sum n_r^2 v_r / N^2.
+ *
+ * A round in which every sample is 0 gives v = 0 although light could have
+ * been missed; callers that know what a missed sample could have carried
+ * add that to the variance themselves (cdl_estimate_unseen_variance).
+ */
+#ifndef CANDELA_RADIOMETRY_ESTIMATE_H
+#define CANDELA_RADIOMETRY_ESTIMATE_H
+
+#include <stdint.h>
+
+/* One round being summed. */
+typedef struct cdl_round {
+    double sum;        /* of all samples */
+    double sum_d2;     /* of (f_h1 - f_h2)^2 over strata */
+    double strata;     /* H */
+    uint64_t nonzero;  /* samples != 0 */
+} cdl_round;
+
+/* Add the two samples of one stratum. */
+static inline void cdl_round_add_pair(cdl_round *r, double f1, double f2)
+{
+    double d = f1 - f2;
+    r->sum += f1 + f2;
+    r->sum_d2 += d * d;
+    r->strata += 1.0;
+    r->nonzero += (uint64_t)(f1 != 0.0) + (uint64_t)(f2 != 0.0);
+}
+
+/* The pooled estimate of all rounds so far. */
+typedef struct cdl_estimate {
+    double samples;    /* N = sum n_r */
+    double weighted;   /* sum n_r m_r (= the sum of all samples) */
+    double var_num;    /* sum n_r^2 v_r */
+    uint64_t nonzero;
+} cdl_estimate;
+
+void cdl_estimate_add_round(cdl_estimate *e, const cdl_round *r);
+double cdl_estimate_mean(const cdl_estimate *e);
+/* Variance of the mean (0 before any round). */
+double cdl_estimate_variance(const cdl_estimate *e);
+
+/* The variance of an estimate whose N samples were all 0, when each sample
+ * could have carried up to `potential` (the value of a sample with nothing
+ * in the way): the fraction of the integrand hidden from the samples, under
+ * a uniform prior, is Beta(1, N + 1) after N misses, with variance
+ * (N + 1) / ((N + 2)^2 (N + 3)); times potential^2. */
+double cdl_estimate_unseen_variance(double samples, double potential);
+
+/* Strata per side of the next round: enough, at the variance per sample
+ * seen so far, to bring the pooled variance down to `target_variance`
+ * (with 10 % to spare), but at least half the samples taken so far (rounds
+ * grow geometrically) and never more than 4 times them (an early variance
+ * estimate may be low); at least k_min and at most k_max. */
+int cdl_estimate_next_side(const cdl_estimate *e, double target_variance, int k_min, int k_max);
+
+#endif
