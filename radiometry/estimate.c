@@ -53,3 +53,19 @@ int cdl_estimate_next_side(const cdl_estimate *e, double target_variance, int k_
     if (k > k_max) k = k_max;
     return (int)k;
 }
+
+double cdl_estimate_plan(const cdl_estimate *pilot, double target_variance, double least)
+{
+    double c = cdl_estimate_variance(pilot) * pilot->samples;
+    if (!(target_variance > 0.0) || !(c > 0.0)) return least;
+    double n = 2.0 * c / target_variance;
+    return n > least ? n : least;
+}
+
+int cdl_estimate_side_for(double samples, int k_min, int k_max)
+{
+    double k = ceil(sqrt(samples / 2.0));
+    if (k < k_min) k = k_min;
+    if (k > k_max) k = k_max;
+    return (int)k;
+}

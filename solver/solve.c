@@ -12,6 +12,7 @@
 #include "solver/direct/direct.h"
 #include "solver/direct/direct_grid.h"
 #include "solver/geometry/occluder_index.h"
+#include "solver/pathtrace/pathtrace.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_lights.h"
 #include "solver/scene/scene_occluders.h"
@@ -49,42 +50,58 @@ static const char *first_reflector(const cdl_scene *scene, double *rho)
     return NULL;
 }
 
-static cdl_status choose_method(const cdl_scene *scene, cdl_method *method, cJSON *plan, cdl_error *err)
+/* The method, and whether interreflection is computed at all (*indirect),
+ * with the reason in the plan. */
+static cdl_status choose_method(const cdl_scene *scene, cdl_method *method, int *indirect, cJSON *plan,
+                                cdl_error *err)
 {
     double rho = 0.0;
     const char *reflector = first_reflector(scene, &rho);
     cJSON *inter = cJSON_AddObjectToObject(plan, "interreflection");
-    char why[256];
+    char why[320];
+    *indirect = 0;
+    *method = scene->settings.method;
     switch (scene->settings.method) {
     case CDL_METHOD_DIRECT:
-        *method = CDL_METHOD_DIRECT;
-        cJSON_AddBoolToObject(inter, "modelled", 0);
         if (reflector)
             snprintf(why, sizeof why, "method \"direct\" asks for direct light only (%s reflects %g %%)", reflector,
                      rho * 100.0);
         else
             snprintf(why, sizeof why, "method \"direct\"; no surface reflects light, so none would be interreflected");
-        cJSON_AddStringToObject(inter, "why", why);
-        return CDL_OK;
+        break;
     case CDL_METHOD_AUTO:
-        if (reflector)
-            return cdl_error_set(err, CDL_ERR_INPUT,
-                                 "%s: solver.method: \"auto\" needs interreflected light here (%s reflects %g %%), "
-                                 "which needs the irradiance cache or the path tracer, not built in this version; "
-                                 "set \"method\": \"direct\" to compute direct light only",
-                                 scene->path, reflector, rho * 100.0);
-        *method = CDL_METHOD_DIRECT;
-        cJSON_AddBoolToObject(inter, "modelled", 0);
-        cJSON_AddStringToObject(inter, "why", "no surface reflects light: direct light is the whole answer");
-        return CDL_OK;
-    case CDL_METHOD_ICACHE:
+        if (!reflector) {
+            *method = CDL_METHOD_DIRECT;
+            snprintf(why, sizeof why, "no surface reflects light: direct light is the whole answer");
+            break;
+        }
+        *method = CDL_METHOD_PATHTRACE;
+        *indirect = 1;
+        snprintf(why, sizeof why,
+                 "%s reflects %g %%: interreflected light by path tracing each point to the target (the "
+                 "irradiance cache is not built in this version)",
+                 reflector, rho * 100.0);
+        break;
     case CDL_METHOD_PATHTRACE:
+        *indirect = reflector != NULL;
+        if (reflector)
+            snprintf(why, sizeof why, "method \"pathtrace\": %s reflects %g %%, paths traced from each point to the target",
+                     reflector, rho * 100.0);
+        else
+            snprintf(why, sizeof why, "method \"pathtrace\", but no surface reflects light: direct light is the whole "
+                                      "answer and no path is traced");
+        break;
+    case CDL_METHOD_ICACHE:
         return cdl_error_set(err, CDL_ERR_INPUT,
-                             "%s: solver.method: \"%s\" is not built in this version; use \"direct\" (direct light "
-                             "only) or \"auto\" for scenes without reflecting surfaces",
-                             scene->path, cdl_method_name(scene->settings.method));
+                             "%s: solver.method: \"icache\" is not built in this version; use \"pathtrace\" or "
+                             "\"auto\" for interreflected light, or \"direct\" for direct light only",
+                             scene->path);
+    default:
+        return cdl_error_set(err, CDL_ERR_INTERNAL, "unknown method");
     }
-    return cdl_error_set(err, CDL_ERR_INTERNAL, "unknown method");
+    cJSON_AddBoolToObject(inter, "modelled", *indirect);
+    cJSON_AddStringToObject(inter, "why", why);
+    return CDL_OK;
 }
 
 /* ---- results a double cannot hold ------------------------------------------------ */
@@ -131,7 +148,8 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
 
     cJSON *plan = cJSON_CreateObject();
     if (!plan) return cdl_error_out_of_memory(err);
-    cdl_status st = choose_method(scene, &out->method, plan, err);
+    int indirect = 0;
+    cdl_status st = choose_method(scene, &out->method, &indirect, plan, err);
     if (st != CDL_OK) {
         cJSON_Delete(plan);
         return st;
@@ -176,8 +194,17 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     ctx.lights = lights.lights;
     ctx.light_count = lights.count;
     ctx.samples = out->settings.direct_samples;
-    /* Direct light alone: the whole target is its own. */
-    ctx.target = target;
+    /* Direct light alone: the whole target is its own; with interreflection
+     * half the variance of E is the direct part's, half the paths'. */
+    ctx.target = indirect ? target / sqrt(2.0) : target;
+    cdl_pathtrace_context pt = {.direct = &ctx,
+                                .geometry = geometry,
+                                .seed = scene->settings.seed,
+                                .bounces = scene->settings.bounces,
+                                .target = target,
+                                .max_paths = 16777216.0};
+    cdl_pathtrace_stats pt_stats;
+    memset(&pt_stats, 0, sizeof pt_stats);
     ctx.ao_samples = out->settings.ao_samples;
     ctx.seed = scene->settings.seed;
     ctx.log = opts.ray_log;
@@ -235,10 +262,20 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                                    &opts.progress, stage_name, &total, err);
         out->compute_seconds += cdl_pool_now_seconds() - tc;
         if (st != CDL_OK) goto fail;
+        if (indirect) {
+            /* gs->E holds the indirect part's variance until added. */
+            snprintf(stage_name, sizeof stage_name, "grid %s: interreflection", spec->name);
+            tc = cdl_pool_now_seconds();
+            st = cdl_pathtrace_solve_grid(&pt, &gs->grid, g, gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,
+                                          threads, &opts.progress, stage_name, &pt_stats, err);
+            out->compute_seconds += cdl_pool_now_seconds() - tc;
+            if (st != CDL_OK) goto fail;
+        }
         for (size_t i = 0; i < gs->grid.count; ++i) {
-            gs->E[i] = gs->E_direct[i];
-            gs->E_indirect[i] = 0.0;
-            gs->E_stderr[i] = sqrt(gs->E_stderr[i]);
+            double var = gs->E_stderr[i] + (indirect ? gs->E[i] : 0.0);
+            if (!indirect) gs->E_indirect[i] = 0.0;
+            gs->E[i] = gs->E_direct[i] + gs->E_indirect[i];
+            gs->E_stderr[i] = sqrt(var);
         }
         st = check_finite(scene, &lights, g, gs, err);
         if (st != CDL_OK) goto fail;
@@ -247,6 +284,25 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         cJSON *counts = cJSON_AddObjectToObject(plan, "evaluations");
         cJSON_AddNumberToObject(counts, "closed_form", (double)total.exact_evaluations);
         cJSON_AddNumberToObject(counts, "sampled", (double)total.sampled_evaluations);
+    }
+    if (indirect) {
+        cJSON *inter = cJSON_GetObjectItem(plan, "interreflection");
+        cJSON_AddStringToObject(inter, "method", "pathtrace");
+        char bounces[200];
+        if (scene->settings.bounces == CDL_BOUNCES_AUTO)
+            snprintf(bounces, sizeof bounces,
+                     "auto: paths end by Russian roulette (unbiased); the longest followed %llu reflections",
+                     (unsigned long long)pt_stats.longest);
+        else
+            snprintf(bounces, sizeof bounces, "at most %d reflections (the scene's limit)", scene->settings.bounces);
+        cJSON_AddStringToObject(inter, "bounces", bounces);
+        cJSON_AddNumberToObject(inter, "bounces_modelled",
+                                scene->settings.bounces == CDL_BOUNCES_AUTO ? (double)pt_stats.longest
+                                                                            : scene->settings.bounces);
+        cJSON_AddNumberToObject(inter, "energy_left_out", cdl_pathtrace_left_out(&pt_stats));
+        cJSON_AddNumberToObject(inter, "paths", (double)pt_stats.paths);
+        cJSON_AddNumberToObject(inter, "path_vertices", (double)pt_stats.vertices);
+        total.rays += pt_stats.rays + pt_stats.direct.rays;
     }
     out->rays = total.rays;
     out->plan_json = cJSON_PrintUnformatted(plan);

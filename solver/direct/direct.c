@@ -181,6 +181,50 @@ void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strat
     free(block);
 }
 
+double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 n,
+                                 double *unoccluded, cdl_direct_sample_stats *stats)
+{
+    double E = 0.0, free_E = 0.0;
+    for (size_t l = 0; l < ctx->light_count; ++l) {
+        const cdl_scene_light *light = &ctx->lights[l];
+        if (cdl_emitter_is_delta(light->emitter)) {
+            cdl_delta_light d;
+            double e = delta_unshadowed(light, p, n, &d);
+            if (!(e > 0.0)) continue;
+            free_E += e;
+            if (!ctx->geometry || !cdl_direct_shadowed(ctx, p, n, d.to_light, d.distance, stats)) E += e;
+            continue;
+        }
+        /* One sample of the light: with a closed form E_0, the estimator
+         * E_0 - f (1 - V) (exact where the sample is not hidden); without,
+         * f V. f = L cos / pdf, V the sample's visibility. */
+        cdl_illuminance exact;
+        int closed = cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK;
+        if (closed && !(exact.lx > 0.0)) continue;
+        double u[2];
+        cdl_rng_uniform2(key, (uint64_t)l, u);
+        cdl_light_sample s;
+        double f = 0.0;
+        int visible = 1;
+        if (cdl_emitter_sample(light->emitter, p, n, u[0], u[1], &s) && s.pdf > 0.0) {
+            double c = cdl_vec3_dot(n, s.to_light);
+            if (c > 0.0) {
+                f = s.L.cd_m2 * c / s.pdf;
+                visible = !ctx->geometry || !cdl_direct_shadowed(ctx, p, n, s.to_light, s.distance, stats);
+            }
+        }
+        if (closed) {
+            free_E += exact.lx;
+            E += visible ? exact.lx : exact.lx - f;
+        } else {
+            free_E += f;
+            E += visible ? f : 0.0;
+        }
+    }
+    if (unoccluded) *unoccluded = free_E;
+    return E;
+}
+
 void cdl_direct_scratch_release(cdl_direct_scratch *scratch)
 {
     free(scratch->contribution);

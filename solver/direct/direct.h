@@ -23,6 +23,7 @@
 #include <stdint.h>
 
 #include "lights/emitter.h"
+#include "radiometry/rng.h"
 #include "radiometry/error.h"
 #include "radiometry/vec3.h"
 #include "solver/geometry/occluder_index.h"
@@ -90,6 +91,19 @@ size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, 
 void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
                             const uint32_t *active, size_t active_count, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
                             double *E, double *variance, cdl_direct_sample_stats *stats);
+
+/* An unbiased estimate of the direct illuminance (lux) at any point p with
+ * unit normal n, lying on a surface or not: a path vertex, a gather ray's
+ * hit. Cheap: delta lights exactly with one shadow ray (none without
+ * geometry); every other light with one sample (random numbers from `key`,
+ * index = the light's number): the closed form minus the sample's hidden
+ * part where the light has a closed form (exact when the sample is not
+ * hidden), else the sample itself. The estimate of a single call may be
+ * negative (a hidden sample can exceed the closed form); its mean is exact.
+ * *unoccluded (may be NULL) receives what the lights would give with
+ * nothing in the way (closed forms, or the sample's unshadowed value). */
+double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 n,
+                                 double *unoccluded, cdl_direct_sample_stats *stats);
 
 /* Most points cdl_direct_illuminance_chunk takes at once. */
 #define CDL_DIRECT_CHUNK_MAX 64

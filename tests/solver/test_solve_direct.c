@@ -11,35 +11,7 @@
 #include "radiometry/constants.h"
 #include "solver/scene/exr_image.h"
 #include "solver/solve.h"
-
-/* Solve a scene given as JSON text; returns 0 on failure (reported). */
-static int solve_json(const char *json, cdl_scene **scene, cdl_solution *sol, int threads)
-{
-    cdl_error err;
-    cdl_error_clear(&err);
-    *scene = NULL;
-    if (cdl_scene_load_string(json, CANDELA_TEST_TMPDIR "/inline.json", scene, &err) != CDL_OK) {
-        fprintf(stderr, "scene load failed: %s\n", err.message);
-        CHECK(0);
-        return 0;
-    }
-    cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
-    o.threads = threads;
-    if (cdl_solve_scene(*scene, &o, sol, &err) != CDL_OK) {
-        fprintf(stderr, "solve failed: %s\n", err.message);
-        CHECK(0);
-        cdl_scene_release(*scene);
-        *scene = NULL;
-        return 0;
-    }
-    return 1;
-}
-
-static void done(cdl_scene *scene, cdl_solution *sol)
-{
-    cdl_solution_release(sol);
-    cdl_scene_release(scene);
-}
+#include "solver/solve_fixture.h"
 
 /* Point light, no geometry: inverse-square and cosine law over angles
  * 0..89.9 degrees and distances 1e-4..1e5 m, intensities 1e-6..1e9 cd.
@@ -67,7 +39,7 @@ static void test_inverse_square_cosine(void)
         snprintf(json + n, sizeof json - (size_t)n, "]}], \"solver\": {\"method\": \"direct\"}}");
         cdl_scene *scene;
         cdl_solution sol;
-        if (!solve_json(json, &scene, &sol, 1)) continue;
+        if (!fixture_solve(json, &scene, &sol, 1)) continue;
         const cdl_grid_solution *g = &sol.grids[0];
         int k = 0;
         for (int d = 0; d < 3; ++d)
@@ -79,7 +51,7 @@ static void test_inverse_square_cosine(void)
                 CHECK(g->E_stderr[k] == 0.0);
             }
         CHECK(sol.rays == 0); /* nothing in the scene: no rays */
-        done(scene, &sol);
+        fixture_release(scene, &sol);
     }
 }
 
@@ -123,7 +95,7 @@ static void test_spot_falloff(void)
     snprintf(json + k, sizeof json - (size_t)k, "]}], \"solver\": {\"method\": \"direct\"}}");
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     for (int i = 0; i < n; ++i) {
         double ca = cos(angles[i] * CDL_DEG_TO_RAD), ch = cos(half * CDL_DEG_TO_RAD), cf = cos(falloff * CDL_DEG_TO_RAD);
         double f;
@@ -139,7 +111,7 @@ static void test_spot_falloff(void)
         else
             CHECK_REL(sol.grids[0].E[i], expected, 1e-12);
     }
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* Rotation matrix world_from_luminaire = Rz Ry Rx (fixed axes, x first). */
@@ -207,7 +179,7 @@ static void test_goniometric_rotated(void)
     snprintf(json + j, sizeof json - (size_t)j, "]}], \"solver\": {\"method\": \"direct\"}}");
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     for (int i = 0; i < n; ++i) {
         int C = nodes[i][0], g = nodes[i][1];
         double table = gonio_table((360 - C) % 360, g);
@@ -222,7 +194,7 @@ static void test_goniometric_rotated(void)
     const double tilt[3] = {0.0, -30.0, 0.0};
     cdl_vec3 nadir = rotate_xyz(tilt, cdl_vec3_make(0, 0, -1));
     CHECK(nadir.x > 0.49 && nadir.z < -0.86);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* Configuration factor, differential element to a parallel rectangle a x b
@@ -279,7 +251,7 @@ static void test_lambertian_emitters(void)
         "  {\"p\": [0.6, 0.3, -10000], \"n\": [0, 0, 1]}]}], \"solver\": {\"method\": \"direct\"}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     const double *E = sol.grids[0].E;
     /* corner: one rectangle; centre: four quarter rectangles. */
     CHECK_REL(E[0], CDL_PI * L * cf_parallel_corner(a, b, h), 1e-10);
@@ -294,7 +266,7 @@ static void test_lambertian_emitters(void)
     /* 10 km below: the far field is I cos / d^2 with I = L A. */
     CHECK_REL(E[4], L * a * b / (10001.7 * 10001.7), 1e-6);
     for (int i = 0; i < 5; ++i) CHECK(sol.grids[0].E_stderr[i] == 0.0);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 
     /* The same rectangle given by flux (Phi = pi L A) and a maintenance
      * factor: L = 0.8 x 3000 lm / (pi x 0.72 m^2). */
@@ -304,9 +276,9 @@ static void test_lambertian_emitters(void)
         "\"v\": [1.2, 0, 0]}, \"flux_lm\": 3000, \"maintenance_factor\": 0.8}],"
         " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}]}],"
         " \"solver\": {\"method\": \"direct\"}}";
-    if (!solve_json(by_flux, &scene, &sol, 1)) return;
+    if (!fixture_solve(by_flux, &scene, &sol, 1)) return;
     CHECK_REL(sol.grids[0].E[0], CDL_PI * (0.8 * 3000.0 / (CDL_PI * a * b)) * cf_parallel_corner(a, b, h), 1e-10);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 
     /* Disk on axis: E = pi L r^2 / (r^2 + h^2). */
     const char *disk =
@@ -314,10 +286,10 @@ static void test_lambertian_emitters(void)
         "\"normal\": [0, 0, -1], \"radius\": 0.3}, \"luminance_cd_m2\": 1000}], \"grids\": [{\"name\": \"p\", "
         "\"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}, {\"p\": [0, 0, 1.5], \"n\": [0, 0, 1]}]}],"
         " \"solver\": {\"method\": \"direct\"}}";
-    if (!solve_json(disk, &scene, &sol, 1)) return;
+    if (!fixture_solve(disk, &scene, &sol, 1)) return;
     CHECK_REL(sol.grids[0].E[0], CDL_PI * 1000.0 * 0.09 / (0.09 + 4.0), 1e-10);
     CHECK_REL(sol.grids[0].E[1], CDL_PI * 1000.0 * 0.09 / (0.09 + 0.25), 1e-10);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* Uniform sky: pi L on a horizontal plane, pi L / 2 on a vertical one
@@ -332,7 +304,7 @@ static void test_uniform_sky(void)
         " \"solver\": {\"method\": \"direct\"}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     const double *E = sol.grids[0].E;
     CHECK_REL(E[0], CDL_PI * 5000.0, 1e-12);
     CHECK_REL(E[1], CDL_PI * 5000.0 / 2.0, 1e-12);
@@ -340,15 +312,15 @@ static void test_uniform_sky(void)
     CHECK_REL(E[2], CDL_PI * 5000.0 * (1.0 + 0.8) / 2.0, 1e-12);
     CHECK(E[3] == 0.0);
     CHECK(sol.rays == 0);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
     const char *full =
         "{\"version\": 1, \"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 300}], \"grids\": "
         "[{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, -1]}, "
         "{\"p\": [0, 0, 0], \"n\": [0.6, 0, 0.8]}]}], \"solver\": {\"method\": \"direct\"}}";
-    if (!solve_json(full, &scene, &sol, 1)) return;
+    if (!fixture_solve(full, &scene, &sol, 1)) return;
     CHECK_REL(sol.grids[0].E[0], CDL_PI * 300.0, 1e-12);
     CHECK_REL(sol.grids[0].E[1], CDL_PI * 300.0, 1e-12);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* Shadows from a box: a point light at (0, 0, 4) over a 1 x 1 x 1 box on the
@@ -366,7 +338,7 @@ static void test_box_shadow(void)
         "\"v\": [0, 4, 0], \"nu\": 40, \"nv\": 40}], \"solver\": {\"method\": \"direct\"}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 2)) return;
+    if (!fixture_solve(json, &scene, &sol, 2)) return;
     const cdl_grid_solution *g = &sol.grids[0];
     int shadowed = 0, lit = 0;
     for (size_t i = 0; i < g->grid.count; ++i) {
@@ -386,7 +358,7 @@ static void test_box_shadow(void)
     }
     /* cell centres at -1.95 .. 1.95 by 0.1: 14 of them have |x| < 2/3 */
     CHECK(shadowed == 14 * 14 && lit == 1600 - 14 * 14);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* A rectangular emitter half hidden: an opaque plate at half height covers
@@ -404,14 +376,14 @@ static void test_half_hidden_emitter(void)
         " \"solver\": {\"method\": \"direct\", \"direct_samples\": 4096}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     double full = 4.0 * CDL_PI * 1000.0 * cf_parallel_corner(0.5, 0.5, 2.0);
     double E = sol.grids[0].E[0], se = sol.grids[0].E_stderr[0];
     CHECK_MSG(se > 0.0 && se < 0.01 * full, "stderr %g", se);
     /* within 4 standard errors (the stderr is an i.i.d. estimate, an upper
      * bound for the stratified estimator) */
     CHECK_MSG(fabs(E - 0.5 * full) <= 4.0 * se, "E = %g, expected %g +- %g", E, 0.5 * full, 4.0 * se);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* The same room at 1e-3, 1 and 1e3 times the size: for fixed intensities
@@ -433,7 +405,7 @@ static void solve_scaled_room(double s, cdl_solution *sol, cdl_scene **scene)
              "\"v\": [0, %.17g, 0], \"nu\": 32, \"nv\": 32}], \"solver\": {\"method\": \"direct\"}}",
              4 * s, 4 * s, 3 * s, 1.5 * s, 1.5 * s, 2.2 * s, 2.5 * s, 0.8 * s, 0.6 * s, 1.0 * s, 1.2 * s, 2.0 * s,
              0.4 * s, 1.0 * s, 1.3 * s, 2.9 * s, 3.5 * s, 3.5 * s, 2.8 * s, 4 * s, 4 * s);
-    solve_json(json, scene, sol, 1);
+    fixture_solve(json, scene, sol, 1);
 }
 
 static void test_scale_invariance(void)
@@ -455,9 +427,9 @@ static void test_scale_invariance(void)
     }
     CHECK_MSG(mismatched == 0, "%zu of %zu points differ between scales", mismatched, n);
     CHECK_MSG(zeros > 20 && zeros < n / 2, "%zu shadowed points", zeros); /* the obstacles do cast shadows */
-    done(s1, &r1);
-    done(sa, &ra);
-    done(sb, &rb);
+    fixture_release(s1, &r1);
+    fixture_release(sa, &ra);
+    fixture_release(sb, &rb);
 }
 
 /* Results do not depend on the number of threads: bit-identical. */
@@ -474,7 +446,7 @@ static void test_thread_determinism(void)
     cdl_scene *s[3];
     cdl_solution r[3];
     const int threads[3] = {1, 2, 3};
-    for (int t = 0; t < 3; ++t) solve_json(json, &s[t], &r[t], threads[t]);
+    for (int t = 0; t < 3; ++t) fixture_solve(json, &s[t], &r[t], threads[t]);
     if (!s[0] || !s[1] || !s[2]) return;
     size_t n = r[0].grids[0].grid.count;
     for (int t = 1; t < 3; ++t) {
@@ -487,7 +459,7 @@ static void test_thread_determinism(void)
     int sampled = 0;
     for (size_t i = 0; i < n; ++i) sampled += r[0].grids[0].E_stderr[i] > 0.0;
     CHECK(sampled > 0);
-    for (int t = 0; t < 3; ++t) done(s[t], &r[t]);
+    for (int t = 0; t < 3; ++t) fixture_release(s[t], &r[t]);
 }
 
 /* Ambient occlusion: an open plane sees the whole sky (1); a point on the
@@ -504,28 +476,31 @@ static void test_ambient_occlusion(void)
         " {\"p\": [11, 11, 0], \"n\": [0, 0, 1]}], \"outputs\": [\"ao\"]}], \"solver\": {\"method\": \"direct\"}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     CHECK(sol.grids[0].ao[0] == 1.0);
     CHECK(sol.grids[0].ao[1] == 0.0);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
-/* Methods: a scene with reflecting surfaces needs interreflection, which
- * "auto" cannot give yet: refused, never solved with less. */
+/* Methods: "auto" on a scene with reflecting surfaces computes their
+ * interreflection (here by path tracing: a flat plate cannot light itself,
+ * so the point's interreflected part is exactly 0 and its E the direct
+ * I cos / d^2 = 1 lx); "icache" is refused while it is not built. */
 static void test_method_refusals(void)
 {
     const char *reflecting =
         "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [0, 0, 0], \"u\": [1, 0, 0], \"v\": [0, 1, 0], "
-        "\"reflectance\": 0.5}], \"luminaires\": [{\"type\": \"point\", \"position\": [0, 0, 1], \"intensity_cd\": 1}],"
+        "\"reflectance\": 0.5}], \"luminaires\": [{\"type\": \"point\", \"position\": [0.5, 0.5, 1], \"intensity_cd\": 1}],"
         " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0.5, 0.5, 0], \"n\": [0, 0, 1]}]}]}";
     cdl_error err;
     cdl_scene *scene = NULL;
-    CHECK_OK(cdl_scene_load_string(reflecting, "refl.json", &scene, &err), &err);
-    if (scene) {
-        cdl_solution sol;
-        CHECK(cdl_solve_scene(scene, NULL, &sol, &err) == CDL_ERR_INPUT);
-        CHECK(strstr(err.message, "surfaces[0]") != NULL && strstr(err.message, "\"direct\"") != NULL);
-        cdl_scene_release(scene);
+    cdl_solution refl;
+    if (fixture_solve(reflecting, &scene, &refl, 1)) {
+        CHECK(refl.method == CDL_METHOD_PATHTRACE);
+        CHECK(strstr(refl.plan_json, "surfaces[0] reflects 50 %") != NULL);
+        CHECK_REL(refl.grids[0].E[0], 1.0, 1e-12);
+        CHECK(refl.grids[0].E_indirect[0] == 0.0);
+        fixture_release(scene, &refl);
     }
     const char *icache =
         "{\"version\": 1, \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], "
@@ -543,11 +518,11 @@ static void test_method_refusals(void)
         "\"reflectance\": 0}], \"luminaires\": [{\"type\": \"point\", \"position\": [0.5, 0.5, 1], \"intensity_cd\": 100}],"
         " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0.5, 0.5, 0], \"n\": [0, 0, 1]}]}]}";
     cdl_solution sol;
-    if (solve_json(dark, &scene, &sol, 1)) {
+    if (fixture_solve(dark, &scene, &sol, 1)) {
         CHECK(sol.method == CDL_METHOD_DIRECT);
         CHECK_REL(sol.grids[0].E[0], 100.0, 1e-12);
         CHECK(strstr(sol.plan_json, "no surface reflects light") != NULL);
-        done(scene, &sol);
+        fixture_release(scene, &sol);
     }
 }
 
@@ -580,7 +555,7 @@ static void test_image_environment(void)
         " \"solver\": {\"method\": \"direct\", \"direct_samples\": 16384}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     const double *E = sol.grids[0].E, *se = sol.grids[0].E_stderr;
     /* Upward: uniform 1000 over the hemisphere -> 1000 pi; the band covers
      * azimuths -45..45 degrees: a quarter of the cosine-weighted hemisphere. */
@@ -599,7 +574,7 @@ static void test_image_environment(void)
     }
     CHECK(E[3] == 0.0); /* facing down: the ground half is black */
     CHECK(strstr(sol.plan_json, "sampled") != NULL);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* Model only what the scene needs: a point light and a grid inside a closed
@@ -615,7 +590,7 @@ static void test_plan_no_rays(void)
         " \"nu\": 10, \"nv\": 8}], \"solver\": {\"method\": \"direct\"}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(room, &scene, &sol, 1)) return;
+    if (!fixture_solve(room, &scene, &sol, 1)) return;
     CHECK(sol.rays == 0);
     CHECK(strstr(sol.plan_json, "exact, no shadow rays: no surface can come between") != NULL);
     CHECK(strstr(sol.plan_json, "no environment work") != NULL);
@@ -625,7 +600,7 @@ static void test_plan_no_rays(void)
         double d2 = (p.x - 2.5) * (p.x - 2.5) + (p.y - 2) * (p.y - 2) + 2.9 * 2.9;
         CHECK_REL(sol.grids[0].E[i], 800.0 * 2.9 / sqrt(d2) / d2, 1e-12);
     }
-    done(scene, &sol);
+    fixture_release(scene, &sol);
     const char *obstacle =
         "{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [0, 0, 0], \"max\": [5, 4, 3], \"inward\": true,"
         " \"reflectance\": 0}, {\"type\": \"disk\", \"center\": [2.5, 2, 1.5], \"normal\": [0, 0, 1], \"radius\": 0.3,"
@@ -633,7 +608,7 @@ static void test_plan_no_rays(void)
         " \"luminaires\": [{\"type\": \"point\", \"position\": [2.5, 2, 2.9], \"intensity_cd\": 800}],"
         " \"grids\": [{\"name\": \"floor\", \"type\": \"rect\", \"origin\": [0, 0, 0], \"u\": [5, 0, 0], \"v\": [0, 4, 0],"
         " \"nu\": 10, \"nv\": 8}], \"solver\": {\"method\": \"direct\"}}";
-    if (!solve_json(obstacle, &scene, &sol, 1)) return;
+    if (!fixture_solve(obstacle, &scene, &sol, 1)) return;
     CHECK(sol.rays == 80);
     CHECK(strstr(sol.plan_json, "one shadow ray per point: surfaces may come between") != NULL);
     /* the disk (radius 0.3 at half height) shadows the floor within radius
@@ -641,7 +616,7 @@ static void test_plan_no_rays(void)
     int dark = 0;
     for (size_t i = 0; i < sol.grids[0].grid.count; ++i) dark += sol.grids[0].E[i] == 0.0;
     CHECK(dark == 4);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 
@@ -667,9 +642,9 @@ static void test_emitting_surfaces(void)
      * of configuration factors), so E = pi L x 1. */
     cdl_scene *scene;
     cdl_solution sol;
-    if (solve_json(room, &scene, &sol, 1)) {
+    if (fixture_solve(room, &scene, &sol, 1)) {
         CHECK_REL(sol.grids[0].E[0], CDL_PI * L, 1e-9);
-        done(scene, &sol);
+        fixture_release(scene, &sol);
     }
     /* Only the ceiling glows: a luminous ceiling over a dark room. */
     const char *ceiling =
@@ -679,7 +654,7 @@ static void test_emitting_surfaces(void)
         " \"luminance_cd_m2\": 700}],"
         " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [1.5, 1.0, 0], \"n\": [0, 0, 1]},"
         " {\"p\": [2.5, 2.0, 1.2], \"n\": [0, 0, 1]}]}], \"solver\": {\"method\": \"direct\"}}";
-    if (solve_json(ceiling, &scene, &sol, 1)) {
+    if (fixture_solve(ceiling, &scene, &sol, 1)) {
         /* the ceiling rect (normal (5,0,0) x (0,-4,0) = -z: facing down) split at the
          * foot of the normal through each point into four corner rectangles */
         double a1 = 1.5, a2 = 5.0 - 1.5, b1 = 1.0, b2 = 4.0 - 1.0, h = 3.0;
@@ -690,7 +665,7 @@ static void test_emitting_surfaces(void)
         F = 4.0 * cf_parallel_corner(a1, b1, h);
         CHECK_REL(sol.grids[0].E[1], CDL_PI * L * F, 1e-10);
         CHECK(sol.grids[0].E_stderr[0] == 0.0 && sol.rays == 0);
-        done(scene, &sol);
+        fixture_release(scene, &sol);
     }
     const char *sphere =
         "{\"version\": 1, \"surfaces\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 2, \"inward\": true,"
@@ -698,9 +673,9 @@ static void test_emitting_surfaces(void)
         " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]},"
         " {\"p\": [0.7, -0.3, 1.1], \"n\": [1, 0, 0]}, {\"p\": [-1.2, 0.4, -0.9], \"n\": [0.3, -0.4, -0.866]}]}],"
         " \"solver\": {\"method\": \"direct\"}}";
-    if (solve_json(sphere, &scene, &sol, 1)) {
+    if (fixture_solve(sphere, &scene, &sol, 1)) {
         for (int i = 0; i < 3; ++i) CHECK_REL(sol.grids[0].E[i], CDL_PI * 250.0, 1e-12);
-        done(scene, &sol);
+        fixture_release(scene, &sol);
     }
     /* cos^n spot: I0 cos^n(alpha), nothing behind. */
     const char *cosn =
@@ -708,12 +683,12 @@ static void test_emitting_surfaces(void)
         " \"intensity_cd\": 400, \"exponent\": 3}], \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": ["
         " {\"p\": [0, 0, -2], \"n\": [0, 0, 1]}, {\"p\": [1.2855752193730785, 0, -1.532088886237956], \"n\": [-0.6427876096865394, 0, 0.766044443118978]},"
         " {\"p\": [2, 0, 0.5], \"n\": [-1, 0, 0]}]}], \"solver\": {\"method\": \"direct\"}}";
-    if (solve_json(cosn, &scene, &sol, 1)) {
+    if (fixture_solve(cosn, &scene, &sol, 1)) {
         CHECK_REL(sol.grids[0].E[0], 400.0 / 4.0, 1e-12);
         double c = cos(40.0 * CDL_DEG_TO_RAD); /* the second point: 2 m away at 40 degrees, facing the spot */
         CHECK_REL(sol.grids[0].E[1], 400.0 * c * c * c / 4.0, 1e-12);
         CHECK(sol.grids[0].E[2] == 0.0);      /* above the spot's horizon */
-        done(scene, &sol);
+        fixture_release(scene, &sol);
     }
 }
 
@@ -759,7 +734,7 @@ static void test_directional_shadow(void)
         " {\"p\": [0.5, 0, 0.5], \"n\": [1, 0, 0]}]}], \"solver\": {\"method\": \"direct\"}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 2)) return;
+    if (!fixture_solve(json, &scene, &sol, 2)) return;
     const cdl_vec3 to_light = cdl_vec3_normalize(cdl_vec3_make(-0.3, -0.2, 1.0));
     const double lit = 80000.0 * 0.9 * to_light.z; /* floor normal +z */
     const cdl_grid_solution *g = &sol.grids[0];
@@ -793,7 +768,7 @@ static void test_directional_shadow(void)
     /* Exact with one shadow ray per point, never sampled. */
     for (size_t i = 0; i < g->grid.count; ++i) CHECK(g->E_stderr[i] == 0.0);
     CHECK(strstr(sol.plan_json, "exact, one shadow ray per point") != NULL);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* A uniform sky partly hidden: an upper-hemisphere sky of luminance L over a
@@ -817,7 +792,7 @@ static void test_sky_behind_wall(void)
         " \"solver\": {\"method\": \"direct\", \"direct_samples\": 4096}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     const double a[2] = {1.0, 2.0}, h = 1.0;
     for (int i = 0; i < 2; ++i) {
         double F = 0.5 * (1.0 - a[i] / sqrt(a[i] * a[i] + h * h));
@@ -831,7 +806,7 @@ static void test_sky_behind_wall(void)
     CHECK_MSG(fabs(sol.grids[0].E[2] - CDL_PI * 1000.0 * (1.0 - F)) <= 4.0 * sol.grids[0].E_stderr[2],
               "behind: E = %g +- %g", sol.grids[0].E[2], sol.grids[0].E_stderr[2]);
     CHECK(strstr(sol.plan_json, "sampled where partly hidden") != NULL);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* A goniometric luminaire whose IES file takes its TILT table from a
@@ -876,9 +851,9 @@ static void test_goniometric_tilt_and_flux(void)
     for (int k = 0; k < 2; ++k) {
         cdl_scene *scene;
         cdl_solution sol;
-        if (!solve_json(json[k], &scene, &sol, 1)) return;
+        if (!fixture_solve(json[k], &scene, &sol, 1)) return;
         CHECK_REL(sol.grids[0].E[0], expected[k], 1e-12);
-        done(scene, &sol);
+        fixture_release(scene, &sol);
     }
 }
 
@@ -906,7 +881,7 @@ static void test_environment_rgb_scale(void)
         " \"solver\": {\"method\": \"direct\", \"direct_samples\": 65536}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     double L = (0.2126 * 1000.0 + 0.7152 * 2000.0 + 0.0722 * 500.0) * 2.5 * 0.6;
     for (int i = 0; i < 2; ++i) {
         double E = sol.grids[0].E[i], se = sol.grids[0].E_stderr[i];
@@ -914,7 +889,7 @@ static void test_environment_rgb_scale(void)
         CHECK_MSG(se > 0.0 && se < 0.01 * CDL_PI * L, "point %d: stderr %g", i, se);
         CHECK_MSG(fabs(E - CDL_PI * L) <= 4.0 * se, "point %d: E = %g, expected %g +- %g", i, E, CDL_PI * L, 4.0 * se);
     }
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* Points where two surfaces meet are found and counted, the rest are not:
@@ -936,7 +911,7 @@ static void test_edge_points(void)
         "\"solver\": {\"method\": \"direct\"}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     const cdl_grid_solution *g = &sol.grids[0];
     CHECK_MSG(g->edge_point_count == 2, "edge points: %zu, expected 2 (the wall foot and the ceiling corner)",
               g->edge_point_count);
@@ -945,7 +920,7 @@ static void test_edge_points(void)
     CHECK(g->E[0] == 0.0);
     CHECK(g->E[4] == 0.0);
     CHECK(g->E[5] == 0.0);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* A small box far off under a uniform sky hides a little of it: too little
@@ -964,7 +939,7 @@ static void test_small_hidden_part(void)
         "[{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}]}], \"solver\": {\"method\": \"direct\", \"direct_samples\": 16}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     /* Faces the origin sees: only the near face x = 4.8 (the top z = 0.4 is
      * above the eye and faces away, the sides y = +-0.2 face away from y = 0). */
     cdl_vec3 face[4] = {cdl_vec3_make(4.8, -0.2, 0.0), cdl_vec3_make(4.8, 0.2, 0.0), cdl_vec3_make(4.8, 0.2, 0.4),
@@ -977,7 +952,7 @@ static void test_small_hidden_part(void)
     CHECK_MSG(fabs(E - expected) <= 4.0 * se, "E = %.9g, expected %.9g +- %g", E, expected, 4.0 * se);
     CHECK(strstr(sol.plan_json, "sampled where partly hidden") != NULL);
     printf("small hidden part: E = %.9g +- %.3g lx, closed form %.9g lx\n", E, se, expected);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 /* Points on the inner face of an emitting inward sphere (an integrating
@@ -1004,12 +979,12 @@ static void test_points_on_emitting_sphere(void)
              R, L, 3.0 - R, q.x, q.y, q.z, -u.x, -u.y, -u.z, q.x, q.y, q.z, tilted.x, tilted.y, tilted.z, 3.0 - R);
     cdl_scene *scene;
     cdl_solution sol;
-    if (!solve_json(json, &scene, &sol, 1)) return;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
     const cdl_grid_solution *g = &sol.grids[0];
     for (int i = 0; i < 4; ++i) CHECK_MSG(fabs(g->E[i] - CDL_PI * L) <= 1e-12 * CDL_PI * L, "point %d: %.17g", i, g->E[i]);
     CHECK_MSG(g->E[4] == 0.0, "facing out: %g", g->E[4]);
     CHECK_MSG(g->edge_point_count == 0, "edge points: %zu", g->edge_point_count);
-    done(scene, &sol);
+    fixture_release(scene, &sol);
 }
 
 int main(void)

@@ -1,0 +1,95 @@
+/* solve_fixture.h - solve a scene given as JSON text, and tally how honest
+ * the stated errors are against known answers.
+ *
+ * Calibration (DESIGN.md): over points with known answers, about two thirds
+ * should lie within one stated sigma and about 95 % within two. */
+#ifndef CANDELA_TESTS_SOLVE_FIXTURE_H
+#define CANDELA_TESTS_SOLVE_FIXTURE_H
+
+#include <math.h>
+#include <stdio.h>
+
+#include "check.h"
+#include "solver/solve.h"
+
+/* Solve `json` (relative paths against CANDELA_TEST_TMPDIR); 0 on failure,
+ * reported as a failed check. */
+static inline int fixture_solve(const char *json, cdl_scene **scene, cdl_solution *sol, int threads)
+{
+    cdl_error err;
+    cdl_error_clear(&err);
+    *scene = NULL;
+    if (cdl_scene_load_string(json, CANDELA_TEST_TMPDIR "/inline.json", scene, &err) != CDL_OK) {
+        fprintf(stderr, "scene load failed: %s\n", err.message);
+        CHECK(0);
+        return 0;
+    }
+    cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+    o.threads = threads;
+    if (cdl_solve_scene(*scene, &o, sol, &err) != CDL_OK) {
+        fprintf(stderr, "solve failed: %s\n", err.message);
+        CHECK(0);
+        cdl_scene_release(*scene);
+        *scene = NULL;
+        return 0;
+    }
+    return 1;
+}
+
+static inline void fixture_release(cdl_scene *scene, cdl_solution *sol)
+{
+    cdl_solution_release(sol);
+    cdl_scene_release(scene);
+}
+
+typedef struct calibration {
+    size_t count, within1, within2;
+    double worst;             /* largest |error| / sigma */
+    double sigma_over_target_min, sigma_over_target_max;
+    double zsum;              /* of signed errors in sigmas: a bias shows as a mean away from 0 */
+} calibration;
+
+#define CALIBRATION_INIT {0, 0, 0, 0.0, INFINITY, 0.0, 0.0}
+
+/* One point with a known answer: its error in stated sigmas; also how the
+ * stated sigma compares with the target (relative to `expected`). */
+static inline void calibration_add(calibration *c, double value, double expected, double sigma, double target)
+{
+    double z = sigma > 0.0 ? fabs(value - expected) / sigma : (value == expected ? 0.0 : INFINITY);
+    c->count++;
+    if (sigma > 0.0) c->zsum += (value - expected) / sigma;
+    c->within1 += z <= 1.0;
+    c->within2 += z <= 2.0;
+    if (z > c->worst) c->worst = z;
+    if (target > 0.0 && expected > 0.0) {
+        double r = sigma / (target * expected);
+        if (r < c->sigma_over_target_min) c->sigma_over_target_min = r;
+        if (r > c->sigma_over_target_max) c->sigma_over_target_max = r;
+    }
+}
+
+/* Check a tally of n points: with independent normal errors the fraction
+ * within one sigma has mean 0.683 and standard deviation
+ * sqrt(0.683 x 0.317 / n), within two 0.954 and sqrt(0.954 x 0.046 / n);
+ * the bounds allow four of those deviations either way (a false alarm
+ * about once in 16 000 runs), so a sigma too large (almost every point
+ * within one) fails as surely as one too small. */
+static inline void calibration_check(const calibration *c, const char *what)
+{
+    double n = (double)c->count;
+    double f1 = (double)c->within1 / n, f2 = (double)c->within2 / n;
+    double s1 = sqrt(0.683 * 0.317 / n), s2 = sqrt(0.954 * 0.046 / n);
+    printf("%s: %zu points, %.1f %% within 1 sigma, %.1f %% within 2, worst %.2f sigma, mean error %+.3f sigma; "
+           "sigma / target %.2f .. %.2f\n",
+           what, c->count, 100.0 * f1, 100.0 * f2, c->worst, c->zsum / n, c->sigma_over_target_min,
+           c->sigma_over_target_max);
+    CHECK_MSG(fabs(f1 - 0.683) <= 4.0 * s1, "%s: %.3f within one sigma, expected 0.683 +- %.3f", what, f1, 4.0 * s1);
+    CHECK_MSG(fabs(f2 - 0.954) <= 4.0 * s2 + 0.005, "%s: %.3f within two sigma, expected 0.954 +- %.3f", what, f2,
+              4.0 * s2 + 0.005);
+    /* A bias shows in the mean signed error: of n independent standard
+     * normal errors it has standard deviation 1 / sqrt n. */
+    CHECK_MSG(fabs(c->zsum / n) <= 4.0 / sqrt(n), "%s: mean error %+.3f sigma, expected 0 +- %.3f", what, c->zsum / n,
+              4.0 / sqrt(n));
+}
+
+#endif
