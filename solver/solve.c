@@ -197,13 +197,13 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     /* Direct light alone: the whole target is its own; with interreflection
      * half the variance of E is the direct part's, half the paths'. */
     ctx.target = indirect ? target / sqrt(2.0) : target;
-    cdl_pathtrace_context pt = {.direct = &ctx,
-                                .geometry = geometry,
-                                .seed = scene->settings.seed,
-                                .bounces = scene->settings.bounces,
+    cdl_pathtrace_context pt = {.path = {.direct = &ctx,
+                                         .geometry = geometry,
+                                         .seed = scene->settings.seed,
+                                         .bounces = scene->settings.bounces},
                                 .target = target,
                                 .max_paths = 16777216.0};
-    cdl_pathtrace_stats pt_stats;
+    cdl_path_stats pt_stats;
     memset(&pt_stats, 0, sizeof pt_stats);
     ctx.ao_samples = out->settings.ao_samples;
     ctx.seed = scene->settings.seed;
@@ -299,7 +299,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         cJSON_AddNumberToObject(inter, "bounces_modelled",
                                 scene->settings.bounces == CDL_BOUNCES_AUTO ? (double)pt_stats.longest
                                                                             : scene->settings.bounces);
-        cJSON_AddNumberToObject(inter, "energy_left_out", cdl_pathtrace_left_out(&pt_stats));
+        cJSON_AddNumberToObject(inter, "energy_left_out", cdl_path_left_out(&pt_stats));
         cJSON_AddNumberToObject(inter, "paths", (double)pt_stats.paths);
         cJSON_AddNumberToObject(inter, "path_vertices", (double)pt_stats.vertices);
         total.rays += pt_stats.rays + pt_stats.direct.rays;
