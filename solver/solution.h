@@ -37,6 +37,7 @@ typedef struct cdl_solution {
     double seconds;                   /* the whole solve */
     double compute_seconds;           /* the grids' points only (setup excluded) */
     uint64_t rays;
+    uint64_t records;                 /* irradiance-cache records used, all grids */
 } cdl_solution;
 
 /* Zeroed arrays for the grid's points (gs->grid built): E, E_direct,

@@ -12,6 +12,7 @@
 #include "solver/direct/direct.h"
 #include "solver/direct/direct_grid.h"
 #include "solver/geometry/occluder_index.h"
+#include "solver/icache/icache.h"
 #include "solver/pathtrace/pathtrace.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_lights.h"
@@ -50,6 +51,22 @@ static const char *first_reflector(const cdl_scene *scene, double *rho)
     return NULL;
 }
 
+/* Under "auto", the grids of at least this many points take the irradiance
+ * cache, smaller ones path tracing. Measured (tools/bench, this machine):
+ * on the Radiance peer's room (81 points, quality high) path tracing takes
+ * 0.95 s, the cache more, since every record costs about two points' paths
+ * and 81 points need tens of records; on the closed cube's 100 x 100 floor
+ * the cache is many times faster (figures in bench_icache). The crossing
+ * lies between a few hundred and a thousand points. */
+#define CDL_AUTO_CACHE_POINTS 1000
+
+/* The method that computes a grid's interreflection. */
+static cdl_method grid_method(cdl_method method, const cdl_grid *grid)
+{
+    if (method == CDL_METHOD_ICACHE || method == CDL_METHOD_PATHTRACE) return method;
+    return grid->count >= CDL_AUTO_CACHE_POINTS && grid->raster_width > 0 ? CDL_METHOD_ICACHE : CDL_METHOD_PATHTRACE;
+}
+
 /* The method, and whether interreflection is computed at all (*indirect),
  * with the reason in the plan. */
 static cdl_status choose_method(const cdl_scene *scene, cdl_method *method, int *indirect, cJSON *plan,
@@ -75,12 +92,11 @@ static cdl_status choose_method(const cdl_scene *scene, cdl_method *method, int 
             snprintf(why, sizeof why, "no surface reflects light: direct light is the whole answer");
             break;
         }
-        *method = CDL_METHOD_PATHTRACE;
         *indirect = 1;
         snprintf(why, sizeof why,
-                 "%s reflects %g %%: interreflected light by path tracing each point to the target (the "
-                 "irradiance cache is not built in this version)",
-                 reflector, rho * 100.0);
+                 "%s reflects %g %%: interreflected light to the target, each grid by the method cheaper for it "
+                 "(see grids: the irradiance cache for maps of %d points or more, path tracing below)",
+                 reflector, rho * 100.0, CDL_AUTO_CACHE_POINTS);
         break;
     case CDL_METHOD_PATHTRACE:
         *indirect = reflector != NULL;
@@ -92,10 +108,14 @@ static cdl_status choose_method(const cdl_scene *scene, cdl_method *method, int 
                                       "answer and no path is traced");
         break;
     case CDL_METHOD_ICACHE:
-        return cdl_error_set(err, CDL_ERR_INPUT,
-                             "%s: solver.method: \"icache\" is not built in this version; use \"pathtrace\" or "
-                             "\"auto\" for interreflected light, or \"direct\" for direct light only",
-                             scene->path);
+        *indirect = reflector != NULL;
+        if (reflector)
+            snprintf(why, sizeof why, "method \"icache\": %s reflects %g %%, records gathered and interpolated to "
+                                      "the target", reflector, rho * 100.0);
+        else
+            snprintf(why, sizeof why, "method \"icache\", but no surface reflects light: direct light is the whole "
+                                      "answer and no record is gathered");
+        break;
     default:
         return cdl_error_set(err, CDL_ERR_INTERNAL, "unknown method");
     }
@@ -138,6 +158,12 @@ static cdl_status check_finite(const cdl_scene *scene, const cdl_scene_lights *l
 
 /* ---- the solve ------------------------------------------------------------------ */
 
+static void release_records(cdl_icache_records *records, size_t count)
+{
+    for (size_t g = 0; g < count; ++g) cdl_icache_records_release(&records[g]);
+    free(records);
+}
+
 cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *options, cdl_solution *out,
                            cdl_error *err)
 {
@@ -169,6 +195,11 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     memset(&lights, 0, sizeof lights);
     cdl_light_strategy *strategies = NULL;
     cJSON **plan_grids = NULL;
+    cdl_icache_records *records = calloc(scene->grid_count ? scene->grid_count : 1, sizeof *records);
+    if (!records) {
+        cJSON_Delete(plan);
+        return cdl_error_out_of_memory(err);
+    }
 
     cdl_progress stage = {.stage = "geometry"};
     if (cdl_progress_report(&opts.progress, &stage) != 0) {
@@ -205,6 +236,11 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                                 .max_paths = 16777216.0};
     cdl_path_stats pt_stats;
     memset(&pt_stats, 0, sizeof pt_stats);
+    cdl_icache_context ic = {.path = pt.path, .target = target, .gradients = 1};
+    cdl_icache_stats ic_stats;
+    memset(&ic_stats, 0, sizeof ic_stats);
+    size_t cache_grids = 0;
+    cJSON *inter_grids = cJSON_AddObjectToObject(cJSON_GetObjectItem(plan, "interreflection"), "grids");
     ctx.ao_samples = out->settings.ao_samples;
     ctx.seed = scene->settings.seed;
     ctx.log = opts.ray_log;
@@ -264,10 +300,29 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         if (st != CDL_OK) goto fail;
         if (indirect) {
             /* gs->E holds the indirect part's variance until added. */
-            snprintf(stage_name, sizeof stage_name, "grid %s: interreflection", spec->name);
+            cdl_method gm = grid_method(scene->settings.method, &gs->grid);
+            snprintf(stage_name, sizeof stage_name, "grid %s: interreflection (%s)", spec->name,
+                     gm == CDL_METHOD_ICACHE ? "records" : "paths");
             tc = cdl_pool_now_seconds();
-            st = cdl_pathtrace_solve_grid(&pt, &gs->grid, g, gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,
-                                          threads, &opts.progress, stage_name, &pt_stats, err);
+            cJSON *gi = cJSON_AddObjectToObject(inter_grids, spec->name);
+            cJSON_AddStringToObject(gi, "method", cdl_method_name(gm));
+            if (gm == CDL_METHOD_ICACHE) {
+                cdl_icache_stats before = ic_stats;
+                st = cdl_icache_solve_grid(&ic, &gs->grid, g, gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,
+                                           &records[g], threads, &opts.progress, stage_name, &ic_stats, err);
+                cJSON_AddNumberToObject(gi, "records", (double)(ic_stats.records - before.records));
+                cJSON_AddNumberToObject(gi, "placement_passes", (double)ic_stats.passes);
+                ++cache_grids;
+            } else {
+                uint64_t paths = pt_stats.paths;
+                st = cdl_pathtrace_solve_grid(&pt, &gs->grid, g, gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,
+                                              threads, &opts.progress, stage_name, &pt_stats, err);
+                cJSON_AddNumberToObject(gi, "paths", (double)(pt_stats.paths - paths));
+            }
+            if (scene->settings.method == CDL_METHOD_AUTO)
+                cJSON_AddStringToObject(gi, "why", gm == CDL_METHOD_ICACHE
+                                                       ? "a dense map: records interpolated cost less than paths per point"
+                                                       : "few points: paths per point cost less than gathering records");
             out->compute_seconds += cdl_pool_now_seconds() - tc;
             if (st != CDL_OK) goto fail;
         }
@@ -287,23 +342,27 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     }
     if (indirect) {
         cJSON *inter = cJSON_GetObjectItem(plan, "interreflection");
-        cJSON_AddStringToObject(inter, "method", "pathtrace");
+        cdl_path_stats all = pt_stats;
+        cdl_path_stats_add(&all, &ic_stats.paths);
         char bounces[200];
         if (scene->settings.bounces == CDL_BOUNCES_AUTO)
             snprintf(bounces, sizeof bounces,
                      "auto: paths end by Russian roulette (unbiased); the longest followed %llu reflections",
-                     (unsigned long long)pt_stats.longest);
+                     (unsigned long long)all.longest);
         else
             snprintf(bounces, sizeof bounces, "at most %d reflections (the scene's limit)", scene->settings.bounces);
         cJSON_AddStringToObject(inter, "bounces", bounces);
         cJSON_AddNumberToObject(inter, "bounces_modelled",
-                                scene->settings.bounces == CDL_BOUNCES_AUTO ? (double)pt_stats.longest
+                                scene->settings.bounces == CDL_BOUNCES_AUTO ? (double)all.longest
                                                                             : scene->settings.bounces);
-        cJSON_AddNumberToObject(inter, "energy_left_out", cdl_path_left_out(&pt_stats));
-        cJSON_AddNumberToObject(inter, "paths", (double)pt_stats.paths);
-        cJSON_AddNumberToObject(inter, "path_vertices", (double)pt_stats.vertices);
-        total.rays += pt_stats.rays + pt_stats.direct.rays;
+        cJSON_AddNumberToObject(inter, "energy_left_out", cdl_path_left_out(&all));
+        cJSON_AddNumberToObject(inter, "paths", (double)all.paths);
+        cJSON_AddNumberToObject(inter, "path_vertices", (double)all.vertices);
+        cJSON_AddNumberToObject(inter, "records", (double)ic_stats.records);
+        total.rays += all.rays + all.direct.rays;
+        out->records = ic_stats.records;
     }
+    (void)cache_grids;
     out->rays = total.rays;
     out->plan_json = cJSON_PrintUnformatted(plan);
     if (!out->plan_json) {
@@ -313,6 +372,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     cJSON_Delete(plan);
     free(plan_grids);
     free(strategies);
+    release_records(records, scene->grid_count);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);
     cdl_scene_geometry_release(geometry);
@@ -323,6 +383,7 @@ fail:
     cJSON_Delete(plan);
     free(plan_grids);
     free(strategies);
+    release_records(records, scene->grid_count);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);
     cdl_scene_geometry_release(geometry);

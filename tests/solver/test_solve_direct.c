@@ -483,21 +483,22 @@ static void test_ambient_occlusion(void)
 }
 
 /* Methods: "auto" on a scene with reflecting surfaces computes their
- * interreflection (here by path tracing: a flat plate cannot light itself,
- * so the point's interreflected part is exactly 0 and its E the direct
- * I cos / d^2 = 1 lx); "icache" is refused while it is not built. */
-static void test_method_refusals(void)
+ * interreflection (here, one point, by path tracing: a flat plate cannot
+ * light itself, so the point's interreflected part is exactly 0 and its E
+ * the direct I cos / d^2 = 1 lx); "icache" with nothing reflecting gathers
+ * no record. */
+static void test_method_choices(void)
 {
     const char *reflecting =
         "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [0, 0, 0], \"u\": [1, 0, 0], \"v\": [0, 1, 0], "
         "\"reflectance\": 0.5}], \"luminaires\": [{\"type\": \"point\", \"position\": [0.5, 0.5, 1], \"intensity_cd\": 1}],"
         " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0.5, 0.5, 0], \"n\": [0, 0, 1]}]}]}";
-    cdl_error err;
     cdl_scene *scene = NULL;
     cdl_solution refl;
     if (fixture_solve(reflecting, &scene, &refl, 1)) {
-        CHECK(refl.method == CDL_METHOD_PATHTRACE);
+        CHECK(refl.method == CDL_METHOD_AUTO);
         CHECK(strstr(refl.plan_json, "surfaces[0] reflects 50 %") != NULL);
+        CHECK(strstr(refl.plan_json, "\"p\":{\"method\":\"pathtrace\"") != NULL);
         CHECK_REL(refl.grids[0].E[0], 1.0, 1e-12);
         CHECK(refl.grids[0].E_indirect[0] == 0.0);
         fixture_release(scene, &refl);
@@ -505,12 +506,11 @@ static void test_method_refusals(void)
     const char *icache =
         "{\"version\": 1, \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0, 0, 0], "
         "\"n\": [0, 0, 1]}]}], \"solver\": {\"method\": \"icache\"}}";
-    CHECK_OK(cdl_scene_load_string(icache, "ic.json", &scene, &err), &err);
-    if (scene) {
-        cdl_solution sol;
-        CHECK(cdl_solve_scene(scene, NULL, &sol, &err) == CDL_ERR_INPUT);
-        CHECK(strstr(err.message, "not built") != NULL);
-        cdl_scene_release(scene);
+    cdl_solution ic;
+    if (fixture_solve(icache, &scene, &ic, 1)) {
+        CHECK(ic.method == CDL_METHOD_ICACHE && ic.records == 0);
+        CHECK(strstr(ic.plan_json, "no record is gathered") != NULL);
+        fixture_release(scene, &ic);
     }
     /* auto without reflecting surfaces is the direct method */
     const char *dark =
@@ -999,7 +999,7 @@ int main(void)
     test_scale_invariance();
     test_thread_determinism();
     test_ambient_occlusion();
-    test_method_refusals();
+    test_method_choices();
     test_image_environment();
     test_plan_no_rays();
     test_emitting_surfaces();

@@ -1,0 +1,423 @@
+/* icache.c - records placed by passes over a grid, then interpolated. */
+#include "solver/icache/icache.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "radiometry/bounds.h"
+#include "radiometry/estimate.h"
+#include "solver/icache/record_octree.h"
+#include "solver/scene/scene_geometry.h"
+
+/* A record's pilot gather: 8 x 16 strata, 128 paths (64 pairs for the
+ * variance); its reported gather is planned from it, 2 k^2 strata (k x 2k)
+ * with k in [8, MAX_SIDE]. */
+#define PILOT_M 8
+#define PILOT_N 16
+#define MAX_SIDE 128
+
+/* Placement passes after the seeds; each adds records only where points
+ * ask for them, so few passes do anything. */
+#define MAX_PASSES 16
+
+/* sqrt(1 - cos 10 deg): normals further apart than 10 degrees share no record. */
+#define NORMAL_SPREAD 0.12326828329112158
+
+/* How far records reach, from the grid's spacing h and the target t.
+ *  - a, the accuracy of the weights (kappa = 1 / a; a record serves points
+ *    closer than a clamp(2 R_i, Rmin, Rmax)): the error of extrapolating
+ *    with gradients grows as (d / R)^2, so a grows as sqrt(t): a = 1.4
+ *    sqrt t in [0.03, 0.4] (draft 0.2, normal 0.1, high 0.044, reference
+ *    0.03).
+ *  - the least reach 1.5 h (a record serves at least the grid points next
+ *    to it: denser records than points would buy nothing), the largest
+ *    16 h (a record never speaks for points 16 spacings away, however far
+ *    the surfaces it saw). Rmin and Rmax are these divided by a. */
+typedef struct reach_limits {
+    double a, kappa, reach_min, reach_max, Rmin, Rmax;
+} reach_limits;
+
+static reach_limits limits_for(double spacing, double target)
+{
+    reach_limits l;
+    l.a = fmin(0.4, fmax(0.03, 1.4 * sqrt(target)));
+    l.kappa = 1.0 / l.a;
+    l.reach_min = 1.5 * spacing;
+    l.reach_max = 16.0 * spacing;
+    l.Rmin = l.reach_min / l.a;
+    l.Rmax = l.reach_max / l.a;
+    return l;
+}
+
+/* The distance over which record r serves: a clamp(2 R, Rmin, Rmax). */
+static double record_reach(const reach_limits *l, const cdl_icache_record *r)
+{
+    return l->a * fmin(l->Rmax, fmax(l->Rmin, 2.0 * r->radius));
+}
+
+/* A grid's spacing: the rect or polygon spacing, or for a list of points
+ * the median distance to the nearest other point (the first 2048 points). */
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double grid_spacing(const cdl_grid *g)
+{
+    if (g->spacing_m > 0.0) return g->spacing_m;
+    size_t n = g->count < 2048 ? g->count : 2048;
+    if (n < 2) return 1.0;
+    double *near = malloc(n * sizeof *near);
+    if (!near) return 1.0;
+    for (size_t i = 0; i < n; ++i) {
+        near[i] = INFINITY;
+        for (size_t j = 0; j < n; ++j) {
+            double d = cdl_vec3_length(cdl_vec3_sub(g->points[i], g->points[j]));
+            if (j != i && d > 0.0 && d < near[i]) near[i] = d;
+        }
+    }
+    qsort(near, n, sizeof *near, compare_doubles);
+    double h = near[n / 2];
+    free(near);
+    return isfinite(h) && h > 0.0 ? h : 1.0;
+}
+
+/* ---- interpolation -------------------------------------------------------------- */
+
+typedef struct lookup {
+    uint32_t *ids;
+    size_t capacity;
+} lookup;
+
+typedef struct interpolation {
+    double E, var;            /* the interpolated E_ind and its stated variance */
+    double interp_var;        /* the interpolation's share of var */
+    size_t used;              /* records with w > 0 */
+    double reach;             /* smallest reach among them (reach_max when none) */
+} interpolation;
+
+/* E_ind at (p, n) from the records; 0 when memory ran out. */
+static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, const cdl_icache_records *recs,
+                       const cdl_record_octree *tree, cdl_vec3 p, cdl_vec3 n, lookup *lk, interpolation *out)
+{
+    memset(out, 0, sizeof *out);
+    out->reach = l->reach_max;
+    size_t m = cdl_record_octree_lookup(tree, p, &lk->ids, &lk->capacity);
+    if (m == (size_t)-1) return 0;
+    double W = 0.0, W2 = 0.0, sum = 0.0, noise = 0.0, noise_mean = 0.0, sum2 = 0.0, change2 = 0.0;
+    const cdl_scene_geometry *geometry = ctx->path.geometry;
+    for (size_t c = 0; c < m; ++c) {
+        const cdl_icache_record *r = &recs->items[lk->ids[c]];
+        double reach = record_reach(l, r);
+        cdl_vec3 d = cdl_vec3_sub(p, r->p);
+        double dist = cdl_vec3_length(d);
+        double e = fmax(dist / (reach / l->a), sqrt(fmax(0.0, 1.0 - cdl_vec3_dot(n, r->n))) / NORMAL_SPREAD);
+        double w = 1.0 - l->kappa * e;
+        if (!(w > 0.0)) continue;
+        /* Behind test: p may not lie behind the record's tangent plane
+         * (averaged with its own), beyond 1 % of the record's reach. */
+        if (cdl_vec3_dot(d, cdl_vec3_add(n, r->n)) * 0.5 < -0.01 * reach) continue;
+        /* Leak test: the record must see p. */
+        if (dist > 0.0 && geometry && cdl_scene_geometry_segment_occluded(geometry, r->p, r->n, p, n)) continue;
+        double change = 0.0;
+        if (ctx->gradients)
+            change = cdl_vec3_dot(cdl_vec3_cross(r->n, n), r->grad_r) + cdl_vec3_dot(d, r->grad_t);
+        double x = r->E + change;
+        W += w;
+        W2 += w * w;
+        sum += w * x;
+        sum2 += w * x * x;
+        noise += w * w * r->var;
+        noise_mean += w * r->var;
+        /* What a lone record's extrapolation is unsure of: the first-order
+         * change itself (its gradient, with or without using it). */
+        double first = cdl_vec3_length(r->grad_r) * cdl_vec3_length(cdl_vec3_cross(r->n, n)) +
+                       cdl_vec3_length(r->grad_t) * dist;
+        change2 += w * first * first;
+        if (reach < out->reach) out->reach = reach;
+        out->used++;
+    }
+    if (out->used == 0) return 1;
+    out->E = sum / W;
+    double spread = fmax(0.0, sum2 / W - out->E * out->E);
+    if (out->used >= 2)
+        out->interp_var = fmax(0.0, spread - noise_mean / W);
+    else
+        out->interp_var = change2 / W;
+    out->var = noise / (W * W) + out->interp_var;
+    (void)W2;
+    return 1;
+}
+
+/* ---- gathering records ---------------------------------------------------------- */
+
+typedef struct gather_job {
+    const cdl_icache_context *ctx;
+    const cdl_grid *grid;
+    size_t grid_index;
+    const double *E_direct;
+    const size_t *at;         /* grid point of each new record */
+    cdl_icache_record *out;   /* one per new record */
+    double *tails;            /* per new record: last, before_last, total (summed in record order after) */
+} gather_job;
+
+static cdl_status gather_records(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
+{
+    const gather_job *job = shared;
+    cdl_path_stats *stats = local;
+    const cdl_icache_context *ctx = job->ctx;
+    for (size_t r = begin; r < end; ++r) {
+        size_t i = job->at[r];
+        cdl_vec3 p = job->grid->points[i], n = job->grid->normals[i];
+        uint64_t stream = cdl_rng_stream_id((uint64_t)job->grid_index, (uint64_t)i, 0x6963616368 /* "icach" */);
+        /* Pilot: how variable are this record's paths. */
+        cdl_rng_key key = {ctx->path.seed, cdl_rng_stream_id(stream, 0, 1)};
+        cdl_icache_record pilot;
+        /* The floating-point tallies are kept per record (of its reported
+         * gather), so that their sums do not depend on the threads. */
+        double last = stats->last, before = stats->before_last, total = stats->total;
+        if (!cdl_icache_gather(&ctx->path, key, p, n, PILOT_M, PILOT_N, &pilot, stats))
+            return cdl_error_out_of_memory(err);
+        /* The record's noise gets a quarter of the point's variance (t R)^2,
+         * R = E_dir + E_ind there; the interpolation another quarter, the
+         * direct part the other half (solve.c). */
+        double R = job->E_direct[i] + pilot.E;
+        double budget = 0.25 * ctx->target * ctx->target * R * R;
+        double n_pilot = PILOT_M * PILOT_N;
+        cdl_estimate est = {n_pilot, pilot.E * n_pilot, pilot.var * n_pilot * n_pilot, 1};
+        double want = cdl_estimate_plan(&est, budget, PILOT_M * PILOT_N);
+        int k = cdl_estimate_side_for(want, PILOT_M, MAX_SIDE);
+        key.stream = cdl_rng_stream_id(stream, 1, 1);
+        stats->last = last;
+        stats->before_last = before;
+        stats->total = total;
+        if (!cdl_icache_gather(&ctx->path, key, p, n, k, 2 * k, &job->out[r], stats))
+            return cdl_error_out_of_memory(err);
+        job->tails[3 * r] = stats->last - last;
+        job->tails[3 * r + 1] = stats->before_last - before;
+        job->tails[3 * r + 2] = stats->total - total;
+        stats->last = last;
+        stats->before_last = before;
+        stats->total = total;
+    }
+    return CDL_OK;
+}
+
+/* Gather records at grid points at[0 .. count - 1] onto the end of recs. */
+static cdl_status gather(const cdl_icache_context *ctx, const cdl_grid *grid, size_t grid_index,
+                         const double *E_direct, const size_t *at, size_t count, cdl_icache_records *recs,
+                         int threads, const cdl_progress_sink *progress, const char *stage, cdl_icache_stats *stats,
+                         cdl_error *err)
+{
+    if (recs->count + count > recs->capacity) {
+        size_t cap = 2 * (recs->count + count);
+        cdl_icache_record *grown = realloc(recs->items, cap * sizeof *grown);
+        if (!grown) return cdl_error_out_of_memory(err);
+        recs->items = grown;
+        recs->capacity = cap;
+    }
+    cdl_path_stats *locals = calloc((size_t)threads, sizeof *locals);
+    double *tails = calloc(3 * (count ? count : 1), sizeof *tails);
+    if (!locals || !tails) {
+        free(locals);
+        free(tails);
+        return cdl_error_out_of_memory(err);
+    }
+    gather_job job = {ctx, grid, grid_index, E_direct, at, recs->items + recs->count, tails};
+    cdl_pool_task task = {.count = count, .chunk = 1, .run = gather_records, .shared = &job, .locals = locals,
+                          .local_size = sizeof *locals, .stage = stage, .records = recs->count};
+    cdl_status st = cdl_pool_run(&task, threads, progress, err);
+    for (int t = 0; t < threads; ++t) cdl_path_stats_add(&stats->paths, &locals[t]);
+    for (size_t r = 0; r < count; ++r) {
+        stats->paths.last += tails[3 * r];
+        stats->paths.before_last += tails[3 * r + 1];
+        stats->paths.total += tails[3 * r + 2];
+    }
+    free(locals);
+    free(tails);
+    if (st != CDL_OK) return st;
+    recs->count += count;
+    return CDL_OK;
+}
+
+/* A new record's radius: the harmonic mean distance, no larger than
+ * E / |g_t| (where the irradiance changes by its own size: Tabellion and
+ * Lamorlette 2004) nor than its distance to an earlier record plus that
+ * record's radius (neighbour clamping: Krivanek et al., "Radiance caching
+ * for efficient global illumination computation", IEEE TVCG 2005), and
+ * within [Rmin, Rmax] / 2. */
+static void set_radius(const reach_limits *l, cdl_icache_records *recs, size_t id, const cdl_record_octree *tree,
+                       lookup *lk)
+{
+    cdl_icache_record *r = &recs->items[id];
+    double R = r->harmonic;
+    double g = cdl_vec3_length(r->grad_t);
+    if (g > 0.0 && r->E > 0.0 && r->E / g < R) R = r->E / g;
+    size_t m = cdl_record_octree_lookup(tree, r->p, &lk->ids, &lk->capacity);
+    for (size_t c = 0; m != (size_t)-1 && c < m; ++c) {
+        const cdl_icache_record *o = &recs->items[lk->ids[c]];
+        double bound = cdl_vec3_length(cdl_vec3_sub(r->p, o->p)) + o->radius;
+        if (bound < R) R = bound;
+    }
+    r->radius = fmin(0.5 * l->Rmax, fmax(0.5 * l->Rmin, R));
+}
+
+/* ---- a grid --------------------------------------------------------------------- */
+
+typedef struct point_job {
+    const cdl_icache_context *ctx;
+    const reach_limits *limits;
+    const cdl_icache_records *recs;
+    const cdl_record_octree *tree;
+    const cdl_grid *grid;
+    const double *E_direct, *var_direct;
+    double floor;             /* least R of any point: 1e-3 of the grid's brightest direct light */
+    int final;                /* 1: write E and var; 0: flag points that need a record */
+    double *E, *var;
+    double *ask;              /* per point: the separation a new record there keeps, or 0 */
+} point_job;
+
+static cdl_status visit_points(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
+{
+    const point_job *job = shared;
+    lookup *lk = local;
+    for (size_t i = begin; i < end; ++i) {
+        interpolation it;
+        if (!interpolate(job->ctx, job->limits, job->recs, job->tree, job->grid->points[i], job->grid->normals[i], lk,
+                         &it))
+            return cdl_error_out_of_memory(err);
+        if (job->final) {
+            job->E[i] = it.E;
+            job->var[i] = it.var;
+            continue;
+        }
+        double R = fmax(job->E_direct[i] + it.E, job->floor);
+        double share = 0.25 * job->ctx->target * job->ctx->target * R * R;
+        job->ask[i] = (it.used == 0 || it.interp_var > share) ? fmax(job->limits->reach_min, 0.5 * it.reach) : 0.0;
+    }
+    return CDL_OK;
+}
+
+static cdl_status visit(point_job *job, int threads, const cdl_progress_sink *progress, const char *stage,
+                        size_t records, cdl_error *err)
+{
+    lookup *locals = calloc((size_t)threads, sizeof *locals);
+    if (!locals) return cdl_error_out_of_memory(err);
+    cdl_pool_task task = {.count = job->grid->count, .chunk = 16, .run = visit_points, .shared = job,
+                          .locals = locals, .local_size = sizeof *locals, .stage = stage, .records = records};
+    cdl_status st = cdl_pool_run(&task, threads, progress, err);
+    for (int t = 0; t < threads; ++t) free(locals[t].ids);
+    free(locals);
+    return st;
+}
+
+/* Pick, in index order, the asking points that keep their separation from
+ * every point picked before them in this pass (and hold no record yet). */
+static cdl_status pick(const cdl_grid *grid, const double *ask, const unsigned char *has, cdl_bounds3 box,
+                       size_t **at, size_t *count, cdl_error *err)
+{
+    *count = 0;
+    cdl_record_octree *picked;
+    cdl_status st = cdl_record_octree_create(box, &picked, err);
+    if (st != CDL_OK) return st;
+    lookup lk = {NULL, 0};
+    for (size_t i = 0; i < grid->count && st == CDL_OK; ++i) {
+        if (!(ask[i] > 0.0) || has[i]) continue;
+        size_t m = cdl_record_octree_lookup(picked, grid->points[i], &lk.ids, &lk.capacity);
+        if (m == (size_t)-1) {
+            st = cdl_error_out_of_memory(err);
+            break;
+        }
+        int near = 0;
+        for (size_t c = 0; c < m && !near; ++c) {
+            size_t j = (*at)[lk.ids[c]];
+            near = cdl_vec3_length(cdl_vec3_sub(grid->points[i], grid->points[j])) < ask[j];
+        }
+        if (near) continue;
+        (*at)[*count] = i;
+        st = cdl_record_octree_insert(picked, (uint32_t)*count, grid->points[i], ask[i], err);
+        ++*count;
+    }
+    free(lk.ids);
+    cdl_record_octree_release(picked);
+    return st;
+}
+
+void cdl_icache_records_release(cdl_icache_records *records)
+{
+    free(records->items);
+    memset(records, 0, sizeof *records);
+}
+
+cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *grid, size_t grid_index,
+                                 const double *E_direct, const double *var_direct, double *E_indirect,
+                                 double *var_indirect, cdl_icache_records *recs, int threads,
+                                 const cdl_progress_sink *progress, const char *stage, cdl_icache_stats *stats,
+                                 cdl_error *err)
+{
+    if (threads < 1) threads = 1;
+    if (grid->count == 0) return CDL_OK;
+    reach_limits l = limits_for(grid_spacing(grid), ctx->target);
+    cdl_bounds3 box = cdl_bounds3_empty();
+    double brightest = 0.0;
+    for (size_t i = 0; i < grid->count; ++i) {
+        cdl_bounds3_grow(&box, grid->points[i]);
+        if (E_direct[i] > brightest) brightest = E_direct[i];
+    }
+    cdl_record_octree *tree = NULL;
+    size_t *at = malloc(grid->count * sizeof *at);
+    double *ask = calloc(grid->count, sizeof *ask);
+    unsigned char *has = calloc(grid->count, 1);
+    lookup lk = {NULL, 0};
+    cdl_status st = (!at || !ask || !has) ? cdl_error_out_of_memory(err) : CDL_OK;
+    if (st == CDL_OK) st = cdl_record_octree_create(box, &tree, err);
+    int reuse = recs->count > 0;
+    size_t first = 0;
+    if (st == CDL_OK && !reuse) {
+        /* Seeds: every point farther than the largest reach from the seeds
+         * before it (in index order). */
+        for (size_t i = 0; i < grid->count; ++i) ask[i] = l.reach_max;
+        size_t count;
+        st = pick(grid, ask, has, box, &at, &count, err);
+        if (st == CDL_OK) st = gather(ctx, grid, grid_index, E_direct, at, count, recs, threads, progress, stage, stats, err);
+        for (size_t c = 0; st == CDL_OK && c < count; ++c) has[at[c]] = 1;
+    }
+    /* Records read from a file, or just gathered, get their radii in order
+     * and enter the tree. */
+    size_t done = 0;
+    for (; st == CDL_OK && done < recs->count; ++done) {
+        if (!reuse) set_radius(&l, recs, done, tree, &lk);
+        st = cdl_record_octree_insert(tree, (uint32_t)done, recs->items[done].p, record_reach(&l, &recs->items[done]),
+                                      err);
+    }
+    point_job job = {ctx, &l, recs, tree, grid, E_direct, var_direct, 1e-3 * brightest, 0, E_indirect,
+                     var_indirect, ask};
+    for (int pass = 1; st == CDL_OK && !reuse && pass <= MAX_PASSES; ++pass) {
+        first = recs->count;
+        st = visit(&job, threads, progress, stage, recs->count, err);
+        size_t count = 0;
+        if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
+        if (st != CDL_OK || count == 0) break;
+        stats->passes = (size_t)pass;
+        st = gather(ctx, grid, grid_index, E_direct, at, count, recs, threads, progress, stage, stats, err);
+        for (size_t c = 0; st == CDL_OK && c < count; ++c) has[at[c]] = 1;
+        for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
+            set_radius(&l, recs, id, tree, &lk);
+            st = cdl_record_octree_insert(tree, (uint32_t)id, recs->items[id].p, record_reach(&l, &recs->items[id]),
+                                          err);
+        }
+    }
+    if (st == CDL_OK) {
+        job.final = 1;
+        st = visit(&job, threads, progress, stage, recs->count, err);
+    }
+    stats->records += recs->count;
+    free(lk.ids);
+    free(at);
+    free(ask);
+    free(has);
+    cdl_record_octree_release(tree);
+    return st;
+}

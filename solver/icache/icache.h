@@ -1,0 +1,71 @@
+/* icache.h - interreflected light by an irradiance cache (method "icache").
+ *
+ * Records (icache_record.h) are gathered at some grid points and
+ * interpolated at all of them, with the weights of Tabellion and Lamorlette
+ * ("An approximate global illumination system for computer generated
+ * films", SIGGRAPH 2004) as the seed lecture writes them:
+ *     w_i(p) = 1 - kappa max( |p - p_i| / clamp(2 R_i, Rmin, Rmax),
+ *                             sqrt(1 - n . n_i) / sqrt(1 - cos 10 deg) ),
+ *     E(p)   = sum_{w_i > 0} w_i (E_i + (n_i x n) . g_r,i + (p - p_i) . g_t,i) / sum w_i,
+ * a record serving only points in front of it (the behind test: (p - p_i) .
+ * (n + n_i) / 2 may not be below -1 % of its reach) and only points it can
+ * see (the leak test: a ray from p_i to p; a wall or a table top between
+ * them rejects the record, so light does not bleed through).
+ *
+ * Placement depends only on the grid and the scene, never on the order of
+ * queries or on other grids: a first pass seeds records on a lattice of the
+ * grid's points; each further pass looks at every point, and where the
+ * stated error of the interpolation is above its share of the target (or
+ * no record serves the point), asks for a record there, taking the asking
+ * points in index order and skipping any within a minimum distance of one
+ * taken in the same pass. Every record's random numbers are keyed by the
+ * grid point it sits on. The result: the same bytes for any thread count.
+ *
+ * The stated error of a point: the records' own noise, sum w_i^2 var_i /
+ * (sum w_i)^2, plus the interpolation's, the spread of the records'
+ * extrapolations to p beyond what their noise explains (where records
+ * seen from p disagree, the interpolant is uncertain by about that much).
+ */
+#ifndef CANDELA_SOLVER_ICACHE_H
+#define CANDELA_SOLVER_ICACHE_H
+
+#include <stddef.h>
+
+#include "radiometry/error.h"
+#include "solver/grid/grid.h"
+#include "solver/icache/icache_record.h"
+#include "solver/pool.h"
+#include "solver/transport/path.h"
+
+typedef struct cdl_icache_context {
+    cdl_path_context path;
+    double target;            /* relative standard error of a point's E = E_dir + E_ind */
+    int gradients;            /* 1: interpolate with the records' gradients (the default); 0: without */
+} cdl_icache_context;
+
+/* A grid's records. */
+typedef struct cdl_icache_records {
+    cdl_icache_record *items;
+    size_t count, capacity;
+} cdl_icache_records;
+
+typedef struct cdl_icache_stats {
+    cdl_path_stats paths;     /* of all gathers */
+    size_t records, passes;
+    size_t gather_rays;       /* rays per record, the largest gather */
+} cdl_icache_stats;
+
+/* The interreflected illuminance at every point of a grid and its variance,
+ * given the points' direct illuminance and its variance. When `records`
+ * holds records (read from a cache file), they are used as they are and
+ * none is gathered; otherwise the records made are left in it (the caller
+ * releases them). grid_index keys the random numbers. */
+cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *grid, size_t grid_index,
+                                 const double *E_direct, const double *var_direct, double *E_indirect,
+                                 double *var_indirect, cdl_icache_records *records, int threads,
+                                 const cdl_progress_sink *progress, const char *stage, cdl_icache_stats *stats,
+                                 cdl_error *err);
+
+void cdl_icache_records_release(cdl_icache_records *records);
+
+#endif
