@@ -136,7 +136,11 @@ static void term_start(const cdl_direct_context *ctx, term *t, cdl_light_strateg
                 stats->exact_evaluations++;
                 return;
             }
-            if (st == CDL_STRATEGY_EXTENDED_TESTED && cdl_direct_light_fully_visible(ctx, t->light, p, n)) {
+            /* In full view, or few planar occluders: exact (direct_exact_route.c). */
+            double visible;
+            int route = cdl_direct_exact_term(ctx, t->light, st, p, n, &visible, stats);
+            if (route >= 0) {
+                if (route == 1) t->exact = visible;
                 stats->exact_evaluations++;
                 return;
             }
