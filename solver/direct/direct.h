@@ -8,7 +8,10 @@
  *   area emitters and the uniform environment: the closed-form illuminance
  *     (contour integral, disk and sphere formulas, pi L x visible fraction)
  *     when no surface intersects the region between the receiver and the
- *     emitter (tested exactly per point, see occluder_index.h); otherwise the
+ *     emitter (tested exactly per point, see occluder_index.h); where at
+ *     most CDL_EXACT_ROUTE_MAX_OCCLUDERS planar triangles are in the way, L
+ *     times the projected solid angle of the visible polygon (exact,
+ *     direct_exact_route.c); otherwise the
  *     closed form minus a Monte-Carlo estimate of the hidden part
  *     (E = E_exact - <f (1 - V)>, a control variate that is exact when
  *     nothing is hidden), with its standard error;

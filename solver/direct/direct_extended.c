@@ -3,7 +3,9 @@
  * sampled until its own target holds.
  *
  * A light with a closed form E_0 (area emitters, skies; cdl_emitter_exact_
- * illuminance) that may be partly hidden is estimated as
+ * illuminance) that may be partly hidden is first tried on the exact route
+ * (direct_exact_route.c: the visible polygon past few planar occluders,
+ * variance 0); where that is refused it is estimated as
  *     E = E_0 - H,   H = int over the emitter of f (1 - V),
  * f = L cos / pdf the unoccluded integrand and V the visibility: a control
  * variate that is exact when nothing is hidden, whose variance comes from
