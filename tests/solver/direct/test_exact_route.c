@@ -20,7 +20,6 @@
 #include "radiometry/constants.h"
 #include "solver/solve.h"
 
-
 static const char *const presets[4] = {"draft", "normal", "high", "reference"};
 static const cdl_quality qualities[4] = {CDL_QUALITY_DRAFT, CDL_QUALITY_NORMAL, CDL_QUALITY_HIGH, CDL_QUALITY_REFERENCE};
 
