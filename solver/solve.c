@@ -194,6 +194,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     cdl_scene_lights lights;
     memset(&lights, 0, sizeof lights);
     cdl_light_strategy *strategies = NULL;
+    cdl_direct_route_tally *routes = NULL;
     cJSON **plan_grids = NULL;
     cdl_icache_records *records = calloc(scene->grid_count ? scene->grid_count : 1, sizeof *records);
     if (!records) {
@@ -244,6 +245,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     ctx.ao_samples = out->settings.ao_samples;
     ctx.seed = scene->settings.seed;
     ctx.log = opts.ray_log;
+    ctx.no_exact_route = opts.no_exact_route;
 
     cJSON *direct = cJSON_AddArrayToObject(plan, "direct");
     /* Each light's "grids" object, kept at hand: looking it up in the array
@@ -271,11 +273,12 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     out->grid_count = scene->grid_count;
     out->grids = calloc(scene->grid_count ? scene->grid_count : 1, sizeof *out->grids);
     strategies = calloc(lights.count ? lights.count : 1, sizeof *strategies);
-    if (!out->grids || !strategies) {
+    routes = calloc(lights.count + 1, sizeof *routes);
+    if (!out->grids || !strategies || !routes) {
         st = cdl_error_out_of_memory(err);
         goto fail;
     }
-    cdl_direct_sample_stats total = {0, 0, 0};
+    cdl_direct_sample_stats total = {0};
     for (size_t g = 0; g < scene->grid_count; ++g) {
         const cdl_grid_spec *spec = &scene->grids[g];
         cdl_grid_solution *gs = &out->grids[g];
@@ -288,8 +291,8 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         if (st != CDL_OK) goto fail;
         gs->edge_point_count = cdl_direct_find_edge_points(&ctx, &gs->grid, &gs->first_edge_point);
         cdl_direct_plan_grid(&ctx, gs->grid.points, gs->grid.count, strategies);
-        for (size_t l = 0; l < lights.count; ++l)
-            cJSON_AddStringToObject(plan_grids[l], spec->name, cdl_light_strategy_name(strategies[l]));
+        memset(routes, 0, (lights.count + 1) * sizeof *routes);
+        total.routes = routes;
         char stage_name[160];
         snprintf(stage_name, sizeof stage_name, "grid %s", spec->name);
         double tc = cdl_pool_now_seconds();
@@ -298,6 +301,15 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                                    &opts.progress, stage_name, &total, err);
         out->compute_seconds += cdl_pool_now_seconds() - tc;
         if (st != CDL_OK) goto fail;
+        /* Each light's strategy, and the routes its points took (exact
+         * past occluders, or sampled and why). */
+        for (size_t l = 0; l < lights.count; ++l) {
+            char text[768], routes_text[512];
+            cdl_direct_route_describe(&routes[l], routes_text, sizeof routes_text);
+            snprintf(text, sizeof text, "%s%s%s", cdl_light_strategy_name(strategies[l]), routes_text[0] ? "; " : "",
+                     routes_text);
+            cJSON_AddStringToObject(plan_grids[l], spec->name, text);
+        }
         if (indirect) {
             /* gs->E holds the indirect part's variance until added. */
             cdl_method gm = grid_method(scene->settings.method, &gs->grid);
@@ -340,6 +352,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         cJSON_AddNumberToObject(counts, "closed_form", (double)total.exact_evaluations);
         cJSON_AddNumberToObject(counts, "sampled", (double)total.sampled_evaluations);
     }
+    total.routes = NULL;
     if (indirect) {
         cJSON *inter = cJSON_GetObjectItem(plan, "interreflection");
         cdl_path_stats all = pt_stats;
@@ -373,6 +386,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     free(plan_grids);
     free(strategies);
     release_records(records, scene->grid_count);
+    free(routes);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);
     cdl_scene_geometry_release(geometry);
@@ -384,6 +398,7 @@ fail:
     free(plan_grids);
     free(strategies);
     release_records(records, scene->grid_count);
+    free(routes);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);
     cdl_scene_geometry_release(geometry);

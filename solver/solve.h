@@ -29,8 +29,12 @@ typedef struct cdl_solve_options {
     int threads;                      /* < 0: as the scene says (0 there = all cores) */
     cdl_progress_sink progress;       /* stages, points done; may cancel (CDL_ERR_CANCELLED) */
     struct cdl_ray_log *ray_log;      /* benchmarks: record every shadow ray (forces one thread) */
+    int no_exact_route;               /* 1: sample partly hidden area emitters and skies even where the
+                                       * visible polygon is exact (tests of the sampler, benchmarks);
+                                       * default 0 */
 } cdl_solve_options;
-#define CDL_SOLVE_OPTIONS_DEFAULT {.threads = -1, .progress = {.fn = NULL, .user = NULL}, .ray_log = NULL}
+#define CDL_SOLVE_OPTIONS_DEFAULT \
+    {.threads = -1, .progress = {.fn = NULL, .user = NULL}, .ray_log = NULL, .no_exact_route = 0}
 
 cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *options, cdl_solution *out,
                            cdl_error *err);

@@ -22,7 +22,8 @@ const char *cdl_light_strategy_name(cdl_light_strategy s)
         return "exact, one shadow ray per point: surfaces may come between this light and the grid";
     case CDL_STRATEGY_EXTENDED_EXACT: return "closed form, nothing can hide it";
     case CDL_STRATEGY_EXTENDED_TESTED:
-        return "closed form where fully visible, sampled where partly hidden: surfaces may hide part of this emitter";
+        return "closed form where fully visible, exact visible polygon past few planar occluders, else sampled where "
+               "partly hidden: surfaces may hide part of this emitter";
     case CDL_STRATEGY_SAMPLED:
         return "sampled with shadow rays: no closed form for this emitter (an image), or no exact test of its "
                "visibility (a non-planar mesh) while surfaces may hide it";

@@ -8,7 +8,10 @@
  *   area emitters and the uniform environment: the closed-form illuminance
  *     (contour integral, disk and sphere formulas, pi L x visible fraction)
  *     when no surface intersects the region between the receiver and the
- *     emitter (tested exactly per point, see occluder_index.h); otherwise the
+ *     emitter (tested exactly per point, see occluder_index.h); where at
+ *     most CDL_EXACT_ROUTE_MAX_OCCLUDERS planar triangles are in the way, L
+ *     times the projected solid angle of the visible polygon (exact,
+ *     direct_exact_route.c); otherwise the
  *     closed form minus a Monte-Carlo estimate of the hidden part
  *     (E = E_exact - <f (1 - V)>, a control variate that is exact when
  *     nothing is hidden), with its standard error;
@@ -67,17 +70,52 @@ typedef struct cdl_direct_context {
     int ao_samples;                   /* per point for ambient occlusion (rounded up to a square) */
     uint64_t seed;
     cdl_ray_log *log;                 /* NULL, or records every shadow ray (one thread only) */
+    int no_exact_route;               /* 1: partly hidden lights are always sampled, never solved as
+                                       * visible polygons (tests of the sampler, benchmarks); default 0 */
 } cdl_direct_context;
 
 /* Decide each light's strategy for a set of receiver points (a grid). */
 void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points, size_t count,
                           cdl_light_strategy *strategies);
 
+/* The route a partly hidden area emitter or uniform sky took at a point
+ * (direct_exact_route.c): in full view (closed form), the visible polygon
+ * past few planar occluders (exact), or sampled, and why. */
+typedef enum cdl_direct_route {
+    CDL_ROUTE_FULL_VIEW,              /* nothing in the way: the closed form */
+    CDL_ROUTE_VISIBLE_POLYGON,        /* exact: the visible polygon past planar occluders */
+    CDL_ROUTE_TOO_MANY,               /* sampled: more than CDL_EXACT_ROUTE_MAX_OCCLUDERS occluders */
+    CDL_ROUTE_CURVED_OCCLUDER,        /* sampled: a sphere or a disk may be in the way */
+    CDL_ROUTE_CURVED_EMITTER,         /* sampled: a disk, sphere or non-planar emitter */
+    CDL_ROUTE_TOO_COMPLEX,            /* sampled: the visible part had too many pieces */
+    CDL_ROUTE_DISABLED,               /* sampled: the context asked for it (no_exact_route) */
+    CDL_ROUTE_COUNT
+} cdl_direct_route;
+
+/* Most occluders between a point and a light for the exact route. */
+#define CDL_EXACT_ROUTE_MAX_OCCLUDERS 64
+
+/* Points per route of one light (over a grid). */
+typedef struct cdl_direct_route_tally {
+    uint64_t points[CDL_ROUTE_COUNT];
+    uint32_t most_occluders;          /* most occluders past which a point took the exact route */
+} cdl_direct_route_tally;
+
 typedef struct cdl_direct_sample_stats {
     uint64_t rays;
     uint64_t exact_evaluations;       /* closed forms used */
     uint64_t sampled_evaluations;     /* Monte-Carlo estimates used */
+    cdl_direct_route_tally *routes;   /* NULL, or one per light of the context: points per route */
 } cdl_direct_sample_stats;
+
+/* Add b's counts (rays, evaluations, routes of `light_count` lights when
+ * both have them) to a. */
+void cdl_direct_stats_add(cdl_direct_sample_stats *a, const cdl_direct_sample_stats *b, size_t light_count);
+
+/* What a light's tally says, for the plan: "exact: visible polygon past up
+ * to 3 occluders at 192 points", "sampled at 40 points: more than 64
+ * occluders", ...; empty when the light took no per-point route. */
+void cdl_direct_route_describe(const cdl_direct_route_tally *tally, char *out, size_t size);
 
 /* Lights that can reach any point of a ball (centre, radius): the indices
  * of all lights except those whose emission cone misses the ball. Writes

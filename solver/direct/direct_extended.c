@@ -3,7 +3,9 @@
  * sampled until its own target holds.
  *
  * A light with a closed form E_0 (area emitters, skies; cdl_emitter_exact_
- * illuminance) that may be partly hidden is estimated as
+ * illuminance) that may be partly hidden is first tried on the exact route
+ * (direct_exact_route.c: the visible polygon past few planar occluders,
+ * variance 0); where that is refused it is estimated as
  *     E = E_0 - H,   H = int over the emitter of f (1 - V),
  * f = L cos / pdf the unoccluded integrand and V the visibility: a control
  * variate that is exact when nothing is hidden, whose variance comes from
@@ -136,7 +138,11 @@ static void term_start(const cdl_direct_context *ctx, term *t, cdl_light_strateg
                 stats->exact_evaluations++;
                 return;
             }
-            if (st == CDL_STRATEGY_EXTENDED_TESTED && cdl_direct_light_fully_visible(ctx, t->light, p, n)) {
+            /* In full view, or few planar occluders: exact (direct_exact_route.c). */
+            double visible;
+            int route = cdl_direct_exact_term(ctx, t->light, st, p, n, &visible, stats);
+            if (route >= 0) {
+                if (route == 1) t->exact = visible;
                 stats->exact_evaluations++;
                 return;
             }

@@ -64,7 +64,18 @@ cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_
         free(active);
         return cdl_error_out_of_memory(err);
     }
-    for (int i = 0; i < threads; ++i) workers[i].active = active + (size_t)i * (ctx->light_count + 1);
+    /* Each worker tallies its points' routes apart (when the caller asks). */
+    cdl_direct_route_tally *routes =
+        stats->routes ? calloc((size_t)threads * (ctx->light_count + 1), sizeof *routes) : NULL;
+    if (stats->routes && !routes) {
+        free(workers);
+        free(active);
+        return cdl_error_out_of_memory(err);
+    }
+    for (int i = 0; i < threads; ++i) {
+        workers[i].active = active + (size_t)i * (ctx->light_count + 1);
+        workers[i].stats.routes = routes ? routes + (size_t)i * (ctx->light_count + 1) : NULL;
+    }
     grid_job job = {ctx, strategies, grid, grid_index, E, variance, ao};
     cdl_pool_task task = {.count = grid->count,
                           .chunk = CHUNK,
@@ -75,11 +86,10 @@ cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_
                           .stage = stage};
     cdl_status st = cdl_pool_run(&task, threads, progress, err);
     for (int i = 0; i < threads; ++i) {
-        stats->rays += workers[i].stats.rays;
-        stats->exact_evaluations += workers[i].stats.exact_evaluations;
-        stats->sampled_evaluations += workers[i].stats.sampled_evaluations;
+        cdl_direct_stats_add(stats, &workers[i].stats, ctx->light_count);
         cdl_direct_scratch_release(&workers[i].scratch);
     }
+    free(routes);
     free(active);
     free(workers);
     return st;

@@ -15,9 +15,24 @@ void cdl_direct_record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_
 int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
                         cdl_direct_sample_stats *stats);
 
+/* The region between p (normal n) and the whole of the light, as the
+ * occluder index is asked about it with tolerance *tol: the half-space
+ * above p's plane for a sky, the pyramid to the emitter's outline (or the
+ * sphere's view) cut by that plane otherwise. 0 if there is none. */
+int cdl_direct_light_region(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n,
+                            cdl_convex_region *region, double *tol);
+
 /* Is the region between p and the whole of the light clear of surfaces? */
 int cdl_direct_light_fully_visible(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p,
                                    cdl_vec3 n);
+
+/* A light with a closed form that something may hide, at p
+ * (direct_exact_route.c): 0 when the light is in full view (strategy
+ * EXTENDED_TESTED and the region clear: its closed form stands); 1 when few
+ * planar occluders hide part of it and *E is the exact illuminance of its
+ * visible part; -1 when it must be sampled. Counts the route in stats. */
+int cdl_direct_exact_term(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy st,
+                          cdl_vec3 p, cdl_vec3 n, double *E, cdl_direct_sample_stats *stats);
 
 /* The extended lights (area emitters, skies) of one point (direct_extended.c):
  * lights[0 .. count) are their indices, in light order; `known` is the

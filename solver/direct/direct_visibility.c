@@ -55,24 +55,33 @@ static void unshrink_planes(cdl_convex_region *region, int first, int count, dou
  * 2 tol (a small emitter), so a table just above a floor point went unseen.
  * The sides are therefore kept where they are; only the caps (the plane
  * of p, the plane of the emitter) shrink. */
-int cdl_direct_light_fully_visible(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n)
+int cdl_direct_light_region(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n,
+                            cdl_convex_region *region, double *tol_out)
 {
-    cdl_convex_region region;
-    region.plane_count = 0;
+    region->plane_count = 0;
     double tol = cdl_direct_region_tolerance(ctx, p);
+    *tol_out = tol;
     if (light->is_environment) {
         /* The open half-space above the receiving plane (and above the
          * horizon for an upper-hemisphere sky): {x : -n.x <= -n.p}. */
-        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
-        if (light->upper_only) cdl_region_add(&region, cdl_vec3_neg(light->up), -cdl_vec3_dot(light->up, p));
+        cdl_region_add(region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+        if (light->upper_only) cdl_region_add(region, cdl_vec3_neg(light->up), -cdl_vec3_dot(light->up, p));
     } else if (light->outline_is_sphere) {
-        cdl_region_sphere_view(&region, p, light->sphere_center, light->sphere_radius);
-        if (region.plane_count == CDL_REGION_SPHERE_SIDES + 1) unshrink_planes(&region, 0, CDL_REGION_SPHERE_SIDES, tol);
-        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+        cdl_region_sphere_view(region, p, light->sphere_center, light->sphere_radius);
+        if (region->plane_count == CDL_REGION_SPHERE_SIDES + 1) unshrink_planes(region, 0, CDL_REGION_SPHERE_SIDES, tol);
+        cdl_region_add(region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
     } else {
-        if (!cdl_region_pyramid(&region, p, light->outline, light->outline_count)) return 0;
-        unshrink_planes(&region, 1, light->outline_count, tol);
-        cdl_region_add(&region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+        if (!cdl_region_pyramid(region, p, light->outline, light->outline_count)) return 0;
+        unshrink_planes(region, 1, light->outline_count, tol);
+        cdl_region_add(region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
     }
+    return 1;
+}
+
+int cdl_direct_light_fully_visible(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n)
+{
+    cdl_convex_region region;
+    double tol;
+    if (!cdl_direct_light_region(ctx, light, p, n, &region, &tol)) return 0;
     return !cdl_occluder_index_intersects(ctx->occluders, &region, tol, light->owner);
 }

@@ -229,10 +229,14 @@ static int sphere_surface_in_box(const double *s, cdl_vec3 lo, cdl_vec3 hi)
     return near2 <= r2 && r2 <= far2;
 }
 
-/* The traversal behind both queries; with `surface_box` set, spheres count
+/* Called for each primitive found in a region; returns 1 to stop the
+ * traversal (the query then returns 1). NULL: stop at the first. */
+typedef int (*visit_fn)(void *user, const cdl_occluder_index *ix, const prim *pr);
+
+/* The traversal behind the queries; with `surface_box` set, spheres count
  * by their surface meeting that box instead of by their ball. */
 static int query(const cdl_occluder_index *ix, const cdl_convex_region *region, double tolerance,
-                 uint32_t exclude_owner, const cdl_vec3 *surface_box)
+                 uint32_t exclude_owner, const cdl_vec3 *surface_box, visit_fn visit, void *user)
 {
     if (!ix->prim_count) return 0;
     uint32_t stack[128];
@@ -262,7 +266,7 @@ static int query(const cdl_occluder_index *ix, const cdl_convex_region *region, 
                 hit = surface_box ? sphere_surface_in_box(sphere, surface_box[0], surface_box[1])
                                   : sphere_in_region(sphere, region, tolerance);
             }
-            if (hit) return 1;
+            if (hit && (!visit || visit(user, ix, pr))) return 1;
         }
     }
     return 0;
@@ -271,7 +275,7 @@ static int query(const cdl_occluder_index *ix, const cdl_convex_region *region, 
 int cdl_occluder_index_intersects(const cdl_occluder_index *ix, const cdl_convex_region *region, double tolerance,
                                   uint32_t exclude_owner)
 {
-    return query(ix, region, tolerance, exclude_owner, NULL);
+    return query(ix, region, tolerance, exclude_owner, NULL, NULL, NULL);
 }
 
 int cdl_occluder_index_surface_in_box(const cdl_occluder_index *ix, cdl_vec3 lo, cdl_vec3 hi)
@@ -279,7 +283,43 @@ int cdl_occluder_index_surface_in_box(const cdl_occluder_index *ix, cdl_vec3 lo,
     cdl_convex_region box;
     cdl_region_box(&box, lo, hi);
     const cdl_vec3 corners[2] = {lo, hi};
-    return query(ix, &box, 0.0, UINT32_MAX, corners);
+    return query(ix, &box, 0.0, UINT32_MAX, corners, NULL, NULL);
+}
+
+typedef struct list_state {
+    cdl_occluder_triangle *out;
+    size_t max, count;
+    cdl_occluder_list_status status;
+} list_state;
+
+static int list_visit(void *user, const cdl_occluder_index *ix, const prim *pr)
+{
+    list_state *ls = user;
+    if (pr->index >= ix->triangle_count) {
+        ls->status = CDL_OCCLUDERS_SPHERE;
+        return 1;
+    }
+    if (ls->count == ls->max) {
+        ls->status = CDL_OCCLUDERS_TOO_MANY;
+        return 1;
+    }
+    cdl_occluder_triangle *t = &ls->out[ls->count++];
+    memcpy(t->v, &ix->vertices[9 * (size_t)pr->index], sizeof t->v);
+    t->owner = pr->owner;
+    return 0;
+}
+
+cdl_occluder_list_status cdl_occluder_index_list(const cdl_occluder_index *ix, const cdl_convex_region *region,
+                                                 double tolerance, uint32_t exclude_owner,
+                                                 cdl_occluder_triangle *out, size_t max, size_t *count)
+{
+    list_state ls = {out, max, 0, CDL_OCCLUDERS_LISTED};
+    if (query(ix, region, tolerance, exclude_owner, NULL, list_visit, &ls)) {
+        /* stopped early: too deep a tree (conservative), or a refusal */
+        if (ls.status == CDL_OCCLUDERS_LISTED) ls.status = CDL_OCCLUDERS_TOO_MANY;
+    }
+    *count = ls.count;
+    return ls.status;
 }
 
 int cdl_region_add(cdl_convex_region *r, cdl_vec3 normal, double offset)

@@ -67,6 +67,26 @@ int cdl_occluder_index_intersects(const cdl_occluder_index *index, const cdl_con
  * its surface, not its ball, unlike the region test above). */
 int cdl_occluder_index_surface_in_box(const cdl_occluder_index *index, cdl_vec3 lo, cdl_vec3 hi);
 
+/* The triangles that intersect a region (as cdl_occluder_index_intersects
+ * decides), for exact visibility: up to `max` of them into out[], their
+ * number in *count. LISTED: that is every primitive in the region;
+ * TOO_MANY: there are more than `max` triangles (the list is cut short);
+ * SPHERE: a sphere may be in the region (no polygon describes it). */
+typedef struct cdl_occluder_triangle {
+    double v[9];                      /* xyz of its three corners */
+    uint32_t owner;
+} cdl_occluder_triangle;
+
+typedef enum cdl_occluder_list_status {
+    CDL_OCCLUDERS_LISTED,
+    CDL_OCCLUDERS_TOO_MANY,
+    CDL_OCCLUDERS_SPHERE
+} cdl_occluder_list_status;
+
+cdl_occluder_list_status cdl_occluder_index_list(const cdl_occluder_index *index, const cdl_convex_region *region,
+                                                 double tolerance, uint32_t exclude_owner,
+                                                 cdl_occluder_triangle *out, size_t max, size_t *count);
+
 size_t cdl_occluder_index_primitive_count(const cdl_occluder_index *index);
 
 /* ---- building regions ------------------------------------------------------ */

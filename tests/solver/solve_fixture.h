@@ -13,8 +13,11 @@
 #include "solver/solve.h"
 
 /* Solve `json` (relative paths against CANDELA_TEST_TMPDIR); 0 on failure,
- * reported as a failed check. */
-static inline int fixture_solve(const char *json, cdl_scene **scene, cdl_solution *sol, int threads)
+ * reported as a failed check. With no_exact_route set, partly hidden lights
+ * are sampled even where the visible polygon would be exact (the tests of
+ * the sampler). */
+static inline int fixture_solve_route(const char *json, cdl_scene **scene, cdl_solution *sol, int threads,
+                                      int no_exact_route)
 {
     cdl_error err;
     cdl_error_clear(&err);
@@ -26,6 +29,7 @@ static inline int fixture_solve(const char *json, cdl_scene **scene, cdl_solutio
     }
     cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
     o.threads = threads;
+    o.no_exact_route = no_exact_route;
     if (cdl_solve_scene(*scene, &o, sol, &err) != CDL_OK) {
         fprintf(stderr, "solve failed: %s\n", err.message);
         CHECK(0);
@@ -34,6 +38,11 @@ static inline int fixture_solve(const char *json, cdl_scene **scene, cdl_solutio
         return 0;
     }
     return 1;
+}
+
+static inline int fixture_solve(const char *json, cdl_scene **scene, cdl_solution *sol, int threads)
+{
+    return fixture_solve_route(json, scene, sol, threads, 0);
 }
 
 static inline void fixture_release(cdl_scene *scene, cdl_solution *sol)

@@ -363,8 +363,9 @@ static void test_box_shadow(void)
 
 /* A rectangular emitter half hidden: an opaque plate at half height covers
  * x < 0, so from a receiver on the axis exactly the x < 0 half of the
- * emitter is hidden and E is half the unoccluded closed form. The solver
- * must sample here, and its estimate must agree within its standard error. */
+ * emitter is hidden and E is half the unoccluded closed form. With the
+ * exact route turned off the solver must sample here, and its estimate must
+ * agree within its standard error (tests/solver/direct/ test the route). */
 static void test_half_hidden_emitter(void)
 {
     const char *json =
@@ -376,7 +377,7 @@ static void test_half_hidden_emitter(void)
         " \"solver\": {\"method\": \"direct\", \"direct_samples\": 4096}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!fixture_solve(json, &scene, &sol, 1)) return;
+    if (!fixture_solve_route(json, &scene, &sol, 1, 1)) return;
     double full = 4.0 * CDL_PI * 1000.0 * cf_parallel_corner(0.5, 0.5, 2.0);
     double E = sol.grids[0].E[0], se = sol.grids[0].E_stderr[0];
     CHECK_MSG(se > 0.0 && se < 0.01 * full, "stderr %g", se);
@@ -778,9 +779,9 @@ static void test_directional_shadow(void)
  * sky (Hottel's crossed strings for a strip element; Modest, Radiative Heat
  * Transfer, ch. 4), so E = pi L (1 - F). The wall is 200 m long: the part
  * an infinite one would add beyond |y| = 100 m is a h^2 / (3 pi 100^3) ~
- * 1e-7 of the hemisphere, far below the sampling error. The solver must
- * sample here (exact minus sampled hidden part) and agree within 4
- * standard errors. */
+ * 1e-7 of the hemisphere, far below the sampling error. With the exact
+ * route turned off the solver must sample here (exact minus sampled hidden
+ * part) and agree within 4 standard errors. */
 static void test_sky_behind_wall(void)
 {
     const char *json =
@@ -792,7 +793,7 @@ static void test_sky_behind_wall(void)
         " \"solver\": {\"method\": \"direct\", \"direct_samples\": 4096}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!fixture_solve(json, &scene, &sol, 1)) return;
+    if (!fixture_solve_route(json, &scene, &sol, 1, 1)) return;
     const double a[2] = {1.0, 2.0}, h = 1.0;
     for (int i = 0; i < 2; ++i) {
         double F = 0.5 * (1.0 - a[i] / sqrt(a[i] * a[i] + h * h));
@@ -924,7 +925,8 @@ static void test_edge_points(void)
 }
 
 /* A small box far off under a uniform sky hides a little of it: too little
- * for a handful of samples to find. The estimate then equals the unhidden
+ * for a handful of samples to find (the exact route turned off: it would
+ * find it). The estimate then equals the unhidden
  * pi L, and its error must still say what may be hidden: the hidden part is
  * the box's projected solid angle (the sum over the faces the point sees,
  * which tile its silhouette) times L, and the result must lie within 4
@@ -939,7 +941,7 @@ static void test_small_hidden_part(void)
         "[{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}]}], \"solver\": {\"method\": \"direct\", \"direct_samples\": 16}}";
     cdl_scene *scene;
     cdl_solution sol;
-    if (!fixture_solve(json, &scene, &sol, 1)) return;
+    if (!fixture_solve_route(json, &scene, &sol, 1, 1)) return;
     /* Faces the origin sees: only the near face x = 4.8 (the top z = 0.4 is
      * above the eye and faces away, the sides y = +-0.2 face away from y = 0). */
     cdl_vec3 face[4] = {cdl_vec3_make(4.8, -0.2, 0.0), cdl_vec3_make(4.8, 0.2, 0.0), cdl_vec3_make(4.8, 0.2, 0.4),

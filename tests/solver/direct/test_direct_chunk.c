@@ -60,7 +60,7 @@ int main(void)
 
     cdl_direct_scratch scratch;
     memset(&scratch, 0, sizeof scratch);
-    cdl_direct_sample_stats s1 = {0, 0, 0}, s2 = {0, 0, 0};
+    cdl_direct_sample_stats s1 = {0}, s2 = {0};
     size_t mismatches = 0, lit = 0;
     for (size_t start = 0; start < grid.count; start += 13) { /* an odd chunk size on purpose */
         size_t count = grid.count - start < 13 ? grid.count - start : 13;

@@ -1,0 +1,259 @@
+/* direct_exact_route.c - a partly hidden area emitter or uniform sky, exact
+ * when few planar occluders are in the way.
+ *
+ * A Lambertian polygon of luminance L seen past occluders gives
+ *     E = L Omega_p(visible part),
+ * the visible part being the polygon minus the occluders' central
+ * projections from the point onto its plane (geometry/visible_polygon.h).
+ * A uniform sky is the same on the five faces of a unit cube over the
+ * point's tangent plane (top and four half sides): every direction of the
+ * hemisphere crosses exactly one face, so the visible sky is the union of
+ * the faces' visible parts, each a polygon whose projected solid angle is
+ * Lambert's closed form; an upper-hemisphere sky first loses the faces'
+ * parts below the horizon of its `up`. (The configuration factor of the
+ * visible polygon, as CIE 171:2006's daylight test cases compute it.)
+ *
+ * The occluders are the triangles of the occluder index that meet the
+ * region between the point and the light (the pyramid to the emitter, or the
+ * half-space above the tangent plane). The route is refused, and the light
+ * sampled, when more than CDL_EXACT_ROUTE_MAX_OCCLUDERS are there, when a
+ * sphere or a disk (curved: the index holds a disk as a circumscribed
+ * polygon, not the disk) may be among them, when the emitter is not one
+ * plane of polygons (disk, sphere, non-planar mesh), or when the visible
+ * part falls into more pieces than geometry/visible_polygon.h holds.
+ */
+#include "solver/direct/direct_internal.h"
+
+#include <inttypes.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "radiometry/frame.h"
+#include "solver/geometry/visible_polygon.h"
+
+/* Occluder parts closer to the point than this fraction of its ray epsilon
+ * are ignored: they pass through the point (it lies on them). */
+#define NEAR_FRACTION 1e-6
+
+#define STRINGIFY_(x) #x
+#define STRINGIFY(x) STRINGIFY_(x)
+
+/* Subtract every occluder from a face and add the visible part's Omega_p;
+ * returns 0 if the face overflowed its limits. */
+static int face_visible(cdl_visible_face *face, const cdl_occluder_triangle *occ, size_t count, cdl_vec3 n,
+                        double *omega)
+{
+    for (size_t i = 0; i < count && !face->overflow; ++i) cdl_visible_face_subtract_triangle(face, occ[i].v);
+    int ok = !face->overflow;
+    if (ok) *omega += cdl_visible_face_projected_solid_angle(face, n);
+    cdl_visible_face_release(face);
+    return ok;
+}
+
+/* Omega_p of the sky visible past the occluders: the five faces of the unit
+ * cube over p's tangent plane. */
+static int sky_visible(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n, double near,
+                       const cdl_occluder_triangle *occ, size_t count, double *omega)
+{
+    cdl_frame f = cdl_frame_from_normal(n);
+    const cdl_vec3 sides[4] = {f.s, f.t, cdl_vec3_neg(f.s), cdl_vec3_neg(f.t)};
+    *omega = 0.0;
+    for (int k = 0; k < 5; ++k) {
+        cdl_visible_face face;
+        cdl_vec3 corner[4];
+        if (k == 4) {
+            /* the top: the square p + n + [-1, 1] s + [-1, 1] t */
+            cdl_vec3 c = cdl_vec3_add(p, n);
+            corner[0] = cdl_vec3_sub(cdl_vec3_sub(c, f.s), f.t);
+            corner[1] = cdl_vec3_sub(cdl_vec3_add(c, f.s), f.t);
+            corner[2] = cdl_vec3_add(cdl_vec3_add(c, f.s), f.t);
+            corner[3] = cdl_vec3_add(cdl_vec3_sub(c, f.s), f.t);
+            cdl_visible_face_init(&face, p, cdl_vec3_neg(n), c, 0, near);
+        } else {
+            /* a half side: p + a + [-1, 1] b + [0, 1] n, b the next axis round */
+            cdl_vec3 a = sides[k], b = sides[(k + 1) % 4];
+            cdl_vec3 c = cdl_vec3_add(p, a);
+            corner[0] = cdl_vec3_sub(c, b);
+            corner[1] = cdl_vec3_add(c, b);
+            corner[2] = cdl_vec3_add(corner[1], n);
+            corner[3] = cdl_vec3_add(corner[0], n);
+            cdl_visible_face_init(&face, p, cdl_vec3_neg(a), c, 0, near);
+        }
+        cdl_visible_face_add_polygon(&face, corner, 4);
+        if (light->upper_only) {
+            /* up . w >= 0 with w = -height toward + x e1 + y e2 */
+            cdl_vec3 up = light->up;
+            cdl_visible_face_clip(&face, cdl_vec3_dot(up, face.e1), cdl_vec3_dot(up, face.e2),
+                                  -face.height * cdl_vec3_dot(up, face.toward));
+        }
+        if (!face_visible(&face, occ, count, n, omega)) return 0;
+    }
+    return 1;
+}
+
+/* The corners of triangle t of a triangle-set shape. */
+static void shape_triangle(const cdl_shape *s, size_t t, cdl_vec3 *c)
+{
+    for (int k = 0; k < 3; ++k) {
+        const double *v = &s->vertices[3 * (size_t)s->triangles[3 * t + (size_t)k]];
+        c[k] = cdl_vec3_make(v[0], v[1], v[2]);
+    }
+}
+
+/* Omega_p of the emitter's polygons visible past the occluders; 0 with
+ * *route set when the emitter is not planar polygons. */
+static int emitter_visible(const cdl_geometry_piece *piece, const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n,
+                           double near, const cdl_occluder_triangle *occ, size_t count, double *omega,
+                           cdl_direct_route *route)
+{
+    const cdl_shape *s = &piece->shape;
+    *omega = 0.0;
+    cdl_visible_face face;
+    if (s->kind == CDL_SHAPE_RECT) {
+        cdl_vec3 m = cdl_vec3_normalize(cdl_vec3_cross(s->u, s->v));
+        if (!(cdl_vec3_dot(m, cdl_vec3_sub(p, s->origin)) > 0.0)) return 1; /* behind: dark */
+        cdl_vec3 c[4] = {s->origin, cdl_vec3_add(s->origin, s->u), cdl_vec3_add(cdl_vec3_add(s->origin, s->u), s->v),
+                         cdl_vec3_add(s->origin, s->v)};
+        cdl_visible_face_init(&face, p, m, s->origin, 1, near);
+        cdl_visible_face_add_polygon(&face, c, 4);
+    } else if (s->kind == CDL_SHAPE_TRIANGLES && light->outline_count > 0) {
+        /* One plane (the light's outline exists only for planar meshes):
+         * its normal from Newell's sum, each triangle facing p a piece. */
+        cdl_vec3 m = cdl_vec3_make(0, 0, 0), o = light->outline[0];
+        for (size_t t = 0; t < s->triangle_count; ++t) {
+            cdl_vec3 c[3];
+            shape_triangle(s, t, c);
+            m = cdl_vec3_add(m, cdl_vec3_cross(cdl_vec3_sub(c[1], c[0]), cdl_vec3_sub(c[2], c[0])));
+        }
+        m = cdl_vec3_normalize(m);
+        double h = cdl_vec3_dot(m, cdl_vec3_sub(p, o));
+        if (h == 0.0) return 1; /* in the plane: sees nothing of it */
+        if (h < 0.0) m = cdl_vec3_neg(m);
+        cdl_visible_face_init(&face, p, m, o, 1, near);
+        for (size_t t = 0; t < s->triangle_count; ++t) {
+            cdl_vec3 c[3];
+            shape_triangle(s, t, c);
+            cdl_vec3 front = cdl_vec3_cross(cdl_vec3_sub(c[1], c[0]), cdl_vec3_sub(c[2], c[0]));
+            if (cdl_vec3_dot(front, cdl_vec3_sub(p, c[0])) > 0.0) cdl_visible_face_add_polygon(&face, c, 3);
+        }
+    } else {
+        *route = CDL_ROUTE_CURVED_EMITTER;
+        return 0;
+    }
+    if (!face_visible(&face, occ, count, n, omega)) {
+        *route = CDL_ROUTE_TOO_COMPLEX;
+        return 0;
+    }
+    return 1;
+}
+
+/* The exact route for one light at p, or why not. */
+static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p,
+                                    cdl_vec3 n, double *E, uint32_t *occluders)
+{
+    *E = 0.0;
+    *occluders = 0;
+    if (ctx->no_exact_route || !ctx->geometry || !ctx->occluders) return CDL_ROUTE_DISABLED;
+    const cdl_geometry_piece *piece = NULL;
+    if (!light->is_environment) {
+        if (light->owner == UINT32_MAX || light->outline_is_sphere) return CDL_ROUTE_CURVED_EMITTER;
+        piece = cdl_scene_geometry_piece(ctx->geometry, light->owner);
+        if (piece->shape.kind != CDL_SHAPE_RECT &&
+            !(piece->shape.kind == CDL_SHAPE_TRIANGLES && light->outline_count > 0))
+            return CDL_ROUTE_CURVED_EMITTER;
+    }
+    cdl_convex_region region;
+    double tol;
+    if (!cdl_direct_light_region(ctx, light, p, n, &region, &tol)) return CDL_ROUTE_CURVED_EMITTER;
+    cdl_occluder_triangle occ[CDL_EXACT_ROUTE_MAX_OCCLUDERS];
+    size_t count = 0;
+    cdl_occluder_list_status ls =
+        cdl_occluder_index_list(ctx->occluders, &region, tol, light->owner, occ, CDL_EXACT_ROUTE_MAX_OCCLUDERS, &count);
+    if (ls == CDL_OCCLUDERS_SPHERE) return CDL_ROUTE_CURVED_OCCLUDER;
+    if (ls == CDL_OCCLUDERS_TOO_MANY) return CDL_ROUTE_TOO_MANY;
+    for (size_t i = 0; i < count; ++i)
+        if (cdl_scene_geometry_piece(ctx->geometry, occ[i].owner)->shape.kind == CDL_SHAPE_DISK)
+            return CDL_ROUTE_CURVED_OCCLUDER;
+    *occluders = (uint32_t)count;
+    double near = NEAR_FRACTION * cdl_ray_offsets_epsilon(&ctx->offsets, p);
+    double omega = 0.0, L;
+    cdl_direct_route route = CDL_ROUTE_VISIBLE_POLYGON;
+    if (light->is_environment) {
+        /* uniform: the luminance of any direction above the horizon */
+        L = cdl_emitter_radiance(light->emitter, p, n, light->upper_only ? light->up : n, NULL).cd_m2;
+        if (!sky_visible(light, p, n, near, occ, count, &omega)) return CDL_ROUTE_TOO_COMPLEX;
+    } else {
+        L = piece->luminance_cd_m2;
+        if (!emitter_visible(piece, light, p, n, near, occ, count, &omega, &route)) return route;
+    }
+    /* E = L Omega_p of the visible part (Lambert); never below 0 by rounding */
+    *E = omega > 0.0 ? L * omega : 0.0;
+    return CDL_ROUTE_VISIBLE_POLYGON;
+}
+
+int cdl_direct_exact_term(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy st,
+                          cdl_vec3 p, cdl_vec3 n, double *E, cdl_direct_sample_stats *stats)
+{
+    cdl_direct_route_tally *tally = stats->routes ? &stats->routes[light - ctx->lights] : NULL;
+    if (st == CDL_STRATEGY_EXTENDED_TESTED && cdl_direct_light_fully_visible(ctx, light, p, n)) {
+        if (tally) tally->points[CDL_ROUTE_FULL_VIEW]++;
+        return 0; /* the caller's closed form stands */
+    }
+    uint32_t occluders = 0;
+    cdl_direct_route route = exact_route(ctx, light, p, n, E, &occluders);
+    if (tally) {
+        tally->points[route]++;
+        if (route == CDL_ROUTE_VISIBLE_POLYGON && occluders > tally->most_occluders) tally->most_occluders = occluders;
+    }
+    return route == CDL_ROUTE_VISIBLE_POLYGON ? 1 : -1;
+}
+
+void cdl_direct_stats_add(cdl_direct_sample_stats *a, const cdl_direct_sample_stats *b, size_t light_count)
+{
+    a->rays += b->rays;
+    a->exact_evaluations += b->exact_evaluations;
+    a->sampled_evaluations += b->sampled_evaluations;
+    if (!a->routes || !b->routes) return;
+    for (size_t l = 0; l < light_count; ++l) {
+        for (int r = 0; r < CDL_ROUTE_COUNT; ++r) a->routes[l].points[r] += b->routes[l].points[r];
+        if (b->routes[l].most_occluders > a->routes[l].most_occluders)
+            a->routes[l].most_occluders = b->routes[l].most_occluders;
+    }
+}
+
+void cdl_direct_route_describe(const cdl_direct_route_tally *t, char *out, size_t size)
+{
+    static const char *why[CDL_ROUTE_COUNT] = {
+        [CDL_ROUTE_TOO_MANY] = "more than " STRINGIFY(CDL_EXACT_ROUTE_MAX_OCCLUDERS) " occluders",
+        [CDL_ROUTE_CURVED_OCCLUDER] = "curved occluder (sphere or disk)",
+        [CDL_ROUTE_CURVED_EMITTER] = "curved or non-planar emitter",
+        [CDL_ROUTE_TOO_COMPLEX] = "visible part in too many pieces",
+        [CDL_ROUTE_DISABLED] = "exact route turned off",
+    };
+    size_t used = 0;
+    out[0] = '\0';
+#define APPEND(...)                                                                   \
+    do {                                                                              \
+        if (used < size) {                                                            \
+            int w = snprintf(out + used, size - used, __VA_ARGS__);                   \
+            if (w > 0) used += (size_t)w;                                             \
+        }                                                                             \
+    } while (0)
+    const char *sep = "";
+    if (t->points[CDL_ROUTE_FULL_VIEW]) {
+        APPEND("closed form in full view at %" PRIu64 " points", t->points[CDL_ROUTE_FULL_VIEW]);
+        sep = "; ";
+    }
+    if (t->points[CDL_ROUTE_VISIBLE_POLYGON]) {
+        APPEND("%sexact: visible polygon past up to %" PRIu32 " occluders at %" PRIu64 " points", sep,
+               t->most_occluders, t->points[CDL_ROUTE_VISIBLE_POLYGON]);
+        sep = "; ";
+    }
+    for (int r = CDL_ROUTE_TOO_MANY; r < CDL_ROUTE_COUNT; ++r)
+        if (t->points[r]) {
+            APPEND("%ssampled: %s at %" PRIu64 " points", sep, why[r], t->points[r]);
+            sep = "; ";
+        }
+#undef APPEND
+}
