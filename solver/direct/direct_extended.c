@@ -33,6 +33,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "lights/environment_sampler.h"
 #include "radiometry/estimate.h"
 #include "radiometry/rng.h"
 
@@ -56,7 +57,20 @@ typedef struct term {
     double potential;        /* what the light gives with nothing in the way */
     cdl_estimate est;        /* of H (hidden) or of E (plain) */
     double carrying;         /* samples whose direction carries light at all */
+    cdl_environment_sampler *sky; /* image environments: sampled for this normal (NULL: the emitter's sampler) */
 } term;
+
+/* A sample of the light: an image sky by luminance x each pixel's projected
+ * solid angle on n's hemisphere (lights/environment_sampler.h; its mean of
+ * L cos / pdf with nothing in the way is the exact sum, as the emitter's
+ * sampler's is), anything else by the emitter's own sampler. */
+static int term_sample(term *t, cdl_vec3 p, cdl_vec3 n, double u1, double u2, cdl_light_sample *ls)
+{
+    if (!t->sky && cdl_environment_sampler_applies(t->light->emitter))
+        cdl_environment_sampler_create(t->light->emitter, n, &t->sky, NULL); /* NULL on failure: the emitter's */
+    if (t->sky) return cdl_environment_sampler_sample(t->sky, u1, u2, ls);
+    return cdl_emitter_sample(t->light->emitter, p, n, u1, u2, ls);
+}
 
 /* One round of k x k strata, two samples each, added to t->est. */
 static void sample_round(const cdl_direct_context *ctx, term *t, int k, cdl_vec3 p, cdl_vec3 n,
@@ -74,7 +88,7 @@ static void sample_round(const cdl_direct_context *ctx, term *t, int k, cdl_vec3
                 cdl_rng_uniform2(key, base + (uint64_t)(2 * (j * k + i) + s), u);
                 f[s] = 0.0;
                 cdl_light_sample ls;
-                if (!cdl_emitter_sample(t->light->emitter, p, n, (i + u[0]) / k, (j + u[1]) / k, &ls) ||
+                if (!term_sample(t, p, n, (i + u[0]) / k, (j + u[1]) / k, &ls) ||
                     !(ls.pdf > 0.0))
                     continue;
                 double c = cdl_vec3_dot(n, ls.to_light);
@@ -129,6 +143,7 @@ static void term_start(const cdl_direct_context *ctx, term *t, cdl_light_strateg
     cdl_illuminance exact;
     t->exact = t->potential = t->carrying = 0.0;
     t->est = (cdl_estimate){0.0, 0.0, 0.0, 0};
+    t->sky = NULL;
     if (st != CDL_STRATEGY_SAMPLED || cdl_emitter_has_exact_illuminance(t->light->emitter)) {
         if (cdl_emitter_exact_illuminance(t->light->emitter, p, n, &exact, NULL) == CDL_OK) {
             t->exact = t->potential = exact.lx > 0.0 ? exact.lx : 0.0;
@@ -210,6 +225,7 @@ void cdl_direct_extended_point(const cdl_direct_context *ctx, const cdl_light_st
     for (size_t j = 0; j < count; ++j) {
         contribution[j] = term_value(&terms[j]);
         var_sum += term_variance(&terms[j]);
+        cdl_environment_sampler_release(terms[j].sky);
     }
     *variance = var_sum;
     if (terms != local) free(terms);

@@ -180,11 +180,15 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
         double last = stats->last, before = stats->before_last, total = stats->total;
         if (!cdl_icache_gather(&ctx->path, key, p, n, PILOT_M, PILOT_N, &pilot, stats))
             return cdl_error_out_of_memory(err);
-        /* The record's noise gets a quarter of the point's variance (t R)^2,
-         * R = E_dir + E_ind there; the interpolation another quarter, the
-         * direct part the other half (solve.c). */
+        /* The record's own variance: at most the point's whole (t R)^2,
+         * R = E_dir + E_ind there. A point averages several records (their
+         * noise shrinks by about the number it uses), so a record need not
+         * be more accurate than a point. Measured on a closed 4 m cube
+         * (rho 0.5, 2500 floor points, normal): records held to a quarter of
+         * that variance took 4.8 s for 0.21 % RMS error, to all of it
+         * 0.93 s for 0.27 % (path tracing: 2.7 s for 0.29 %). */
         double R = job->E_direct[i] + pilot.E;
-        double budget = 0.25 * ctx->target * ctx->target * R * R;
+        double budget = ctx->target * ctx->target * R * R;
         double n_pilot = PILOT_M * PILOT_N;
         cdl_estimate est = {n_pilot, pilot.E * n_pilot, pilot.var * n_pilot * n_pilot, 1};
         double want = cdl_estimate_plan(&est, budget, PILOT_M * PILOT_N);
@@ -294,7 +298,11 @@ static cdl_status visit_points(void *shared, void *local, size_t begin, size_t e
             continue;
         }
         double R = fmax(job->E_direct[i] + it.E, job->floor);
-        double share = 0.25 * job->ctx->target * job->ctx->target * R * R;
+        /* A point asks for a record when the interpolation's own variance
+         * exceeds (t R)^2 (the records' noise, averaged, comes on top;
+         * asking at a quarter of it took 35 % more records for an error
+         * 20 % smaller in the cube above). */
+        double share = job->ctx->target * job->ctx->target * R * R;
         job->ask[i] = (it.used == 0 || it.interp_var > share) ? fmax(job->limits->reach_min, 0.5 * it.reach) : 0.0;
     }
     return CDL_OK;
