@@ -229,11 +229,14 @@ static int sphere_surface_in_box(const double *s, cdl_vec3 lo, cdl_vec3 hi)
     return near2 <= r2 && r2 <= far2;
 }
 
-/* The traversal behind both queries; with `surface_box` set, spheres count
- * by their surface meeting that box instead of by their ball. */
+/* The traversal behind the queries; with `surface_box` set, spheres count
+ * by their surface meeting that box instead of by their ball. Without a
+ * visitor the first primitive found answers; with one, each found is
+ * handed to it and the count returned. */
 static int query(const cdl_occluder_index *ix, const cdl_convex_region *region, double tolerance,
-                 uint32_t exclude_owner, const cdl_vec3 *surface_box)
+                 uint32_t exclude_owner, const cdl_vec3 *surface_box, cdl_occluder_visit visit, void *user)
 {
+    int found = 0;
     if (!ix->prim_count) return 0;
     uint32_t stack[128];
     int top = 0;
@@ -246,7 +249,7 @@ static int query(const cdl_occluder_index *ix, const cdl_convex_region *region, 
             culled = box_outside(&nd->box, &region->planes[p], region->planes[p].offset - tolerance);
         if (culled) continue;
         if (nd->count == 0) {
-            if (top + 2 > (int)(sizeof stack / sizeof stack[0])) return 1; /* too deep: be conservative */
+            if (top + 2 > (int)(sizeof stack / sizeof stack[0])) return found + 1; /* too deep: be conservative */
             stack[top++] = nd->first;
             stack[top++] = id + 1;
             continue;
@@ -262,16 +265,20 @@ static int query(const cdl_occluder_index *ix, const cdl_convex_region *region, 
                 hit = surface_box ? sphere_surface_in_box(sphere, surface_box[0], surface_box[1])
                                   : sphere_in_region(sphere, region, tolerance);
             }
-            if (hit) return 1;
+            if (!hit) continue;
+            if (!visit) return 1;
+            found++;
+            if (pr->index < ix->triangle_count) visit(user, &ix->vertices[9 * (size_t)pr->index], 0, pr->owner);
+            else visit(user, &ix->spheres[4 * (size_t)(pr->index - ix->triangle_count)], 1, pr->owner);
         }
     }
-    return 0;
+    return found;
 }
 
 int cdl_occluder_index_intersects(const cdl_occluder_index *ix, const cdl_convex_region *region, double tolerance,
                                   uint32_t exclude_owner)
 {
-    return query(ix, region, tolerance, exclude_owner, NULL);
+    return query(ix, region, tolerance, exclude_owner, NULL, NULL, NULL);
 }
 
 int cdl_occluder_index_surface_in_box(const cdl_occluder_index *ix, cdl_vec3 lo, cdl_vec3 hi)
@@ -279,7 +286,16 @@ int cdl_occluder_index_surface_in_box(const cdl_occluder_index *ix, cdl_vec3 lo,
     cdl_convex_region box;
     cdl_region_box(&box, lo, hi);
     const cdl_vec3 corners[2] = {lo, hi};
-    return query(ix, &box, 0.0, UINT32_MAX, corners);
+    return query(ix, &box, 0.0, UINT32_MAX, corners, NULL, NULL);
+}
+
+int cdl_occluder_index_visit_box(const cdl_occluder_index *ix, cdl_vec3 lo, cdl_vec3 hi, cdl_occluder_visit visit,
+                                 void *user)
+{
+    cdl_convex_region box;
+    cdl_region_box(&box, lo, hi);
+    const cdl_vec3 corners[2] = {lo, hi};
+    return query(ix, &box, 0.0, UINT32_MAX, corners, visit, user);
 }
 
 int cdl_region_add(cdl_convex_region *r, cdl_vec3 normal, double offset)
