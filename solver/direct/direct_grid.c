@@ -116,7 +116,7 @@ cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_
  * lies on and moves nothing. */
 #define EDGE_PARALLEL_COS (1.0 - 1e-9)
 #define EDGE_AMBIGUOUS_COS 0.125
-#define EDGE_BOX_RESOLUTIONS 2.0
+#define EDGE_BOX_RESOLUTIONS 1.0
 #define EDGE_MOVE_RESOLUTIONS 8.0
 
 typedef struct edge_probe {
