@@ -29,6 +29,8 @@ typedef struct grid_worker {
     cdl_direct_scratch scratch;
 } grid_worker;
 
+static int chunk_near_surface(const cdl_direct_context *ctx, cdl_bounds3 box);
+
 static cdl_status solve_chunk(void *shared, void *local, size_t start, size_t end, cdl_error *err)
 {
     const grid_job *job = shared;
@@ -37,9 +39,18 @@ static cdl_status solve_chunk(void *shared, void *local, size_t start, size_t en
     /* Where each point is evaluated: itself, or for an edge point the
      * point just off it on the side the grid is meant for. */
     cdl_vec3 at[CHUNK];
-    for (size_t i = start; i < end; ++i) cdl_direct_edge_point(job->ctx, grid->points[i], grid->normals[i], &at[i - start]);
-    /* Skip, once for the whole chunk, the lights that cannot reach it. */
     cdl_bounds3 box = cdl_bounds3_empty();
+    for (size_t i = start; i < end; ++i) {
+        at[i - start] = grid->points[i];
+        cdl_bounds3_grow(&box, grid->points[i]);
+    }
+    /* One probe for the whole chunk: a chunk no surface comes near (a
+     * work plane in the open) has no point to move. */
+    if (chunk_near_surface(job->ctx, box))
+        for (size_t i = start; i < end; ++i)
+            cdl_direct_edge_point(job->ctx, grid->points[i], grid->normals[i], &at[i - start]);
+    /* Skip, once for the whole chunk, the lights that cannot reach it. */
+    box = cdl_bounds3_empty();
     for (size_t i = start; i < end; ++i) cdl_bounds3_grow(&box, at[i - start]);
     size_t active = cdl_direct_select_lights(job->ctx, cdl_bounds3_centre(box), 0.5 * cdl_bounds3_diagonal(box),
                                              w->active);
@@ -173,6 +184,16 @@ int cdl_direct_edge_point(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n,
     dir = len > 1e-6 ? cdl_vec3_scale(dir, 1.0 / len) : n;
     *at = cdl_vec3_madd(p, EDGE_MOVE_RESOLUTIONS * resolution, dir);
     return e.ambiguous > 0;
+}
+
+/* Does any surface come within the edge probe's reach of the box? */
+static int chunk_near_surface(const cdl_direct_context *ctx, cdl_bounds3 box)
+{
+    if (!ctx->occluders || !ctx->rays) return 0;
+    double half = EDGE_BOX_RESOLUTIONS * fmax(cdl_ray_scene_resolution(ctx->rays, box.lo),
+                                              cdl_ray_scene_resolution(ctx->rays, box.hi));
+    cdl_vec3 h = cdl_vec3_make(half, half, half);
+    return cdl_occluder_index_surface_in_box(ctx->occluders, cdl_vec3_sub(box.lo, h), cdl_vec3_add(box.hi, h));
 }
 
 size_t cdl_direct_find_edge_points(const cdl_direct_context *ctx, const cdl_grid *grid, size_t *first)

@@ -163,6 +163,8 @@ typedef struct double_query {
     double t_near, t_far;
     cdl_vec3 end;                       /* origin + t_far dir when t_far is finite */
     int has_end;
+    double margin, back;                /* the float margin (m) and the pull-back (units of |dir|) */
+    int want_t;                         /* intersect: every hit's t in double */
     double best_t;                      /* closest accepted hit (intersect) */
     uint32_t best_geom, best_prim;
 } double_query;
@@ -265,7 +267,25 @@ static void filter_double(const struct RTCFilterFunctionNArguments *args)
     const pending_geometry *g = args->geometryUserPtr;
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
+        const float *h = (const float *)args->hit;
         uint32_t prim = ((const unsigned *)args->hit)[5 * args->N + i];
+        if (!q->want_t && !g->is_sphere) {
+            /* Clear of both ends: Embree's own answer stands. The hit is
+             * 2 margins along the normal from where the ray starts and ends
+             * (Embree's float t counts from the pulled-back start), far
+             * beyond Embree's few-ulp errors, so neither end lies on the
+             * plane; and 1e-3 inside the triangle, far beyond the float
+             * error of its barycentrics. */
+            float u = h[3 * args->N + i], v = h[4 * args->N + i];
+            float nx = h[i], ny = h[args->N + i], nz = h[2 * args->N + i];
+            double tf = ((const float *)args->ray)[8 * args->N + i];
+            double n_len = sqrt((double)nx * nx + (double)ny * ny + (double)nz * nz);
+            double cos_n = n_len > 0.0 ? fabs(nx * q->dir.x + ny * q->dir.y + nz * q->dir.z) / n_len : 0.0;
+            double from_start = (tf - q->back) * cos_n, to_end = (q->t_far - q->t_near + q->back - tf) * cos_n;
+            if (from_start > 2.0 * q->margin && to_end > 2.0 * q->margin && u > 1e-3f && v > 1e-3f &&
+                u + v < 1.0f - 1e-3f)
+                continue;
+        }
         double t = hit_double(g, prim, q);
         if (t < 0.0) {
             args->valid[i] = 0;
@@ -367,6 +387,9 @@ static void start_query(double_query *q, struct RTCRay *ray, const cdl_ray_scene
     if (q->has_end) margin = fmax(margin, FLOAT_MARGIN_ULPS * cdl_ray_scene_resolution(s, q->end));
     double dir_len = cdl_vec3_length(dir);
     double back = dir_len > 0.0 ? margin / dir_len : 0.0; /* in units of |dir| */
+    q->margin = margin;
+    q->back = back;
+    q->want_t = 0;
     double start = t_near - back;
     cdl_vec3 o = cdl_vec3_sub(cdl_vec3_madd(origin, start, dir), s->offset);
     ray->org_x = (float)o.x;
@@ -401,6 +424,7 @@ int cdl_ray_scene_intersect(const cdl_ray_scene *s, cdl_vec3 origin, cdl_vec3 di
     double_query q;
     struct RTCRayHit rh;
     start_query(&q, &rh.ray, s, origin, dir, t_near, t_far);
+    q.want_t = 1;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(s->scene, &q.context, &rh);
