@@ -263,12 +263,13 @@ static void check_against_rays(const cdl_scene *scene, const cdl_solution *sol)
                     hi += d.E.lx;
                     continue;
                 }
-                /* Blocked for sure: a hit more than 3 region tolerances (30 ray
-                 * epsilons) from both ends of the segment. */
+                /* Blocked for sure: a hit more than 16 float resolutions from
+                 * both ends of the segment (an edge point is evaluated 8 of
+                 * them off the point, direct_grid.c). */
                 cdl_ray_hit hit;
-                double near = 30.0 * cdl_scene_geometry_ray_epsilon(geometry, p);
+                double near = 16.0 * cdl_scene_geometry_resolution(geometry, p);
                 double far = isfinite(d.distance)
-                                 ? 30.0 * cdl_scene_geometry_ray_epsilon(geometry, cdl_vec3_madd(p, d.distance, d.to_light))
+                                 ? 16.0 * cdl_scene_geometry_resolution(geometry, cdl_vec3_madd(p, d.distance, d.to_light))
                                  : 0.0;
                 int blocked = cdl_scene_geometry_intersect(geometry, p, n, d.to_light, d.distance, &hit) &&
                               hit.t > near && d.distance - hit.t > far;
