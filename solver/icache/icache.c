@@ -268,6 +268,24 @@ static void set_radius(const reach_limits *l, cdl_icache_records *recs, size_t i
     r->radius = fmin(0.5 * l->Rmax, fmax(0.5 * l->Rmin, R));
 }
 
+/* Gather records at grid points at[0 .. count - 1], give them radii in
+ * order and enter them in the tree. */
+static cdl_status add_records(const cdl_icache_context *ctx, const reach_limits *l, const cdl_grid *grid,
+                              size_t grid_index, const double *E_direct, const size_t *at, size_t count,
+                              cdl_icache_records *recs, cdl_record_octree *tree, unsigned char *has, lookup *lk,
+                              int threads, const cdl_progress_sink *progress, const char *stage,
+                              cdl_icache_stats *stats, cdl_error *err)
+{
+    size_t first = recs->count;
+    cdl_status st = gather(ctx, grid, grid_index, E_direct, at, count, recs, threads, progress, stage, stats, err);
+    for (size_t c = 0; st == CDL_OK && c < count; ++c) has[at[c]] = 1;
+    for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
+        set_radius(l, recs, id, tree, lk);
+        st = cdl_record_octree_insert(tree, (uint32_t)id, recs->items[id].p, record_reach(l, &recs->items[id]), err);
+    }
+    return st;
+}
+
 /* ---- a grid --------------------------------------------------------------------- */
 
 typedef struct point_job {
@@ -279,6 +297,7 @@ typedef struct point_job {
     const double *E_direct, *var_direct;
     double floor;             /* least R of any point: 1e-3 of the grid's brightest direct light */
     int final;                /* 1: write E and var; 0: flag points that need a record */
+    int sweep;                /* with final 0: flag only the points no record serves */
     double *E, *var;
     double *ask;              /* per point: the separation a new record there keeps, or 0 */
 } point_job;
@@ -295,6 +314,11 @@ static cdl_status visit_points(void *shared, void *local, size_t begin, size_t e
         if (job->final) {
             job->E[i] = it.E;
             job->var[i] = it.var;
+            continue;
+        }
+        if (job->sweep) {
+            /* every such point gets its own record: no separation */
+            job->ask[i] = it.used == 0 ? 1e-300 : 0.0;
             continue;
         }
         double R = fmax(job->E_direct[i] + it.E, job->floor);
@@ -382,40 +406,42 @@ cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *
     cdl_status st = (!at || !ask || !has) ? cdl_error_out_of_memory(err) : CDL_OK;
     if (st == CDL_OK) st = cdl_record_octree_create(box, &tree, err);
     int reuse = recs->count > 0;
-    size_t first = 0;
     if (st == CDL_OK && !reuse) {
         /* Seeds: every point farther than the largest reach from the seeds
          * before it (in index order). */
         for (size_t i = 0; i < grid->count; ++i) ask[i] = l.reach_max;
-        size_t count;
+        size_t count = 0;
         st = pick(grid, ask, has, box, &at, &count, err);
-        if (st == CDL_OK) st = gather(ctx, grid, grid_index, E_direct, at, count, recs, threads, progress, stage, stats, err);
-        for (size_t c = 0; st == CDL_OK && c < count; ++c) has[at[c]] = 1;
+        if (st == CDL_OK)
+            st = add_records(ctx, &l, grid, grid_index, E_direct, at, count, recs, tree, has, &lk, threads, progress,
+                             stage, stats, err);
     }
-    /* Records read from a file, or just gathered, get their radii in order
-     * and enter the tree. */
-    size_t done = 0;
-    for (; st == CDL_OK && done < recs->count; ++done) {
-        if (!reuse) set_radius(&l, recs, done, tree, &lk);
-        st = cdl_record_octree_insert(tree, (uint32_t)done, recs->items[done].p, record_reach(&l, &recs->items[done]),
-                                      err);
-    }
-    point_job job = {ctx, &l, recs, tree, grid, E_direct, var_direct, 1e-3 * brightest, 0, E_indirect,
+    /* Records read from a cache file keep the radii they were made with. */
+    for (size_t id = 0; st == CDL_OK && reuse && id < recs->count; ++id)
+        st = cdl_record_octree_insert(tree, (uint32_t)id, recs->items[id].p, record_reach(&l, &recs->items[id]), err);
+    point_job job = {ctx, &l, recs, tree, grid, E_direct, var_direct, 1e-3 * brightest, 0, 0, E_indirect,
                      var_indirect, ask};
     for (int pass = 1; st == CDL_OK && !reuse && pass <= MAX_PASSES; ++pass) {
-        first = recs->count;
         st = visit(&job, threads, progress, stage, recs->count, err);
         size_t count = 0;
         if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
         if (st != CDL_OK || count == 0) break;
         stats->passes = (size_t)pass;
-        st = gather(ctx, grid, grid_index, E_direct, at, count, recs, threads, progress, stage, stats, err);
-        for (size_t c = 0; st == CDL_OK && c < count; ++c) has[at[c]] = 1;
-        for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
-            set_radius(&l, recs, id, tree, &lk);
-            st = cdl_record_octree_insert(tree, (uint32_t)id, recs->items[id].p, record_reach(&l, &recs->items[id]),
-                                          err);
-        }
+        st = add_records(ctx, &l, grid, grid_index, E_direct, at, count, recs, tree, has, &lk, threads, progress, stage,
+                         stats, err);
+    }
+    /* No point may go unserved (it would read 0 +- 0): the passes take
+     * asking points apart from each other and may stop before every point
+     * is served; the sweep gives each point still unserved its own record. */
+    if (st == CDL_OK && !reuse) {
+        job.sweep = 1;
+        st = visit(&job, threads, progress, stage, recs->count, err);
+        job.sweep = 0;
+        size_t count = 0;
+        if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
+        if (st == CDL_OK && count > 0)
+            st = add_records(ctx, &l, grid, grid_index, E_direct, at, count, recs, tree, has, &lk, threads, progress,
+                             stage, stats, err);
     }
     if (st == CDL_OK) {
         job.final = 1;
