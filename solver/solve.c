@@ -250,7 +250,6 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     cdl_icache_context ic = {.path = pt.path, .target = target, .gradients = !opts.no_cache_gradients};
     cdl_icache_stats ic_stats;
     memset(&ic_stats, 0, sizeof ic_stats);
-    size_t cache_grids = 0;
     cJSON *inter_grids = cJSON_AddObjectToObject(cJSON_GetObjectItem(plan, "interreflection"), "grids");
     ctx.ao_samples = out->settings.ao_samples;
     ctx.seed = scene->settings.seed;
@@ -334,7 +333,6 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                                            &records[g], threads, &opts.progress, stage_name, &ic_stats, err);
                 cJSON_AddNumberToObject(gi, "records", (double)(ic_stats.records - before.records));
                 cJSON_AddNumberToObject(gi, "placement_passes", (double)ic_stats.passes);
-                ++cache_grids;
             } else {
                 uint64_t paths = pt_stats.paths;
                 st = cdl_pathtrace_solve_grid(&pt, &gs->grid, (size_t)grid_key(spec->name), gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,
@@ -385,7 +383,6 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         total.rays += all.rays + all.direct.rays;
         out->records = ic_stats.records;
     }
-    (void)cache_grids;
     out->rays = total.rays;
     out->plan_json = cJSON_PrintUnformatted(plan);
     if (!out->plan_json) {

@@ -106,7 +106,7 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
     out->reach = l->reach_max;
     size_t m = cdl_record_octree_lookup(tree, p, &lk->ids, &lk->capacity);
     if (m == (size_t)-1) return 0;
-    double W = 0.0, W2 = 0.0, sum = 0.0, noise = 0.0, noise_mean = 0.0, sum2 = 0.0, change2 = 0.0;
+    double W = 0.0, sum = 0.0, noise = 0.0, noise_mean = 0.0, sum2 = 0.0, change2 = 0.0;
     const cdl_scene_geometry *geometry = ctx->path.geometry;
     for (size_t c = 0; c < m; ++c) {
         const cdl_icache_record *r = &recs->items[lk->ids[c]];
@@ -126,7 +126,6 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
             change = cdl_vec3_dot(cdl_vec3_cross(r->n, n), r->grad_r) + cdl_vec3_dot(d, r->grad_t);
         double x = r->E + change;
         W += w;
-        W2 += w * w;
         sum += w * x;
         sum2 += w * x * x;
         noise += w * w * r->var;
@@ -147,7 +146,6 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
     else
         out->interp_var = change2 / W;
     out->var = noise / (W * W) + out->interp_var;
-    (void)W2;
     return 1;
 }
 
@@ -160,7 +158,7 @@ typedef struct gather_job {
     const double *E_direct;
     const size_t *at;         /* grid point of each new record */
     cdl_icache_record *out;   /* one per new record */
-    double *tails;            /* per new record: last, before_last, total (summed in record order after) */
+    cdl_path_tally *tallies;  /* per new record, of its reported gather (summed in record order after) */
 } gather_job;
 
 static cdl_status gather_records(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
@@ -175,10 +173,7 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
         /* Pilot: how variable are this record's paths. */
         cdl_rng_key key = {ctx->path.seed, cdl_rng_stream_id(stream, 0, 1)};
         cdl_icache_record pilot;
-        /* The floating-point tallies are kept per record (of its reported
-         * gather), so that their sums do not depend on the threads. */
-        double last = stats->last, before = stats->before_last, total = stats->total;
-        if (!cdl_icache_gather(&ctx->path, key, p, n, PILOT_M, PILOT_N, &pilot, stats))
+        if (!cdl_icache_gather(&ctx->path, key, p, n, PILOT_M, PILOT_N, &pilot, stats, NULL))
             return cdl_error_out_of_memory(err);
         /* The record's own variance: at most the point's whole (t R)^2,
          * R = E_dir + E_ind there. A point averages several records (their
@@ -194,17 +189,8 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
         double want = cdl_estimate_plan(&est, budget, PILOT_M * PILOT_N);
         int k = cdl_estimate_side_for(want, PILOT_M, MAX_SIDE);
         key.stream = cdl_rng_stream_id(stream, 1, 1);
-        stats->last = last;
-        stats->before_last = before;
-        stats->total = total;
-        if (!cdl_icache_gather(&ctx->path, key, p, n, k, 2 * k, &job->out[r], stats))
+        if (!cdl_icache_gather(&ctx->path, key, p, n, k, 2 * k, &job->out[r], stats, &job->tallies[r]))
             return cdl_error_out_of_memory(err);
-        job->tails[3 * r] = stats->last - last;
-        job->tails[3 * r + 1] = stats->before_last - before;
-        job->tails[3 * r + 2] = stats->total - total;
-        stats->last = last;
-        stats->before_last = before;
-        stats->total = total;
     }
     return CDL_OK;
 }
@@ -223,24 +209,20 @@ static cdl_status gather(const cdl_icache_context *ctx, const cdl_grid *grid, si
         recs->capacity = cap;
     }
     cdl_path_stats *locals = calloc((size_t)threads, sizeof *locals);
-    double *tails = calloc(3 * (count ? count : 1), sizeof *tails);
-    if (!locals || !tails) {
+    cdl_path_tally *tallies = calloc(count ? count : 1, sizeof *tallies);
+    if (!locals || !tallies) {
         free(locals);
-        free(tails);
+        free(tallies);
         return cdl_error_out_of_memory(err);
     }
-    gather_job job = {ctx, grid, grid_index, E_direct, at, recs->items + recs->count, tails};
+    gather_job job = {ctx, grid, grid_index, E_direct, at, recs->items + recs->count, tallies};
     cdl_pool_task task = {.count = count, .chunk = 1, .run = gather_records, .shared = &job, .locals = locals,
                           .local_size = sizeof *locals, .stage = stage, .records = recs->count};
     cdl_status st = cdl_pool_run(&task, threads, progress, err);
     for (int t = 0; t < threads; ++t) cdl_path_stats_add(&stats->paths, &locals[t]);
-    for (size_t r = 0; r < count; ++r) {
-        stats->paths.last += tails[3 * r];
-        stats->paths.before_last += tails[3 * r + 1];
-        stats->paths.total += tails[3 * r + 2];
-    }
+    cdl_path_stats_add_tallies(&stats->paths, tallies, count);
     free(locals);
-    free(tails);
+    free(tallies);
     if (st != CDL_OK) return st;
     recs->count += count;
     return CDL_OK;
