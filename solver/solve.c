@@ -51,20 +51,30 @@ static const char *first_reflector(const cdl_scene *scene, double *rho)
     return NULL;
 }
 
-/* Under "auto", the grids of at least this many points take the irradiance
- * cache, smaller ones path tracing. Measured (tools/bench, this machine):
- * on the Radiance peer's room (81 points, quality high) path tracing takes
- * 0.95 s, the cache more, since every record costs about two points' paths
- * and 81 points need tens of records; on the closed cube's 100 x 100 floor
- * the cache is many times faster (figures in bench_icache). The crossing
- * lies between a few hundred and a thousand points. */
-#define CDL_AUTO_CACHE_POINTS 1000
+/* Under "auto", a grid takes the irradiance cache when its point count
+ * times the target relative error is at least CDL_AUTO_CACHE_SCORE, else
+ * path tracing. Why a product: path tracing costs points / t^2; the cache
+ * costs records / t^2 (each record gathered to about a point's variance),
+ * and its records, spaced in proportion to sqrt t (icache.c), number about
+ * 1 / t over a grid's area, so the ratio goes as points t. Measured (user
+ * CPU seconds at equal RMS error against path tracing to 0.05 % or finer):
+ *  - the Radiance peer's room, 81 points, high (0.1 %): path tracing 0.3 s
+ *    for the cache's 0.14 % RMS, the cache 1.2 s (points t = 0.08);
+ *  - the office work plane, 60 points, normal (0.5 %): the cache 0.26 s for
+ *    0.41 % RMS, path tracing about 0.32 s (points t = 0.3); at 240 points
+ *    the cache 0.57 s, path tracing 2.3 s at its (smaller) stated error;
+ *  - the closed cube's 10 000 floor and 2500 wall points at normal: the
+ *    cache several times cheaper (bench_icache).
+ * The crossing lies near points t = 0.3 to 0.4. */
+#define CDL_AUTO_CACHE_SCORE 0.4
 
-/* The method that computes a grid's interreflection. */
-static cdl_method grid_method(cdl_method method, const cdl_grid *grid)
+/* The method that computes a grid's interreflection, and the point count
+ * times the target that chose it under "auto". */
+static cdl_method grid_method(cdl_method method, const cdl_grid *grid, double target, double *score)
 {
+    *score = (double)grid->count * target;
     if (method == CDL_METHOD_ICACHE || method == CDL_METHOD_PATHTRACE) return method;
-    return grid->count >= CDL_AUTO_CACHE_POINTS && grid->raster_width > 0 ? CDL_METHOD_ICACHE : CDL_METHOD_PATHTRACE;
+    return *score >= CDL_AUTO_CACHE_SCORE ? CDL_METHOD_ICACHE : CDL_METHOD_PATHTRACE;
 }
 
 /* The method, and whether interreflection is computed at all (*indirect),
@@ -95,8 +105,8 @@ static cdl_status choose_method(const cdl_scene *scene, cdl_method *method, int 
         *indirect = 1;
         snprintf(why, sizeof why,
                  "%s reflects %g %%: interreflected light to the target, each grid by the method cheaper for it "
-                 "(see grids: the irradiance cache for maps of %d points or more, path tracing below)",
-                 reflector, rho * 100.0, CDL_AUTO_CACHE_POINTS);
+                 "(see grids: the irradiance cache where points x target error >= %g, path tracing below)",
+                 reflector, rho * 100.0, CDL_AUTO_CACHE_SCORE);
         break;
     case CDL_METHOD_PATHTRACE:
         *indirect = reflector != NULL;
@@ -321,7 +331,9 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         }
         if (indirect) {
             /* gs->E holds the indirect part's variance until added. */
-            cdl_method gm = grid_method(scene->settings.method, &gs->grid);
+            double score;
+            cdl_method gm = grid_method(scene->settings.method, &gs->grid, cdl_solver_settings_target(&scene->settings),
+                                        &score);
             snprintf(stage_name, sizeof stage_name, "grid %s: interreflection (%s)", spec->name,
                      gm == CDL_METHOD_ICACHE ? "records" : "paths");
             tc = cdl_pool_now_seconds();
@@ -339,10 +351,15 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                                               threads, &opts.progress, stage_name, &pt_stats, err);
                 cJSON_AddNumberToObject(gi, "paths", (double)(pt_stats.paths - paths));
             }
-            if (scene->settings.method == CDL_METHOD_AUTO)
-                cJSON_AddStringToObject(gi, "why", gm == CDL_METHOD_ICACHE
-                                                       ? "a dense map: records interpolated cost less than paths per point"
-                                                       : "few points: paths per point cost less than gathering records");
+            if (scene->settings.method == CDL_METHOD_AUTO) {
+                char why[200];
+                snprintf(why, sizeof why,
+                         gm == CDL_METHOD_ICACHE
+                             ? "%zu points x target %g = %.3g >= %g: records interpolated cost less than paths per point"
+                             : "%zu points x target %g = %.3g < %g: paths per point cost less than gathering records",
+                         gs->grid.count, cdl_solver_settings_target(&scene->settings), score, CDL_AUTO_CACHE_SCORE);
+                cJSON_AddStringToObject(gi, "why", why);
+            }
             out->compute_seconds += cdl_pool_now_seconds() - tc;
             if (st != CDL_OK) goto fail;
         }

@@ -4,11 +4,11 @@
  * grid, and computes (in memory, solution.h); output/solution_write.h writes
  * the files of DESIGN.md.
  *
- * Methods: "direct" computes direct light only; "auto" picks the cheapest
- * method that gives the whole answer for the quality asked, which is
- * "direct" when nothing in the scene reflects light. A scene that needs a
- * method not built yet (interreflection: the irradiance cache or the path
- * tracer) is refused with a message, never solved with less.
+ * Methods: "direct" computes direct light only; "pathtrace" adds
+ * interreflected light by paths from every point, "icache" by an
+ * irradiance cache; "auto" picks, per grid, the cheapest method that gives
+ * the whole answer for the target asked, which is "direct" when nothing in
+ * the scene reflects light.
  */
 #ifndef CANDELA_SOLVER_SOLVE_H
 #define CANDELA_SOLVER_SOLVE_H
