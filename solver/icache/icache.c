@@ -107,7 +107,15 @@ static double grid_spacing(const cdl_grid *g)
 typedef struct lookup {
     uint32_t *ids;
     size_t capacity;
+    double *w;                /* the weights of the records that serve a point (0: rejected) */
+    size_t w_capacity;
 } lookup;
+
+static void lookup_release(lookup *lk)
+{
+    free(lk->ids);
+    free(lk->w);
+}
 
 typedef struct interpolation {
     double E, var;            /* the interpolated E_ind and its stated variance */
@@ -124,7 +132,14 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
     out->reach = l->reach_max;
     size_t m = cdl_record_octree_lookup(tree, p, &lk->ids, &lk->capacity);
     if (m == (size_t)-1) return 0;
+    if (m > lk->w_capacity) {
+        double *grown = realloc(lk->w, m * sizeof *grown);
+        if (!grown) return 0;
+        lk->w = grown;
+        lk->w_capacity = m;
+    }
     double W = 0.0, sum = 0.0, noise = 0.0, noise_mean = 0.0, sum2 = 0.0, change2 = 0.0;
+    cdl_vec3 gbar = cdl_vec3_make(0, 0, 0);
     const cdl_scene_geometry *geometry = ctx->path.geometry;
     for (size_t c = 0; c < m; ++c) {
         const cdl_icache_record *r = &recs->items[lk->ids[c]];
@@ -133,6 +148,7 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
         double dist = cdl_vec3_length(d);
         double e = fmax(dist / (reach / l->a), sqrt(fmax(0.0, 1.0 - cdl_vec3_dot(n, r->n))) / NORMAL_SPREAD);
         double w = 1.0 - l->kappa * e;
+        lk->w[c] = 0.0;
         if (!(w > 0.0)) continue;
         /* Behind test: p may not lie behind the record's tangent plane
          * (averaged with its own), beyond 1 % of the record's reach. */
@@ -143,6 +159,8 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
         if (ctx->gradients)
             change = cdl_vec3_dot(cdl_vec3_cross(r->n, n), r->grad_r) + cdl_vec3_dot(d, r->grad_t);
         double x = r->E + change;
+        lk->w[c] = w;
+        gbar = cdl_vec3_add(gbar, cdl_vec3_scale(r->grad_t, w));
         W += w;
         sum += w * x;
         sum2 += w * x * x;
@@ -163,6 +181,25 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
         out->interp_var = fmax(0.0, spread - noise_mean / W);
     else
         out->interp_var = change2 / W;
+    /* What extrapolating along each record's own gradient leaves out: the
+     * second-order term 1/2 (p - p_i)^T H (p - p_i), H the Hessian of E.
+     * Along the segment the gradient changes from g_i to about g(p), so the
+     * term is about 1/2 (g(p) - g_i) . (p - p_i) (the trapezoid rule, exact
+     * for a quadratic E), g(p) taken as the records' weighted mean
+     * gradient. Records all around a minimum or maximum of E (the middle of
+     * a room under a downlight) err the same way and agree with each other,
+     * so their spread cannot show this: it is added as a bias of its own. */
+    if (ctx->gradients) {
+        gbar = cdl_vec3_scale(gbar, 1.0 / W);
+        double second = 0.0;
+        for (size_t c = 0; c < m; ++c) {
+            if (!(lk->w[c] > 0.0)) continue;
+            const cdl_icache_record *r = &recs->items[lk->ids[c]];
+            second += lk->w[c] * 0.5 * cdl_vec3_dot(cdl_vec3_sub(gbar, r->grad_t), cdl_vec3_sub(p, r->p));
+        }
+        second /= W;
+        out->interp_var += second * second;
+    }
     out->var = noise / (W * W) + out->interp_var;
     return 1;
 }
@@ -337,7 +374,7 @@ static cdl_status visit(point_job *job, int threads, const cdl_progress_sink *pr
     cdl_pool_task task = {.count = job->grid->count, .chunk = 16, .run = visit_points, .shared = job,
                           .locals = locals, .local_size = sizeof *locals, .stage = stage, .records = records};
     cdl_status st = cdl_pool_run(&task, threads, progress, err);
-    for (int t = 0; t < threads; ++t) free(locals[t].ids);
+    for (int t = 0; t < threads; ++t) lookup_release(&locals[t]);
     free(locals);
     return st;
 }
@@ -351,7 +388,7 @@ static cdl_status pick(const cdl_grid *grid, const double *ask, const unsigned c
     cdl_record_octree *picked;
     cdl_status st = cdl_record_octree_create(box, &picked, err);
     if (st != CDL_OK) return st;
-    lookup lk = {NULL, 0};
+    lookup lk = {NULL, 0, NULL, 0};
     for (size_t i = 0; i < grid->count && st == CDL_OK; ++i) {
         if (!(ask[i] > 0.0) || has[i]) continue;
         size_t m = cdl_record_octree_lookup(picked, grid->points[i], &lk.ids, &lk.capacity);
@@ -369,7 +406,7 @@ static cdl_status pick(const cdl_grid *grid, const double *ask, const unsigned c
         st = cdl_record_octree_insert(picked, (uint32_t)*count, grid->points[i], ask[i], err);
         ++*count;
     }
-    free(lk.ids);
+    lookup_release(&lk);
     cdl_record_octree_release(picked);
     return st;
 }
@@ -399,7 +436,7 @@ cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *
     size_t *at = malloc(grid->count * sizeof *at);
     double *ask = calloc(grid->count, sizeof *ask);
     unsigned char *has = calloc(grid->count, 1);
-    lookup lk = {NULL, 0};
+    lookup lk = {NULL, 0, NULL, 0};
     cdl_status st = (!at || !ask || !has) ? cdl_error_out_of_memory(err) : CDL_OK;
     if (st == CDL_OK) st = cdl_record_octree_create(box, &tree, err);
     int reuse = recs->count > 0;
@@ -445,7 +482,7 @@ cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *
         st = visit(&job, threads, progress, stage, recs->count, err);
     }
     stats->records += recs->count;
-    free(lk.ids);
+    lookup_release(&lk);
     free(at);
     free(ask);
     free(has);
