@@ -306,13 +306,20 @@ static cdl_status read_key(reader *r, cdl_icache_key *key)
     return CDL_OK;
 }
 
-/* A record's values must be such as a gather makes. */
-static int record_is_valid(const double v[RECORD_DOUBLES])
+/* A record's values must be such as a gather makes: what is wrong with
+ * them, or NULL. */
+static const char *record_fault(const double v[RECORD_DOUBLES])
 {
+    static const char *const names[RECORD_DOUBLES] = {"p.x", "p.y", "p.z", "n.x", "n.y", "n.z", "E", "var", "radius",
+                                                      "grad_r.x", "grad_r.y", "grad_r.z", "grad_t.x", "grad_t.y",
+                                                      "grad_t.z", "open", "harmonic"};
     for (int k = 0; k < RECORD_DOUBLES - 1; ++k)
-        if (!isfinite(v[k])) return 0;
-    double var = v[7], radius = v[8], open = v[15], harmonic = v[16];
-    return var >= 0.0 && radius > 0.0 && open >= 0.0 && open <= 1.0 && harmonic > 0.0; /* harmonic may be +inf */
+        if (!isfinite(v[k])) return names[k];
+    if (!(v[16] > 0.0)) return "harmonic (expected > 0, or +infinity)";
+    if (!(v[7] >= 0.0)) return "var (expected a variance >= 0)";
+    if (!(v[8] > 0.0)) return "radius (expected > 0)";
+    if (!(v[15] <= 1.0 && v[15] >= 0.0)) return "open (expected a fraction in [0, 1])";
+    return NULL;
 }
 
 static cdl_status read_grid(reader *r, size_t g, cdl_icache_file_grid *fg)
@@ -345,9 +352,12 @@ static cdl_status read_grid(reader *r, size_t g, cdl_icache_file_grid *fg)
         double v[RECORD_DOUBLES];
         for (int k = 0; k < RECORD_DOUBLES; ++k)
             if (!get_f64(r, "a record", &v[k])) return r->err->status;
-        if (!record_is_valid(v))
-            return invalid(r, "damaged: grid '%s' record %zu: expected finite values, variance >= 0, radius > 0, "
-                           "open fraction in [0, 1]", fg->name, i);
+        const char *fault = record_fault(v);
+        if (fault) {
+            int finite = strchr(fault, ' ') != NULL;
+            return invalid(r, "damaged: grid '%s' record %zu: %s%s", fg->name, i, finite ? "" : "a value that is not "
+                           "finite: ", fault);
+        }
         record_from_values(v, &fg->records.items[i]);
         fg->records.count = i + 1;
     }
