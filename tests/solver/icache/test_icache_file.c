@@ -325,30 +325,22 @@ static void expect_refusal(const char *cache, const variant *v, const char *what
 
 static void test_stale(const char *cache, const char *dir)
 {
-    variant v = base;
-    v.rho = 0.55;
-    expect_refusal(cache, &v, "reflectance", "changed since: the reflectances");
-    v = base;
-    v.intensity = 1001.0;
-    expect_refusal(cache, &v, "light", "changed since: the lights");
-    v = base;
-    v.box_top = 3.1;
-    expect_refusal(cache, &v, "geometry", "changed since: the surfaces' geometry");
-    v = base;
-    v.target = 0.03;
-    expect_refusal(cache, &v, "target_error", "target_error 0.02 in the cache, 0.03 now");
-    v = base;
-    v.seed = 7;
-    expect_refusal(cache, &v, "seed", "seed 1 in the cache, 7 now");
-    v = base;
-    v.floor_x = 0.1000001;
-    expect_refusal(cache, &v, "grid point", "grid 'floor' changed: its points");
-    v = base;
-    v.extra = 1;
-    expect_refusal(cache, &v, "grid added", "grid 'desk' is not in the irradiance cache");
-    v = base;
-    v.wall = 0;
-    expect_refusal(cache, &v, "grid removed", "holds grid 'wall'");
+    /* rho, intensity, target, floor_x, box_top, seed, wall, extra */
+    static const struct {
+        const char *what, *word;
+        variant v;
+    } cases[] = {
+        {"reflectance", "changed since: the reflectances", {0.55, 1000.0, 0.02, 0.1, 3.0, 1, 1, 0}},
+        {"light", "changed since: the lights", {0.5, 1001.0, 0.02, 0.1, 3.0, 1, 1, 0}},
+        {"geometry", "changed since: the surfaces' geometry", {0.5, 1000.0, 0.02, 0.1, 3.1, 1, 1, 0}},
+        {"target_error", "target_error 0.02 in the cache, 0.03 now", {0.5, 1000.0, 0.03, 0.1, 3.0, 1, 1, 0}},
+        {"seed", "seed 1 in the cache, 7 now", {0.5, 1000.0, 0.02, 0.1, 3.0, 7, 1, 0}},
+        {"grid point", "grid 'floor' changed: its points", {0.5, 1000.0, 0.02, 0.1000001, 3.0, 1, 1, 0}},
+        {"grid added", "grid 'desk' is not in the irradiance cache", {0.5, 1000.0, 0.02, 0.1, 3.0, 1, 1, 1}},
+        {"grid removed", "holds grid 'wall'", {0.5, 1000.0, 0.02, 0.1, 3.0, 1, 0, 0}},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; ++c)
+        expect_refusal(cache, &cases[c].v, cases[c].what, cases[c].word);
 
     /* Another Candela version. */
     cdl_icache_file f;
