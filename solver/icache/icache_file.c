@@ -105,7 +105,8 @@ cdl_status cdl_icache_file_encode(const cdl_icache_key *key, const cdl_icache_fi
         if (m == 0 || m > CDL_ICACHE_FILE_NAME_MAX)
             return cdl_error_set(err, CDL_ERR_INPUT, "grid '%.64s': expected a name of 1 to %d bytes for the "
                                  "irradiance cache file, found %zu", grids[g].name, CDL_ICACHE_FILE_NAME_MAX, m);
-        if (grids[g].records.count > (SIZE_MAX - total) / RECORD_BYTES - GRID_BYTES - m)
+        /* no size_t overflow: each term stays below a quarter of its range */
+        if (total > SIZE_MAX / 4 || grids[g].records.count > SIZE_MAX / 4 / RECORD_BYTES)
             return cdl_error_out_of_memory(err);
         total += GRID_BYTES + m + grids[g].records.count * RECORD_BYTES;
     }

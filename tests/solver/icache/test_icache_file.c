@@ -145,9 +145,11 @@ static void check_same_file(const cdl_icache_file *x, const cdl_icache_file *y)
 static void test_round_trip(const char *cache, const char *dir)
 {
     cdl_error err;
+    cdl_error_clear(&err); /* calls set it only when they fail */
     cdl_icache_file f;
     int found = 0;
     CHECK_OK(cdl_icache_file_load(cache, &found, &f, &err), &err);
+    CHECK(found);
     if (!found || err.status != CDL_OK) return;
     CHECK(strcmp(f.key.version, CANDELA_VERSION) == 0);
     CHECK(f.grid_count == 2 && f.key.settings.target == 0.02 && f.key.settings.seed == 1);
@@ -346,6 +348,7 @@ static void test_stale(const char *cache, const char *dir)
     cdl_icache_file f;
     int found = 0;
     cdl_error err;
+    cdl_error_clear(&err); /* calls set it only when they fail */
     CHECK_OK(cdl_icache_file_load(cache, &found, &f, &err), &err);
     if (err.status != CDL_OK) return;
     snprintf(f.key.version, sizeof f.key.version, "0.0.9");
