@@ -34,9 +34,18 @@ typedef struct cdl_solve_options {
                                        * default 0 */
     int no_cache_gradients;           /* 1: the irradiance cache interpolates without its records' gradients
                                          (to measure what they buy) */
+    /* A file of irradiance-cache records (icache/icache_file.h), NULL for
+     * none (the default). When it exists it must have been made for this
+     * scene, these settings and this Candela: its records are then used and
+     * none is gathered; otherwise the solve is refused (CDL_ERR_INPUT,
+     * naming the file and what differs) before any grid is computed. When
+     * it does not exist, the records are gathered and the file written
+     * (atomically) after the solve succeeds; its folder must exist. */
+    const char *cache_path;
 } cdl_solve_options;
-#define CDL_SOLVE_OPTIONS_DEFAULT \
-    {.threads = -1, .progress = {.fn = NULL, .user = NULL}, .ray_log = NULL, .no_exact_route = 0, .no_cache_gradients = 0}
+#define CDL_SOLVE_OPTIONS_DEFAULT                                                                                     \
+    {.threads = -1, .progress = {.fn = NULL, .user = NULL}, .ray_log = NULL, .no_exact_route = 0,                    \
+     .no_cache_gradients = 0, .cache_path = NULL}
 
 cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *options, cdl_solution *out,
                            cdl_error *err);

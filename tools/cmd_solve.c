@@ -47,6 +47,16 @@ static void print_help(FILE *out)
           "  --ocio CONFIG         OpenColorIO config for the PNG maps (default: the\n"
           "                        one in Candela's data/ocio; needs display \"sRGB\"\n"
           "                        with view \"False colour\")\n"
+          "  --cache FILE          irradiance-cache records: when FILE exists, use its\n"
+          "                        records instead of gathering them, provided it was\n"
+          "                        made for this scene (geometry, reflectances, lights\n"
+          "                        and their files, the grids' points), these settings\n"
+          "                        (method, target error, bounces, seed, direct_samples)\n"
+          "                        and this Candela version; else refuse (exit 1, naming\n"
+          "                        what differs: remove FILE to start anew). When FILE\n"
+          "                        does not exist, gather the records and write them to\n"
+          "                        FILE (atomically) after the solve. --threads, -o and\n"
+          "                        --ocio do not matter. summary.json: plan.cache.reused\n"
           "  --quiet               no progress on stderr\n"
           "\n"
           "exit status: 0 success, 1 bad scene, input file or output folder (not a\n"
@@ -92,6 +102,7 @@ static int run(int argc, char **argv)
         {"threads", 0, 1, 0, NULL},
         {"ocio", 0, 1, 0, NULL},
         {"quiet", 'q', 0, 0, NULL},
+        {"cache", 0, 1, 0, NULL},
     };
     const size_t nopts = sizeof opts / sizeof opts[0];
     cdl_cli_result args;
@@ -122,6 +133,15 @@ static int run(int argc, char **argv)
             return CDL_EXIT_USAGE;
         }
         so.threads = (int)t;
+    }
+    cdl_cli_option *cache = cdl_cli_find(opts, nopts, "cache");
+    if (cache->present) {
+        if (!cache->value[0]) {
+            fprintf(stderr, "candela solve: --cache: expected a file name, found an empty string\n"
+                            "(see 'candela solve --help')\n");
+            return CDL_EXIT_USAGE;
+        }
+        so.cache_path = cache->value;
     }
     progress_state shown = {-1.0, NULL};
     if (!cdl_cli_find(opts, nopts, "quiet")->present && isatty(STDERR_FILENO)) {
@@ -175,6 +195,9 @@ static int run(int argc, char **argv)
             }
             printf("method %s, %.3f s, %llu rays; results in %s\n", cdl_method_name(sol.method), sol.seconds,
                    (unsigned long long)sol.rays, out_opt->value);
+            if (so.cache_path)
+                printf("irradiance cache %s: %s\n", so.cache_path,
+                       sol.cache_reused ? "records read from it, none gathered" : "records gathered and written to it");
         }
         cdl_solution_release(&sol);
     }
