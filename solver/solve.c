@@ -240,8 +240,11 @@ static cdl_status cache_open(const cdl_scene *scene, const cdl_scene_lights *lig
     if (st != CDL_OK) return st;
     cache->grids = malloc((scene->grid_count ? scene->grid_count : 1) * sizeof *cache->grids);
     if (!cache->grids) return cdl_error_out_of_memory(err);
+    double score;
     for (size_t g = 0; indirect && g < scene->grid_count; ++g)
-        if (grid_method(scene->settings.method, &out->grids[g].grid) == CDL_METHOD_ICACHE) cache->grids[cache->count++] = g;
+        if (grid_method(scene->settings.method, &out->grids[g].grid, cdl_solver_settings_target(&scene->settings),
+                        &score) == CDL_METHOD_ICACHE)
+            cache->grids[cache->count++] = g;
 
     int found = 0;
     cdl_icache_file file;
