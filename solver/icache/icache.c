@@ -181,14 +181,19 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
         out->interp_var = fmax(0.0, spread - noise_mean / W);
     else
         out->interp_var = change2 / W;
-    /* What extrapolating along each record's own gradient leaves out: the
+    /* Extrapolating along each record's own gradient leaves out the
      * second-order term 1/2 (p - p_i)^T H (p - p_i), H the Hessian of E.
      * Along the segment the gradient changes from g_i to about g(p), so the
-     * term is about 1/2 (g(p) - g_i) . (p - p_i) (the trapezoid rule, exact
-     * for a quadratic E), g(p) taken as the records' weighted mean
-     * gradient. Records all around a minimum or maximum of E (the middle of
-     * a room under a downlight) err the same way and agree with each other,
-     * so their spread cannot show this: it is added as a bias of its own. */
+     * change is better (p - p_i) . (g_i + g(p)) / 2 (the trapezoid rule,
+     * exact for a quadratic E), g(p) taken as the records' weighted mean
+     * gradient: each record adds 1/2 (g(p) - g_i) . (p - p_i) to the
+     * extrapolation of Ward and Heckbert. Records all round a minimum of E
+     * (the middle of a room under a downlight) otherwise err the same way,
+     * agree with each other, and their spread cannot show it. Measured, the
+     * Radiance peer's room at high (81 points, against path tracing to
+     * 0.02 %): 0.132 % RMS error, all the worst points low, mean error -1.1
+     * stated sigma; with the term 0.051 %, mean -0.34 sigma, 96 % within 2.
+     * The closed cube (2500 floor points, normal): 0.33 % -> 0.28 %. */
     if (ctx->gradients) {
         gbar = cdl_vec3_scale(gbar, 1.0 / W);
         double second = 0.0;
@@ -197,8 +202,7 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
             const cdl_icache_record *r = &recs->items[lk->ids[c]];
             second += lk->w[c] * 0.5 * cdl_vec3_dot(cdl_vec3_sub(gbar, r->grad_t), cdl_vec3_sub(p, r->p));
         }
-        second /= W;
-        out->interp_var += second * second;
+        out->E = fmax(0.0, out->E + second / W); /* never below no light */
     }
     out->var = noise / (W * W) + out->interp_var;
     return 1;
