@@ -42,6 +42,23 @@ static void test_thin_wall(void)
     fixture_release(scene, &sol);
 }
 
+/* The scene fmt (method, target_error and seed to fill in) by the cache
+ * to ic_target (seed 1) and by path tracing to pt_target (seed 2); 0 when
+ * either failed (and nothing to release). */
+static int solve_both(const char *fmt, double ic_target, double pt_target, cdl_scene **s_ic, cdl_solution *ic,
+                      cdl_scene **s_pt, cdl_solution *pt)
+{
+    char json[1024];
+    snprintf(json, sizeof json, fmt, "icache", ic_target, 1);
+    if (!fixture_solve(json, s_ic, ic, 2)) return 0;
+    snprintf(json, sizeof json, fmt, "pathtrace", pt_target, 2);
+    if (!fixture_solve(json, s_pt, pt, 2)) {
+        fixture_release(*s_ic, ic);
+        return 0;
+    }
+    return 1;
+}
+
 /* A 4 x 4 x 3 m room with a table (1.6 x 1.6 m top at 0.75 m, two-sided)
  * under a point light: the floor under the table gets interreflected light
  * only from the walls, far less than around it; a leak would pull it
@@ -60,16 +77,9 @@ static void test_table_top(void)
         " \"luminaires\": [{\"type\": \"point\", \"position\": [2,2,2.6], \"flux_lm\": 5000}],"
         " \"grids\": [{\"name\": \"floor\", \"type\": \"rect\", \"origin\": [0.5,0.5,0], \"u\": [3,0,0], "
         "\"v\": [0,3,0], \"nu\": 20, \"nv\": 20}], \"solver\": {\"method\": \"%s\", \"target_error\": %g, \"seed\": %d}}";
-    char json[1024];
     cdl_scene *s_ic, *s_pt;
     cdl_solution ic, pt;
-    snprintf(json, sizeof json, fmt, "icache", 0.01, 1);
-    if (!fixture_solve(json, &s_ic, &ic, 2)) return;
-    snprintf(json, sizeof json, fmt, "pathtrace", 0.008, 2);
-    if (!fixture_solve(json, &s_pt, &pt, 2)) {
-        fixture_release(s_ic, &ic);
-        return;
-    }
+    if (!solve_both(fmt, 0.01, 0.008, &s_ic, &ic, &s_pt, &pt)) return;
     const cdl_grid_solution *a = &ic.grids[0], *b = &pt.grids[0];
     double under = 0.0, around = 0.0;
     size_t nu = 0, na = 0;
@@ -197,16 +207,9 @@ static void test_downlight_room(void)
         "\"position\": [2,2,2.95], \"flux_lm\": 3000}],"
         " \"grids\": [{\"name\": \"work\", \"type\": \"rect\", \"origin\": [0.4,0.4,0.8], \"u\": [3.2,0,0], "
         "\"v\": [0,3.2,0], \"nu\": 9, \"nv\": 9}], \"solver\": {\"method\": \"%s\", \"target_error\": %g, \"seed\": %d}}";
-    char json[1024];
     cdl_scene *s_ic, *s_pt;
     cdl_solution ic, pt;
-    snprintf(json, sizeof json, fmt, "icache", 0.001, 1);
-    if (!fixture_solve(json, &s_ic, &ic, 2)) return;
-    snprintf(json, sizeof json, fmt, "pathtrace", 0.0003, 2);
-    if (!fixture_solve(json, &s_pt, &pt, 2)) {
-        fixture_release(s_ic, &ic);
-        return;
-    }
+    if (!solve_both(fmt, 0.001, 0.0003, &s_ic, &ic, &s_pt, &pt)) return;
     const cdl_grid_solution *a = &ic.grids[0], *b = &pt.grids[0];
     calibration tally = CALIBRATION_INIT;
     double sq = 0.0, ref_sq = 0.0;
