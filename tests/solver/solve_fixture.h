@@ -57,6 +57,16 @@ static inline void fixture_release(cdl_scene *scene, cdl_solution *sol)
     cdl_scene_release(scene);
 }
 
+/* The open white furnace (both GI methods' tests): three white (rho 1)
+ * two-sided plates under a uniform sky of 2000 cd/m2, E = pi L everywhere.
+ * The opening of a scene: grids and solver follow. */
+#define WHITE_FURNACE_SCENE                                                                                     \
+    "{\"version\": 1, \"surfaces\": ["                                                                         \
+    "{\"type\": \"rect\", \"origin\": [0,0,1], \"u\": [2,0,0], \"v\": [0,2,0], \"reflectance\": 1},"          \
+    "{\"type\": \"rect\", \"origin\": [0,0,1.5], \"u\": [2,0,0], \"v\": [0,2,0], \"reflectance\": 1},"        \
+    "{\"type\": \"rect\", \"origin\": [2,0,0], \"u\": [0,2,0], \"v\": [0,0,2], \"reflectance\": 1}],"         \
+    " \"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 2000}],"
+
 typedef struct calibration {
     size_t count, within1, within2;
     double worst;             /* largest |error| / sigma */

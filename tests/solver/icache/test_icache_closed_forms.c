@@ -107,11 +107,7 @@ static void test_white_furnace(void)
 {
     const double L = 2000.0;
     const char *json =
-        "{\"version\": 1, \"surfaces\": ["
-        "{\"type\": \"rect\", \"origin\": [0,0,1], \"u\": [2,0,0], \"v\": [0,2,0], \"reflectance\": 1},"
-        "{\"type\": \"rect\", \"origin\": [0,0,1.5], \"u\": [2,0,0], \"v\": [0,2,0], \"reflectance\": 1},"
-        "{\"type\": \"rect\", \"origin\": [2,0,0], \"u\": [0,2,0], \"v\": [0,0,2], \"reflectance\": 1}],"
-        " \"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 2000}],"
+        WHITE_FURNACE_SCENE
         " \"grids\": [{\"name\": \"between\", \"type\": \"rect\", \"origin\": [0.2,0.2,1.25], \"u\": [1.6,0,0], "
         "\"v\": [0,1.6,0], \"nu\": 8, \"nv\": 8},"
         " {\"name\": \"under\", \"type\": \"rect\", \"origin\": [0.2,0.2,1], \"u\": [0,1.6,0], \"v\": [1.6,0,0], "

@@ -122,11 +122,7 @@ static void test_white_furnace(void)
     /* Three white plates, two-sided, reflectance 1, under a uniform sky;
      * points in the open, between the plates and on them (both sides). */
     const char *json =
-        "{\"version\": 1, \"surfaces\": ["
-        "{\"type\": \"rect\", \"origin\": [0,0,1], \"u\": [2,0,0], \"v\": [0,2,0], \"reflectance\": 1},"
-        "{\"type\": \"rect\", \"origin\": [0,0,1.5], \"u\": [2,0,0], \"v\": [0,2,0], \"reflectance\": 1},"
-        "{\"type\": \"rect\", \"origin\": [2,0,0], \"u\": [0,2,0], \"v\": [0,0,2], \"reflectance\": 1}],"
-        " \"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 2000}],"
+        WHITE_FURNACE_SCENE
         " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": ["
         "{\"p\": [1,1,1.25], \"n\": [0,0,1]}, {\"p\": [1,1,1.25], \"n\": [0,0,-1]}, {\"p\": [1,1,1.25], \"n\": [1,0,0]},"
         "{\"p\": [1,1,1], \"n\": [0,0,1]}, {\"p\": [1,1,1], \"n\": [0,0,-1]}, {\"p\": [0.5,0.5,1.5], \"n\": [0,0,-1]},"
