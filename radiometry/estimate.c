@@ -69,3 +69,27 @@ int cdl_estimate_side_for(double samples, int k_min, int k_max)
     if (k > k_max) k = k_max;
     return (int)k;
 }
+
+double cdl_estimate_bound_variance(const cdl_estimate *e, double jump)
+{
+    if (!(e->samples > 0.0)) return 0.0;
+    /* Poisson posterior of the differing pairs (estimate.h): D + 1. */
+    return (e->var_num + jump * jump) / (e->samples * e->samples);
+}
+
+void cdl_estimate_allocate_samples(const double *variance, double *samples, int count, double pilot_samples,
+                                   double alpha, double target_variance, double least, double most)
+{
+    /* Lagrange: N_j = pilot s v_j^(1/(1+alpha)), s from the constraint
+     * sum v_j (pilot / N_j)^alpha = V (estimate.h). */
+    double e = 1.0 / (1.0 + alpha), sum = 0.0;
+    for (int j = 0; j < count; ++j)
+        if (variance[j] > 0.0) sum += pow(variance[j], e);
+    double s = target_variance > 0.0 ? pow(sum / target_variance, 1.0 / alpha) : INFINITY;
+    for (int j = 0; j < count; ++j) {
+        double n = variance[j] > 0.0 ? pilot_samples * s * pow(variance[j], e) : least;
+        if (!(n >= least)) n = least;
+        if (n > most) n = most;
+        samples[j] = n;
+    }
+}

@@ -76,6 +76,43 @@ double cdl_estimate_variance(const cdl_estimate *e);
  * (N + 1) / ((N + 2)^2 (N + 3)); times potential^2. */
 double cdl_estimate_unseen_variance(double samples, double potential);
 
+/* The variance of the mean with one phantom disagreeing pair added:
+ * (sum d^2 + jump^2) / N^2, `jump` the largest difference a stratum's two
+ * samples could show (for a visibility edge, the unoccluded value of a
+ * sample). Why: where the integrand is a step of height a (a light seen or
+ * hidden), a stratum straddling the edge with a fraction p on one side
+ * gives a differing pair with probability 2p(1 - p), and then d^2 = a^2;
+ * so sum d^2 = a^2 D, D the number of differing pairs, and the true
+ * Var(m) = a^2 mu / N^2 with mu = E[D] = sum_h 2 p_h (1 - p_h). When few
+ * strata straddle the edge, or each only by a sliver, mu is small and
+ * D = 0 is likely (P = e^-mu): the pair estimate says 0 although the mean
+ * may be off by several strata's worth. D is a sum of independent rare
+ * events, Poisson in mu; with a uniform prior on mu, the posterior after
+ * observing D is Gamma(D + 1, 1), of mean D + 1 (the same argument as the
+ * unseen fraction's Beta(1, N + 1) below). So the honest estimate is
+ * a^2 (D + 1) / N^2: the pair estimate plus one phantom pair, which costs
+ * nothing where many pairs differ (D >> 1) and is never near zero where
+ * the estimate could be far off. Over pooled rounds every pair carries the
+ * same weight 1 / N^2, so one phantom pair covers them all. */
+double cdl_estimate_bound_variance(const cdl_estimate *e, double jump);
+
+/* Samples for each of `count` estimates sampled together (the sampled
+ * lights of one point) so that the sum of their variances reaches
+ * `target_variance` with the fewest samples in all. Each was measured by a
+ * pilot of `pilot_samples` samples with variance of the mean variance[j],
+ * and is modelled as Var_j(N) = variance[j] (pilot_samples / N)^alpha
+ * (alpha = 1 for independent samples; stratified samples of a step fall
+ * faster, as N^-1.5). Minimising sum N_j subject to sum Var_j(N_j) = V by
+ * a Lagrange multiplier gives N_j proportional to variance[j]^(1/(1+alpha))
+ * (for alpha = 1, Neyman's allocation: proportional to the per-sample
+ * standard deviation; Cochran 1977, 5.5), scaled by
+ *     s = (sum_j variance[j]^(1/(1+alpha)) / V)^(1/alpha),
+ *     N_j = pilot_samples s variance[j]^(1/(1+alpha)).
+ * Each is then at least `least` and at most `most`; an estimate of
+ * variance 0 gets `least`. */
+void cdl_estimate_allocate_samples(const double *variance, double *samples, int count, double pilot_samples,
+                                   double alpha, double target_variance, double least, double most);
+
 /* Samples needed for the variance of the mean to reach `target_variance`,
  * from a pilot's variance per sample (Var = c / N), twice as many as that
  * says, for the pilot's own uncertainty (a 128-sample pilot of skewed path

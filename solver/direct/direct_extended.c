@@ -12,16 +12,25 @@
  * the hidden part alone. A light without a closed form is sampled plainly
  * (E = int f V). Samples come in rounds of k x k strata with two samples
  * each (radiometry/estimate.h), so that each round's variance has an
- * unbiased estimate.
+ * unbiased estimate; that estimate is raised by one phantom differing pair
+ * (cdl_estimate_bound_variance), since pairs that all agree say little
+ * about strata that straddle an edge by a sliver.
  *
  * A point's target: the variance of its direct illuminance (the sum over
  * its sampled lights) at most (t R)^2, t = ctx->target, R = max(E, floor):
- * E the point's direct illuminance so far (exact terms included), floor a
+ * E the point's direct illuminance (exact terms included), floor a
  * thousandth of what its sampled lights would give with nothing in the way
  * (a point almost wholly shadowed is held to an error relative to the light
- * it could have had, not to the nothing it has). Rounds go to the light
- * with the largest variance until the target holds or every light has had
- * CDL_DIRECT_MAX_SAMPLES samples; whatever is stated is then honest.
+ * it could have had, not to the nothing it has). Each sampled light first
+ * takes a pilot round that only plans: from the pilots' variances the
+ * point's samples are shared among its lights (cdl_estimate_allocate_
+ * samples) to meet the target with the fewest in all, at most
+ * CDL_DIRECT_MAX_SAMPLES a light; then each light takes that many in one
+ * stage, and only the stage is reported, whatever it shows. Stopping when
+ * a light's own rounds look quiet would bias both the value and its error
+ * (radiometry/estimate.h): a point that happened to miss the bright part
+ * stops early with a small stated error. Should the pilot have judged
+ * badly, the stated error is above the target and says so.
  *
  * A light whose samples were all hidden, or none, is not certain: what the
  * samples could have missed is the light's unhidden value times the
@@ -40,10 +49,13 @@
  * direct_samples may ask for more). 2^18 shadow rays take about 30 ms. */
 #define CDL_DIRECT_MAX_SAMPLES 262144.0
 
-/* Strata per side of a point's first round: 6 x 6 strata, 72 samples, so
- * that the first variance estimate (36 degrees of freedom) is sound enough
- * to stop on. */
-#define FIRST_SIDE 6
+/* Strata per side of a light's pilot round, and the least of a reported
+ * stage: 6 x 6 strata, 72 samples. */
+#define PILOT_SIDE 6
+
+/* How fast a stage's variance falls with its samples when planned from the
+ * pilot, Var ~ N^-alpha (cdl_estimate_allocate_samples). */
+#define PLAN_ALPHA 1.0
 
 /* How a light's contribution is formed at a point. */
 enum { TERM_EXACT, TERM_HIDDEN, TERM_PLAIN };
@@ -56,6 +68,8 @@ typedef struct term {
     double potential;        /* what the light gives with nothing in the way */
     cdl_estimate est;        /* of H (hidden) or of E (plain) */
     double carrying;         /* samples whose direction carries light at all */
+    double jump;             /* the largest unoccluded sample value: the step at a visibility edge */
+    uint64_t drawn;          /* samples drawn so far (pilot and stage), the next sample's index */
 } term;
 
 /* One round of k x k strata, two samples each, added to t->est. */
@@ -63,7 +77,7 @@ static void sample_round(const cdl_direct_context *ctx, term *t, int k, cdl_vec3
                          cdl_direct_sample_stats *stats)
 {
     cdl_rng_key key = {ctx->seed, t->stream};
-    uint64_t base = (uint64_t)t->est.samples;
+    uint64_t base = t->drawn;
     cdl_round round = {0.0, 0.0, 0.0, 0};
     double unoccluded = 0.0;
     for (int64_t j = 0; j < k; ++j)
@@ -82,12 +96,14 @@ static void sample_round(const cdl_direct_context *ctx, term *t, int k, cdl_vec3
                 double value = ls.L.cd_m2 * c / ls.pdf;
                 t->carrying += 1.0;
                 unoccluded += value;
+                t->jump = fmax(t->jump, value);
                 int hidden = ctx->geometry ? cdl_direct_shadowed(ctx, p, n, ls.to_light, ls.distance, stats) : 0;
                 if (t->mode == TERM_HIDDEN ? hidden : !hidden) f[s] = value;
             }
             cdl_round_add_pair(&round, f[0], f[1]);
         }
     cdl_estimate_add_round(&t->est, &round);
+    t->drawn += 2u * (uint64_t)k * (uint64_t)k;
     if (t->mode == TERM_PLAIN) {
         /* No closed form: the mean unoccluded sample stands for what the
          * light could give (pooled over rounds by sample count). */
@@ -109,7 +125,8 @@ static double term_value(const term *t)
 static double term_variance(const term *t)
 {
     if (t->mode == TERM_EXACT) return 0.0;
-    double v = cdl_estimate_variance(&t->est);
+    /* The pairs' variance plus one phantom differing pair (estimate.h). */
+    double v = cdl_estimate_bound_variance(&t->est, t->jump);
     /* Every sample hidden, or none (or, sampled plainly, none lit): the
      * samples could have missed the other kind. */
     int one_sided = t->mode == TERM_HIDDEN ? t->est.nonzero == 0 || (double)t->est.nonzero >= t->carrying
@@ -127,7 +144,8 @@ static void term_start(const cdl_direct_context *ctx, term *t, cdl_light_strateg
                        cdl_direct_sample_stats *stats)
 {
     cdl_illuminance exact;
-    t->exact = t->potential = t->carrying = 0.0;
+    t->exact = t->potential = t->carrying = t->jump = 0.0;
+    t->drawn = 0;
     t->est = (cdl_estimate){0.0, 0.0, 0.0, 0};
     if (st != CDL_STRATEGY_SAMPLED || cdl_emitter_has_exact_illuminance(t->light->emitter)) {
         if (cdl_emitter_exact_illuminance(t->light->emitter, p, n, &exact, NULL) == CDL_OK) {
@@ -153,8 +171,49 @@ static void term_start(const cdl_direct_context *ctx, term *t, cdl_light_strateg
     } else {
         t->mode = TERM_PLAIN;
     }
-    int side = ctx->samples > 0 ? (int)ceil(sqrt(ctx->samples / 2.0)) : FIRST_SIDE;
+    int side = ctx->samples > 0 ? (int)ceil(sqrt(ctx->samples / 2.0)) : PILOT_SIDE;
     sample_round(ctx, t, side, p, n, stats);
+}
+
+/* Forget a term's pilot (its drawn samples stay drawn) before its stage. */
+static void term_restart(term *t)
+{
+    t->est = (cdl_estimate){0.0, 0.0, 0.0, 0};
+    t->carrying = t->jump = 0.0;
+}
+
+/* The stage of every sampled light at p, planned from their pilots: the
+ * point's variance target (t R)^2 with R from the pilots' values, shared
+ * out by cdl_estimate_allocate_samples; each light's stage replaces its
+ * pilot. */
+static void plan_stage(const cdl_direct_context *ctx, term *terms, size_t count, double known, cdl_vec3 p,
+                       cdl_vec3 n, cdl_direct_sample_stats *stats)
+{
+    double E = known, potential = 0.0;
+    double local[32] = {0};
+    double *v = count <= 16 ? local : malloc(2 * count * sizeof *v);
+    if (!v) return; /* out of memory: the pilots stand, with their honest errors */
+    double *want = v + (count <= 16 ? 16 : count);
+    int sampled = 0;
+    for (size_t j = 0; j < count; ++j) {
+        E += term_value(&terms[j]);
+        potential += terms[j].potential;
+        v[sampled] = term_variance(&terms[j]);
+        if (terms[j].mode != TERM_EXACT) sampled++;
+    }
+    double R = fmax(E, 1e-3 * potential);
+    double pilot = 2.0 * PILOT_SIDE * PILOT_SIDE;
+    cdl_estimate_allocate_samples(v, want, sampled, pilot, PLAN_ALPHA, ctx->target * ctx->target * R * R, pilot,
+                                  CDL_DIRECT_MAX_SAMPLES - pilot);
+    sampled = 0;
+    for (size_t j = 0; j < count; ++j) {
+        if (terms[j].mode == TERM_EXACT) continue;
+        int side = cdl_estimate_side_for(want[sampled++], PILOT_SIDE, 1 << 15);
+        while (side > PILOT_SIDE && 2.0 * side * side > CDL_DIRECT_MAX_SAMPLES - pilot) side--;
+        term_restart(&terms[j]);
+        sample_round(ctx, &terms[j], side, p, n, stats);
+    }
+    if (v != local) free(v);
 }
 
 void cdl_direct_extended_point(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
@@ -181,31 +240,9 @@ void cdl_direct_extended_point(const cdl_direct_context *ctx, const cdl_light_st
         terms[j].stream = cdl_rng_stream_id(stream, (uint64_t)lights[j], 0x6c69676874ull /* "light" */);
         term_start(ctx, &terms[j], strategies[lights[j]], p, n, stats);
     }
-    /* Sample to the target, unless the scene fixed the sample count. */
-    while (ctx->samples <= 0) {
-        double E = known, V = 0.0, potential = 0.0;
-        size_t worst = count;
-        double worst_var = 0.0;
-        for (size_t j = 0; j < count; ++j) {
-            E += term_value(&terms[j]);
-            double v = term_variance(&terms[j]);
-            V += v;
-            potential += terms[j].potential;
-            if (v > worst_var && terms[j].est.samples < CDL_DIRECT_MAX_SAMPLES) {
-                worst_var = v;
-                worst = j;
-            }
-        }
-        double R = fmax(E, 1e-3 * potential);
-        double budget = ctx->target * ctx->target * R * R;
-        if (V <= budget || worst == count) break;
-        /* This light's share of the budget, in proportion to its variance. */
-        double goal = worst_var * budget / V;
-        int side = cdl_estimate_next_side(&terms[worst].est, goal, 2, 1 << 15);
-        double room = CDL_DIRECT_MAX_SAMPLES - terms[worst].est.samples;
-        while (side > 2 && 2.0 * side * side > room) side--;
-        sample_round(ctx, &terms[worst], side, p, n, stats);
-    }
+    /* Plan from the pilots and take the stage, unless the scene fixed the
+     * sample count (then the one round taken is what is reported). */
+    if (ctx->samples <= 0) plan_stage(ctx, terms, count, known, p, n, stats);
     double var_sum = 0.0;
     for (size_t j = 0; j < count; ++j) {
         contribution[j] = term_value(&terms[j]);
