@@ -1,6 +1,6 @@
 /* direct_extended.c - area emitters and skies: closed form where nothing
  * hides them, the hidden part sampled where something may, each point
- * sampled until its own target holds.
+ * sampled to its own target (a pilot that plans, a stage that is reported).
  *
  * A light with a closed form E_0 (area emitters, skies; cdl_emitter_exact_
  * illuminance) that may be partly hidden is first tried on the exact route
