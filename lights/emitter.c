@@ -147,11 +147,8 @@ int cdl_emitter_eval_delta(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, c
 
 int cdl_emitter_has_exact_illuminance(const cdl_emitter *emitter)
 {
-    if (emitter->ops->eval_delta) return 1;
-    cdl_illuminance E;
-    /* Whether a closed form exists depends only on the kind and its data,
-     * not on the receiver: ask once at an arbitrary receiver. */
-    return emitter->ops->exact(emitter, cdl_vec3_make(0.0, 0.0, 0.0), cdl_vec3_make(0.0, 0.0, 1.0), &E);
+    /* Every kind has one (image environments: the exact pixel sum). */
+    return emitter->ops->eval_delta != NULL || emitter->ops->exact != NULL;
 }
 
 cdl_status cdl_emitter_exact_illuminance(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, cdl_illuminance *E,
@@ -163,10 +160,9 @@ cdl_status cdl_emitter_exact_illuminance(const cdl_emitter *emitter, cdl_vec3 p,
         *E = d.E;
         return CDL_OK;
     }
-    if (!emitter->ops->exact(emitter, p, n, E)) {
+    if (!emitter->ops->exact || !emitter->ops->exact(emitter, p, n, E)) {
         *E = cdl_lux(0.0);
-        return cdl_error_set(err, CDL_ERR_USAGE,
-                             "exact illuminance: an image environment has no closed form; sample it instead");
+        return cdl_error_set(err, CDL_ERR_USAGE, "exact illuminance: this emitter has no closed form; sample it instead");
     }
     return CDL_OK;
 }

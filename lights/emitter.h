@@ -16,8 +16,8 @@
  * The solver asks three kinds of question:
  *  - delta emitters (point, spot, goniometric, directional): the exact
  *    unshadowed illuminance at a point and where to aim the one shadow ray;
- *  - area and uniform environment emitters: the exact unoccluded
- *    illuminance (closed form), used when nothing hides the emitter;
+ *  - area and environment emitters: the exact unoccluded illuminance
+ *    (closed form), used when nothing hides the emitter;
  *  - all non-delta emitters: importance samples with their pdf, used when
  *    the emitter is partly hidden.
  *
@@ -217,14 +217,16 @@ int cdl_emitter_emission_cone(const cdl_emitter *emitter, cdl_vec3 *position, cd
  * an inward sphere pi L. A non-convex mesh's self-occlusion is ignored (the
  * caller's visibility test must treat the emitter's own triangles as
  * occluders). Uniform environment: pi L (full sphere) or pi L (1 + cos
- * beta) / 2 (upper hemisphere, beta between n and up). Delta emitters: the
- * E of cdl_emitter_eval_delta. Returns CDL_ERR_USAGE (E = 0) for image
- * environments (no closed form); `err` may be NULL. */
+ * beta) / 2 (upper hemisphere, beta between n and up). Image environment: the exact sum over pixels of
+ * L times the pixel's projected solid angle on n's hemisphere (pixels the
+ * horizon crosses clipped exactly), one pass over the pixels; it depends on
+ * n only, so callers may cache it by normal. Delta emitters: the E of
+ * cdl_emitter_eval_delta. `err` may be NULL. */
 cdl_status cdl_emitter_exact_illuminance(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, cdl_illuminance *E,
                                          cdl_error *err);
 
 /* 1 when cdl_emitter_exact_illuminance has a closed form for this emitter
- * (every kind except the image environment). */
+ * (every kind). */
 int cdl_emitter_has_exact_illuminance(const cdl_emitter *emitter);
 
 typedef struct cdl_light_sample {
@@ -248,7 +250,9 @@ typedef struct cdl_light_sample {
  * area; disks cos-weighted about n when they fill half the receiver's
  * cosine-weighted hemisphere, else by area; spheres uniform in their cone
  * (outside) or cos-weighted about n (inside an inward sphere); uniform sky
- * cos-weighted about n; image sky by pixel luminance x solid angle. */
+ * cos-weighted about n; image sky by pixel luminance x solid angle (a
+ * sampler for one receiver normal, by luminance x projected solid angle,
+ * is lights/environment_sampler.h). */
 int cdl_emitter_sample(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, double u1, double u2,
                        cdl_light_sample *out);
 

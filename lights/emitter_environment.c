@@ -19,12 +19,15 @@
  *   uniform, full sphere:      E = pi L for every n;
  *   uniform, upper hemisphere: E = pi L (1 + cos beta) / 2, beta the angle
  *     between n and up (derivation at uniform_exact below);
- *   image: no closed form (sampling only).
+ *   image: E(n) = sum over pixels of L_ij times the pixel's projected solid
+ *     angle on n's hemisphere, exact (environment_pixels.h: the per-pixel
+ *     vector integral of w for whole pixels, the boundary contour of the
+ *     clipped pixel where the horizon of n crosses it); one pass over the
+ *     pixels, the same for every receiver with the same normal, so callers
+ *     that meet many points with one normal can cache it by normal.
  * "Flux" (cdl_emitter_flux): the flux on the face of a 1 m^2 disk facing up,
  * Phi = int over the upper hemisphere of L cos theta dw: pi L for a uniform
- * sky either way; for an image, per row
- *   (2 pi / width) sum_i L_ij (sin^2 theta_b - sin^2 theta_a) / 2
- * over the part [theta_a, theta_b] of the row above the horizon.
+ * sky either way; for an image, E(up) above.
  *
  * Sampling: uniform sky, cosine-weighted about the receiver normal n
  * (pdf = cos / pi: zero variance for a full sky with nothing in the way);
@@ -39,6 +42,7 @@
 #include "lights/distribution2d.h"
 #include "lights/emitter.h"
 #include "lights/emitter_internal.h"
+#include "lights/environment_pixels.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "radiometry/sampling.h"
@@ -52,7 +56,7 @@ typedef struct environment_emitter {
     float *image;
     int width, height;
     double scale;
-    double *cos_top, *cos_bottom; /* per row: cos of the polar bounds, the bottom clipped at the horizon if upper_only */
+    cdl_env_pixels px;            /* the pixels as cells of the sphere (rows clipped at the horizon if upper_only) */
     cdl_distribution2d *dist;     /* weights image x pixel solid angle */
     double flux;
 } environment_emitter;
@@ -60,13 +64,6 @@ typedef struct environment_emitter {
 static const environment_emitter *as_env(const cdl_emitter *e)
 {
     return (const environment_emitter *)e;
-}
-
-/* cos(theta_j) of the row boundary theta_j = pi j / H, as
- * sin(pi/2 - theta_j) = sin(pi (H - 2j) / (2H)): exactly 0 at the horizon. */
-static double cos_polar(int j, int H)
-{
-    return sin(CDL_PI * (double)(H - 2 * j) / (2.0 * (double)H));
 }
 
 /* ---- flux ------------------------------------------------------------------- */
@@ -78,28 +75,16 @@ static cdl_luminous_flux environment_flux(const cdl_emitter *e)
     return cdl_lumens(env->image ? env->flux : CDL_PI * env->L);
 }
 
-/* int over rows above the horizon of L cos theta dw (see the header comment). */
-static double image_flux(const environment_emitter *env)
-{
-    double dphi = CDL_TWO_PI / env->width, flux = 0.0;
-    for (int j = 0; j < env->height; ++j) {
-        double a = CDL_PI * j / env->height, b = fmin(CDL_PI * (j + 1) / env->height, 0.5 * CDL_PI);
-        if (!(b > a)) break;
-        double row = 0.0;
-        for (int i = 0; i < env->width; ++i) row += env->image[(size_t)j * env->width + i];
-        /* int_a^b cos sin dtheta = (sin^2 b - sin^2 a)/2 = sin(b + a) sin(b - a) / 2. */
-        flux += row * dphi * 0.5 * sin(b + a) * sin(b - a);
-    }
-    return env->scale * flux;
-}
-
 /* ---- exact illuminance ------------------------------------------------------ */
 
 static int environment_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_illuminance *E)
 {
     (void)p;
     const environment_emitter *env = as_env(e);
-    if (env->image) return 0;
+    if (env->image) {
+        *E = cdl_lux(cdl_env_pixels_illuminance(&env->px, n, NULL));
+        return 1;
+    }
     if (!env->upper_only) {
         /* The receiver's whole hemisphere is sky: int L cos dw = pi L. */
         *E = cdl_lux(CDL_PI * env->L);
@@ -123,22 +108,6 @@ static cdl_luminance uniform_radiance_towards(const environment_emitter *env, cd
 {
     if (env->upper_only && !(cdl_vec3_dot(w, env->frame.n) > 0.0)) return cdl_nits(0.0);
     return cdl_nits(env->L);
-}
-
-/* Pixel seen along unit world direction w; 0 if w is below the horizon of an upper-only sky. */
-static int pixel_of(const environment_emitter *env, cdl_vec3 w, int *i, int *j)
-{
-    cdl_vec3 l = cdl_frame_to_local(&env->frame, w);
-    if (env->upper_only && !(l.z > 0.0)) return 0;
-    double phi = atan2(l.y, l.x);                /* (-pi, pi] */
-    double u = (phi - CDL_PI) / CDL_TWO_PI;      /* phi = pi + 2 pi u */
-    if (u < 0.0) u += 1.0;
-    double v = atan2(hypot(l.x, l.y), l.z) / CDL_PI;
-    *i = (int)fmin(floor(u * env->width), env->width - 1.0);
-    *j = (int)fmin(floor(v * env->height), env->height - 1.0);
-    if (*i < 0) *i = 0;
-    if (*j < 0) *j = 0;
-    return 1;
 }
 
 static double pixel_value(const environment_emitter *env, int i, int j)
@@ -167,7 +136,7 @@ static int environment_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, doub
         if (!cdl_distribution2d_sample(env->dist, u1, u2, &i, &j, &fx, &fy)) return 0;
         /* Uniform in solid angle within the pixel: cos(theta) uniform between
          * the row's bounds, phi uniform across the column. */
-        double cos_t = env->cos_top[j] - fy * (env->cos_top[j] - env->cos_bottom[j]);
+        double cos_t = env->px.cos_a[j] - fy * (env->px.cos_a[j] - env->px.cos_b[j]);
         double sin_t = sqrt(fmax(0.0, (1.0 - cos_t) * (1.0 + cos_t)));
         double phi = CDL_PI + CDL_TWO_PI * ((double)i + fx) / env->width;
         w = cdl_frame_to_world(&env->frame, cdl_vec3_make(sin_t * cos(phi), sin_t * sin(phi), cos_t));
@@ -193,7 +162,7 @@ static cdl_luminance environment_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_
         return uniform_radiance_towards(env, w);
     }
     int i, j;
-    if (!pixel_of(env, w, &i, &j)) return cdl_nits(0.0);
+    if (!cdl_env_pixels_locate(&env->px, w, &i, &j)) return cdl_nits(0.0);
     double value = pixel_value(env, i, j);
     double total = cdl_distribution2d_total(env->dist);
     *pdf = total > 0.0 ? value / total : 0.0;
@@ -206,8 +175,7 @@ static void environment_destroy(cdl_emitter *e)
 {
     environment_emitter *env = (environment_emitter *)e;
     free(env->image);
-    free(env->cos_top);
-    free(env->cos_bottom);
+    cdl_env_pixels_free(&env->px);
     cdl_distribution2d_release(env->dist);
 }
 
@@ -233,28 +201,21 @@ static cdl_status build_image(environment_emitter *env, const cdl_environment_pa
     env->height = p->height;
     env->scale = p->scale;
     env->image = malloc(count * sizeof *env->image);
-    env->cos_top = malloc((size_t)p->height * sizeof(double));
-    env->cos_bottom = malloc((size_t)p->height * sizeof(double));
-    double *omega = malloc((size_t)p->height * sizeof(double));
-    if (!env->image || !env->cos_top || !env->cos_bottom || !omega) {
+    double *omega = calloc((size_t)p->height, sizeof(double));
+    if (!env->image || !omega) {
         free(omega);
         return cdl_error_out_of_memory(err);
     }
     memcpy(env->image, p->image, count * sizeof *env->image);
-    for (int j = 0; j < p->height; ++j) {
-        env->cos_top[j] = cos_polar(j, p->height);
-        env->cos_bottom[j] = cos_polar(j + 1, p->height);
-        if (env->upper_only) {
-            env->cos_top[j] = fmax(env->cos_top[j], 0.0);
-            env->cos_bottom[j] = fmax(env->cos_bottom[j], 0.0);
-        }
-        /* Pixel solid angle (2 pi / width)(cos top - cos bottom). */
-        omega[j] = CDL_TWO_PI / p->width * (env->cos_top[j] - env->cos_bottom[j]);
-    }
-    cdl_status st = cdl_distribution2d_create(p->image, omega, (size_t)p->width, (size_t)p->height, &env->dist, err);
+    cdl_status st = cdl_env_pixels_init(&env->px, env->image, p->width, p->height, p->scale, &env->frame,
+                                        env->upper_only, err);
+    /* Pixel solid angles; 0 for rows below the horizon of an upper-only sky. */
+    for (int j = 0; st == CDL_OK && j < env->px.rows; ++j) omega[j] = cdl_env_pixels_solid_angle(&env->px, j);
+    if (st == CDL_OK)
+        st = cdl_distribution2d_create(p->image, omega, (size_t)p->width, (size_t)p->height, &env->dist, err);
     free(omega);
     if (st != CDL_OK) return st;
-    env->flux = image_flux(env);
+    env->flux = cdl_env_pixels_illuminance(&env->px, env->frame.n, NULL);
     return CDL_OK;
 }
 
@@ -283,4 +244,11 @@ cdl_status cdl_emitter_create_environment(const cdl_environment_params *p, cdl_e
     }
     *out = &env->base;
     return CDL_OK;
+}
+
+const cdl_env_pixels *cdl_emitter_environment_pixels(const cdl_emitter *emitter)
+{
+    if (!emitter || emitter->ops != &environment_ops) return NULL;
+    const environment_emitter *env = as_env(emitter);
+    return env->image ? &env->px : NULL;
 }

@@ -19,10 +19,12 @@ typedef struct cdl_grid_solution {
     cdl_grid grid;
     double *E, *E_direct, *E_indirect, *E_stderr;
     double *ao;                       /* NULL unless asked for */
-    /* Points lying where two surfaces meet (on the one they face and within a
-     * ray epsilon of another, as at the foot of a wall): a surface through
-     * the point cannot say which side of it the point is on, so light from
-     * beyond it may be counted. Counted and reported, never silently. */
+    /* Points lying where two surfaces meet (on the one they face and within
+     * Embree's float resolution of another whose plane holds their normal,
+     * as at the foot of a wall): their normal cannot say which side of that
+     * surface is meant. Each reports the limit from the side the grid is
+     * meant for (direct_grid.c); they are counted and reported, never
+     * silently. */
     size_t edge_point_count;
     size_t first_edge_point;          /* index of the first, when any */
 } cdl_grid_solution;

@@ -158,6 +158,16 @@ static cdl_status check_finite(const cdl_scene *scene, const cdl_scene_lights *l
 
 /* ---- the solve ------------------------------------------------------------------ */
 
+/* A grid's key for its random numbers: a hash of its name (FNV-1a, 64
+ * bits), not its place in the scene, so that a grid's values do not change
+ * when other grids are added, removed or reordered. */
+static uint64_t grid_key(const char *name)
+{
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (const unsigned char *c = (const unsigned char *)name; *c; ++c) h = (h ^ *c) * 0x100000001b3ull;
+    return h;
+}
+
 static void release_records(cdl_icache_records *records, size_t count)
 {
     for (size_t g = 0; g < count; ++g) cdl_icache_records_release(&records[g]);
@@ -237,10 +247,9 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                                 .max_paths = 16777216.0};
     cdl_path_stats pt_stats;
     memset(&pt_stats, 0, sizeof pt_stats);
-    cdl_icache_context ic = {.path = pt.path, .target = target, .gradients = 1};
+    cdl_icache_context ic = {.path = pt.path, .target = target, .gradients = !opts.no_cache_gradients};
     cdl_icache_stats ic_stats;
     memset(&ic_stats, 0, sizeof ic_stats);
-    size_t cache_grids = 0;
     cJSON *inter_grids = cJSON_AddObjectToObject(cJSON_GetObjectItem(plan, "interreflection"), "grids");
     ctx.ao_samples = out->settings.ao_samples;
     ctx.seed = scene->settings.seed;
@@ -297,7 +306,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         snprintf(stage_name, sizeof stage_name, "grid %s", spec->name);
         double tc = cdl_pool_now_seconds();
         /* E_stderr holds the variance until the grid is done. */
-        st = cdl_direct_solve_grid(&ctx, strategies, &gs->grid, g, gs->E_direct, gs->E_stderr, gs->ao, threads,
+        st = cdl_direct_solve_grid(&ctx, strategies, &gs->grid, (size_t)grid_key(spec->name), gs->E_direct, gs->E_stderr, gs->ao, threads,
                                    &opts.progress, stage_name, &total, err);
         out->compute_seconds += cdl_pool_now_seconds() - tc;
         if (st != CDL_OK) goto fail;
@@ -320,14 +329,13 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
             cJSON_AddStringToObject(gi, "method", cdl_method_name(gm));
             if (gm == CDL_METHOD_ICACHE) {
                 cdl_icache_stats before = ic_stats;
-                st = cdl_icache_solve_grid(&ic, &gs->grid, g, gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,
+                st = cdl_icache_solve_grid(&ic, &gs->grid, (size_t)grid_key(spec->name), gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,
                                            &records[g], threads, &opts.progress, stage_name, &ic_stats, err);
                 cJSON_AddNumberToObject(gi, "records", (double)(ic_stats.records - before.records));
                 cJSON_AddNumberToObject(gi, "placement_passes", (double)ic_stats.passes);
-                ++cache_grids;
             } else {
                 uint64_t paths = pt_stats.paths;
-                st = cdl_pathtrace_solve_grid(&pt, &gs->grid, g, gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,
+                st = cdl_pathtrace_solve_grid(&pt, &gs->grid, (size_t)grid_key(spec->name), gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,
                                               threads, &opts.progress, stage_name, &pt_stats, err);
                 cJSON_AddNumberToObject(gi, "paths", (double)(pt_stats.paths - paths));
             }
@@ -375,7 +383,6 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         total.rays += all.rays + all.direct.rays;
         out->records = ic_stats.records;
     }
-    (void)cache_grids;
     out->rays = total.rays;
     out->plan_json = cJSON_PrintUnformatted(plan);
     if (!out->plan_json) {

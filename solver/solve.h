@@ -32,9 +32,11 @@ typedef struct cdl_solve_options {
     int no_exact_route;               /* 1: sample partly hidden area emitters and skies even where the
                                        * visible polygon is exact (tests of the sampler, benchmarks);
                                        * default 0 */
+    int no_cache_gradients;           /* 1: the irradiance cache interpolates without its records' gradients
+                                         (to measure what they buy) */
 } cdl_solve_options;
 #define CDL_SOLVE_OPTIONS_DEFAULT \
-    {.threads = -1, .progress = {.fn = NULL, .user = NULL}, .ray_log = NULL, .no_exact_route = 0}
+    {.threads = -1, .progress = {.fn = NULL, .user = NULL}, .ray_log = NULL, .no_exact_route = 0, .no_cache_gradients = 0}
 
 cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *options, cdl_solution *out,
                            cdl_error *err);

@@ -158,8 +158,9 @@ static int run(int argc, char **argv)
                     fprintf(stderr,
                             "candela solve: warning: grid '%s': %zu point%s lie%s where two surfaces meet (the first "
                             "is point %zu at (%.9g, %.9g, %.9g)); a surface through a point does not say which side "
-                            "the point is on, so light from beyond it may be counted there: move such points off "
-                            "the edge (summary.json: edge_points)\n",
+                            "the point is on: each reports the limit from the side its grid is meant for (the "
+                            "inside of a box, the side a surface's front faces); move such points off the edge if "
+                            "another side is meant (summary.json: edge_points)\n",
                             r.name, gs->edge_point_count, gs->edge_point_count == 1 ? "" : "s",
                             gs->edge_point_count == 1 ? "s" : "", gs->first_edge_point, q.x, q.y, q.z);
                 }

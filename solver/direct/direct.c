@@ -20,13 +20,16 @@ const char *cdl_light_strategy_name(cdl_light_strategy s)
     case CDL_STRATEGY_DELTA_EXACT: return "exact, no shadow rays: no surface can come between this light and the grid";
     case CDL_STRATEGY_DELTA_SHADOWED:
         return "exact, one shadow ray per point: surfaces may come between this light and the grid";
-    case CDL_STRATEGY_EXTENDED_EXACT: return "closed form, nothing can hide it";
+    case CDL_STRATEGY_EXTENDED_EXACT:
+        return "closed form (an image sky: the exact sum over its pixels), nothing can hide it";
     case CDL_STRATEGY_EXTENDED_TESTED:
+        /* (no "luminance" here: tests scan summary.json for "nan") */
         return "closed form where fully visible, exact visible polygon past few planar occluders, else sampled where "
-               "partly hidden: surfaces may hide part of this emitter";
+               "partly hidden (the closed form less the hidden part; an image sky drawn by L x each pixel's "
+               "projected solid angle): surfaces may hide part of this emitter";
     case CDL_STRATEGY_SAMPLED:
-        return "sampled with shadow rays: no closed form for this emitter (an image), or no exact test of its "
-               "visibility (a non-planar mesh) while surfaces may hide it";
+        return "sampled with shadow rays: no exact test of this emitter's visibility (a non-planar mesh) while "
+               "surfaces may hide it";
     }
     return "unknown";
 }

@@ -5,8 +5,9 @@
  *     I cos(theta) / d^2 (or E cos for directional) plus one shadow ray, and no
  *     shadow ray at all when no surface can lie between the light and the
  *     grid (nothing intersects the box around both);
- *   area emitters and the uniform environment: the closed-form illuminance
- *     (contour integral, disk and sphere formulas, pi L x visible fraction)
+ *   area emitters and environments: the closed-form illuminance (contour
+ *     integral, disk and sphere formulas, pi L x visible fraction, for an
+ *     image the exact sum over pixels of L x projected solid angle)
  *     when no surface intersects the region between the receiver and the
  *     emitter (tested exactly per point, see occluder_index.h); where at
  *     most CDL_EXACT_ROUTE_MAX_OCCLUDERS planar triangles are in the way, L
@@ -14,8 +15,9 @@
  *     direct_exact_route.c); otherwise the
  *     closed form minus a Monte-Carlo estimate of the hidden part
  *     (E = E_exact - <f (1 - V)>, a control variate that is exact when
- *     nothing is hidden), with its standard error;
- *   image environments: Monte-Carlo sampling by luminance with shadow rays.
+ *     nothing is hidden), with its standard error; an image's hidden part
+ *     drawn by luminance x each pixel's projected solid angle on the
+ *     receiver's hemisphere (lights/environment_sampler.h).
  * Random numbers are keyed by (seed, grid, point, light, sample): results do
  * not depend on threads or on the order points are computed in.
  */
@@ -40,7 +42,7 @@ typedef enum cdl_light_strategy {
     CDL_STRATEGY_DELTA_SHADOWED,      /* delta light, one shadow ray per point */
     CDL_STRATEGY_EXTENDED_EXACT,      /* closed form, nothing can occlude for any point */
     CDL_STRATEGY_EXTENDED_TESTED,     /* closed form where the per-point region is clear, else sampled */
-    CDL_STRATEGY_SAMPLED              /* always sampled (image environment, non-planar emitter) */
+    CDL_STRATEGY_SAMPLED              /* always sampled (non-planar emitter that surfaces may hide) */
 } cdl_light_strategy;
 
 const char *cdl_light_strategy_name(cdl_light_strategy strategy);
@@ -88,6 +90,7 @@ typedef enum cdl_direct_route {
     CDL_ROUTE_CURVED_OCCLUDER,        /* sampled: a sphere or a disk may be in the way */
     CDL_ROUTE_CURVED_EMITTER,         /* sampled: a disk, sphere or non-planar emitter */
     CDL_ROUTE_TOO_COMPLEX,            /* sampled: the visible part had too many pieces */
+    CDL_ROUTE_IMAGE_SKY,              /* sampled: an image sky is not one luminance */
     CDL_ROUTE_DISABLED,               /* sampled: the context asked for it (no_exact_route) */
     CDL_ROUTE_COUNT
 } cdl_direct_route;

@@ -42,6 +42,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "lights/environment_sampler.h"
 #include "radiometry/estimate.h"
 #include "radiometry/rng.h"
 
@@ -75,7 +76,20 @@ typedef struct term {
     double carrying;         /* samples whose direction carries light at all */
     double jump;             /* the largest unoccluded sample value: the step at a visibility edge */
     uint64_t drawn;          /* samples drawn so far (pilot and stage), the next sample's index */
+    cdl_environment_sampler *sky; /* image environments: sampled for this normal (NULL: the emitter's sampler) */
 } term;
+
+/* A sample of the light: an image sky by luminance x each pixel's projected
+ * solid angle on n's hemisphere (lights/environment_sampler.h; its mean of
+ * L cos / pdf with nothing in the way is the exact sum, as the emitter's
+ * sampler's is), anything else by the emitter's own sampler. */
+static int term_sample(term *t, cdl_vec3 p, cdl_vec3 n, double u1, double u2, cdl_light_sample *ls)
+{
+    if (!t->sky && cdl_environment_sampler_applies(t->light->emitter))
+        cdl_environment_sampler_create(t->light->emitter, n, &t->sky, NULL); /* NULL on failure: the emitter's */
+    if (t->sky) return cdl_environment_sampler_sample(t->sky, u1, u2, ls);
+    return cdl_emitter_sample(t->light->emitter, p, n, u1, u2, ls);
+}
 
 /* One round of k x k strata, two samples each, added to t->est. */
 static void sample_round(const cdl_direct_context *ctx, term *t, int k, cdl_vec3 p, cdl_vec3 n,
@@ -93,7 +107,7 @@ static void sample_round(const cdl_direct_context *ctx, term *t, int k, cdl_vec3
                 cdl_rng_uniform2(key, base + (uint64_t)(2 * (j * k + i) + s), u);
                 f[s] = 0.0;
                 cdl_light_sample ls;
-                if (!cdl_emitter_sample(t->light->emitter, p, n, (i + u[0]) / k, (j + u[1]) / k, &ls) ||
+                if (!term_sample(t, p, n, (i + u[0]) / k, (j + u[1]) / k, &ls) ||
                     !(ls.pdf > 0.0))
                     continue;
                 double c = cdl_vec3_dot(n, ls.to_light);
@@ -152,6 +166,7 @@ static void term_start(const cdl_direct_context *ctx, term *t, cdl_light_strateg
     t->exact = t->potential = t->carrying = t->jump = 0.0;
     t->drawn = 0;
     t->est = (cdl_estimate){0.0, 0.0, 0.0, 0};
+    t->sky = NULL;
     if (st != CDL_STRATEGY_SAMPLED || cdl_emitter_has_exact_illuminance(t->light->emitter)) {
         if (cdl_emitter_exact_illuminance(t->light->emitter, p, n, &exact, NULL) == CDL_OK) {
             t->exact = t->potential = exact.lx > 0.0 ? exact.lx : 0.0;
@@ -258,6 +273,7 @@ void cdl_direct_extended_point(const cdl_direct_context *ctx, const cdl_light_st
     for (size_t j = 0; j < count; ++j) {
         contribution[j] = term_value(&terms[j]);
         var_sum += term_variance(&terms[j]);
+        cdl_environment_sampler_release(terms[j].sky);
     }
     *variance = var_sum;
     if (terms != local) free(terms);

@@ -27,8 +27,14 @@ cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_
                                  int threads, const cdl_progress_sink *progress, const char *stage,
                                  cdl_direct_sample_stats *stats, cdl_error *err);
 
-/* Points lying where two surfaces meet (see find_edge_points in
- * direct_grid.c): their number, and the index of the first in *first. */
+/* Where p (receiving normal n) is evaluated: itself, or, where a surface
+ * passes through it at an angle to its receiving plane, the point just off
+ * it whose value is the limit from the side the grid is meant for
+ * (direct_grid.c). Returns 1 for an edge point: one where a surface whose
+ * plane holds n passes through p (two surfaces meet there). */
+int cdl_direct_edge_point(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 *at);
+
+/* Edge points of a grid: their number, and the index of the first in *first. */
 size_t cdl_direct_find_edge_points(const cdl_direct_context *ctx, const cdl_grid *grid, size_t *first);
 
 #endif

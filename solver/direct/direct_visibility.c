@@ -4,9 +4,11 @@
 #include <stdlib.h>
 
 /* Geometric tolerance of region tests around p: a surface must reach ten
- * ray epsilons into the region to count as an occluder, so surfaces that
- * only touch it (the floor under a grid point, the ceiling around a
- * recessed emitter) do not. */
+ * double rounding bounds (cdl_ray_offsets_epsilon: 1e-11 of the scene's
+ * coordinates, never a fraction of its size) into the region to count as an
+ * occluder, so surfaces that only touch it (the floor under a grid point,
+ * the ceiling around a recessed emitter) do not, and a wall 0.1 mm from a
+ * point in a 1 km scene does. */
 double cdl_direct_region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p)
 {
     return 10.0 * cdl_ray_offsets_epsilon(&ctx->offsets, p);
@@ -28,7 +30,8 @@ void cdl_direct_record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_
     log->rays[log->count++] = rec;
 }
 
-/* Is the segment from p towards the light blocked? (offsets: scene_geometry.h) */
+/* Is the segment from p towards the light blocked? The surface p lies on
+ * and the one the light's sample lies on never count (scene_geometry.h). */
 int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
                     cdl_direct_sample_stats *stats)
 {

@@ -322,6 +322,36 @@ cdl_occluder_list_status cdl_occluder_index_list(const cdl_occluder_index *ix, c
     return ls.status;
 }
 
+typedef struct box_state {
+    cdl_occluder_visit visit;
+    void *user;
+    int count;
+} box_state;
+
+static int box_visit(void *user, const cdl_occluder_index *ix, const prim *pr)
+{
+    box_state *b = user;
+    b->count++;
+    if (pr->index < ix->triangle_count)
+        b->visit(b->user, &ix->vertices[9 * (size_t)pr->index], 0, pr->owner);
+    else
+        b->visit(b->user, &ix->spheres[4 * (size_t)(pr->index - ix->triangle_count)], 1, pr->owner);
+    return 0;
+}
+
+int cdl_occluder_index_visit_box(const cdl_occluder_index *ix, cdl_vec3 lo, cdl_vec3 hi, cdl_occluder_visit visit,
+                                 void *user)
+{
+    cdl_convex_region box;
+    cdl_region_box(&box, lo, hi);
+    const cdl_vec3 corners[2] = {lo, hi};
+    box_state b = {visit, user, 0};
+    /* query answers 1 alone when its tree was too deep to finish: count
+     * that as something found (conservative). */
+    int stopped = query(ix, &box, 0.0, UINT32_MAX, corners, box_visit, &b);
+    return stopped && b.count == 0 ? 1 : b.count;
+}
+
 int cdl_region_add(cdl_convex_region *r, cdl_vec3 normal, double offset)
 {
     if (r->plane_count >= CDL_REGION_MAX_PLANES) return 0;

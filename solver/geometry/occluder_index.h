@@ -87,6 +87,14 @@ cdl_occluder_list_status cdl_occluder_index_list(const cdl_occluder_index *index
                                                  double tolerance, uint32_t exclude_owner,
                                                  cdl_occluder_triangle *out, size_t max, size_t *count);
 
+/* Each primitive whose surface meets the box [lo, hi], handed to `visit`:
+ * a triangle as its 9 corner coordinates (counter-clockwise seen from its
+ * front, as built), a sphere as cx cy cz r; owner as given at build. Returns
+ * how many were visited. */
+typedef void (*cdl_occluder_visit)(void *user, const double *primitive, int is_sphere, uint32_t owner);
+int cdl_occluder_index_visit_box(const cdl_occluder_index *index, cdl_vec3 lo, cdl_vec3 hi, cdl_occluder_visit visit,
+                                 void *user);
+
 size_t cdl_occluder_index_primitive_count(const cdl_occluder_index *index);
 
 /* ---- building regions ------------------------------------------------------ */

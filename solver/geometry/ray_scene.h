@@ -40,13 +40,23 @@ cdl_status cdl_ray_scene_add_sphere(cdl_ray_scene *scene, cdl_vec3 center, doubl
 cdl_status cdl_ray_scene_commit(cdl_ray_scene *scene, cdl_error *err);
 
 /* Is anything hit on the open segment origin + t dir, t in (t_near, t_far)?
- * dir need not be unit length; t is in units of |dir|. */
+ * dir need not be unit length; t is in units of |dir|. Decided in double
+ * (ray_scene.c): a surface whose plane (sphere) the origin, or the end
+ * origin + t_far dir, lies on to within the double rounding bound (about
+ * 1e-12 of the coordinates' magnitude) does not count, so rays from a point
+ * on a surface, or to a point on one, need no offset. */
 int cdl_ray_scene_occluded(const cdl_ray_scene *scene, cdl_vec3 origin, cdl_vec3 dir, double t_near, double t_far);
 
-/* Closest hit with t in (t_near, t_far); returns 1 and fills *hit, else 0.
- * dir must be unit length. */
+/* Closest hit with t in (t_near, t_far), by the same double test; returns 1
+ * and fills *hit (t, normal and barycentrics in double), else 0. dir must be
+ * unit length. */
 int cdl_ray_scene_intersect(const cdl_ray_scene *scene, cdl_vec3 origin, cdl_vec3 dir, double t_near, double t_far,
                             cdl_ray_hit *hit);
+
+/* Embree's float resolution near p (after commit): one single-precision ulp
+ * of the largest local coordinate a query near p involves. Closer than a
+ * few of these, which side of a surface p is on is beyond Embree. */
+double cdl_ray_scene_resolution(const cdl_ray_scene *scene, cdl_vec3 p);
 
 /* Number of triangles added (spheres count as none). */
 size_t cdl_ray_scene_triangle_count(const cdl_ray_scene *scene);

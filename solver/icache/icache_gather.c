@@ -16,7 +16,7 @@ static double ring_theta(int j, int M)
 }
 
 int cdl_icache_gather(const cdl_path_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 n, int M, int N,
-                      cdl_icache_record *rec, cdl_path_stats *stats)
+                      cdl_icache_record *rec, cdl_path_stats *stats, cdl_path_tally *tally)
 {
     size_t cells = (size_t)M * (size_t)N;
     double *v = malloc(2 * cells * sizeof *v);
@@ -36,9 +36,7 @@ int cdl_icache_gather(const cdl_path_context *ctx, cdl_rng_key key, cdl_vec3 p, 
             cdl_vec3 local = cdl_vec3_make(st * cos(phi), st * sin(phi), ct);
             cdl_path_result res;
             cdl_transport_path(ctx, pk, p, n, cdl_frame_to_world(&f, local), &res, stats);
-            stats->total += res.value;
-            stats->last += res.last;
-            stats->before_last += res.before_last;
+            if (tally) cdl_path_tally_add(tally, &res);
             v[c] = res.value;
             r[c] = res.distance;
             if (isfinite(res.distance) && res.distance > 0.0)

@@ -45,9 +45,9 @@ typedef struct cdl_icache_record {
 
 /* Gather M x N strata (N even) at p (unit normal n) into *rec (all fields
  * but `radius`, which the cache sets from harmonic and its limits).
- * Random numbers from `key`; the paths' tallies are added to *stats
- * (total, last and before_last included). Returns 0 when memory ran out. */
+ * Random numbers from `key`; counts added to *stats, the paths' sums to
+ * *tally (when not NULL). Returns 0 when memory ran out. */
 int cdl_icache_gather(const cdl_path_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 n, int M, int N,
-                      cdl_icache_record *rec, cdl_path_stats *stats);
+                      cdl_icache_record *rec, cdl_path_stats *stats, cdl_path_tally *tally);
 
 #endif

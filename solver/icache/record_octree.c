@@ -140,14 +140,16 @@ size_t cdl_record_octree_lookup(const cdl_record_octree *tree, cdl_vec3 p, uint3
             *ids = grown;
             *capacity = cap;
         }
-        memcpy(*ids + n, nd->ids, nd->count * sizeof **ids);
-        n += nd->count;
+        if (nd->count > 0) { /* an empty cell has no array (memcpy from NULL is undefined) */
+            memcpy(*ids + n, nd->ids, nd->count * sizeof **ids);
+            n += nd->count;
+        }
         int c = (p.x >= centre.x) | ((p.y >= centre.y) << 1) | ((p.z >= centre.z) << 2);
         if (nd->child[c] == 0) break;
         centre = child_centre(centre, half, c);
         half *= 0.5;
         at = nd->child[c];
     }
-    qsort(*ids, n, sizeof **ids, compare_ids);
+    if (n > 1) qsort(*ids, n, sizeof **ids, compare_ids);
     return n;
 }

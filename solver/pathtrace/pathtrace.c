@@ -17,7 +17,7 @@
 
 /* One round: k x k cells of the first direction, two paths a cell. */
 static void path_round(const cdl_pathtrace_context *ctx, uint64_t stream, uint64_t base, cdl_vec3 p, cdl_vec3 n,
-                       int k, cdl_estimate *est, double *potential_sum, cdl_path_stats *stats)
+                       int k, cdl_estimate *est, double *potential_sum, cdl_path_stats *stats, cdl_path_tally *tally)
 {
     cdl_frame f = cdl_frame_from_normal(n);
     cdl_round round = {0.0, 0.0, 0.0, 0};
@@ -34,9 +34,7 @@ static void path_round(const cdl_pathtrace_context *ctx, uint64_t stream, uint64
                 cdl_transport_path(&ctx->path, key, p, n, dir, &r, stats);
                 v[s] = r.value;
                 *potential_sum += r.potential;
-                stats->last += r.last;
-                stats->before_last += r.before_last;
-                stats->total += r.value;
+                cdl_path_tally_add(tally, &r);
             }
             cdl_round_add_pair(&round, v[0], v[1]);
         }
@@ -56,12 +54,13 @@ static double paths_variance(const cdl_estimate *est, double potential)
 }
 
 void cdl_pathtrace_point(const cdl_pathtrace_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n, double E_direct,
-                         double var_direct, double *E_indirect, double *var_indirect, cdl_path_stats *stats)
+                         double var_direct, double *E_indirect, double *var_indirect, cdl_path_stats *stats,
+                         cdl_path_tally *tally)
 {
     /* The pilot: how variable are this point's paths, how much light. */
     cdl_estimate pilot = {0.0, 0.0, 0.0, 0};
     double potential_sum = 0.0;
-    path_round(ctx, stream, 0, p, n, PILOT_SIDE, &pilot, &potential_sum, stats);
+    path_round(ctx, stream, 0, p, n, PILOT_SIDE, &pilot, &potential_sum, stats, tally);
     uint64_t taken = (uint64_t)pilot.samples;
     double potential = potential_sum / pilot.samples;
     /* The point's E = E_dir + E_ind is held to t; the direct part was held
@@ -80,7 +79,7 @@ void cdl_pathtrace_point(const cdl_pathtrace_context *ctx, uint64_t stream, cdl_
     if (want > ctx->max_paths - (double)taken) want = ctx->max_paths - (double)taken;
     cdl_estimate est = {0.0, 0.0, 0.0, 0};
     path_round(ctx, stream, taken, p, n, cdl_estimate_side_for(want, PILOT_SIDE, 1 << 12), &est, &potential_sum,
-               stats);
+               stats, tally);
     *E_indirect = cdl_estimate_mean(&est);
     *var_indirect = paths_variance(&est, potential);
 }
@@ -93,7 +92,7 @@ typedef struct grid_job {
     size_t grid_index;
     const double *E_direct, *var_direct;
     double *E_indirect, *var_indirect;
-    double *tails;            /* per point: last, before_last, total (summed in point order after) */
+    cdl_path_tally *tallies;  /* per point (summed in point order after) */
 } grid_job;
 
 static cdl_status trace_points(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
@@ -103,17 +102,8 @@ static cdl_status trace_points(void *shared, void *local, size_t begin, size_t e
     cdl_path_stats *stats = local;
     for (size_t i = begin; i < end; ++i) {
         uint64_t stream = cdl_rng_stream_id((uint64_t)job->grid_index, (uint64_t)i, 0x707472616365 /* "ptrace" */);
-        /* The floating-point tallies are kept per point, so that their sums
-         * do not depend on which thread took which point. */
-        double last = stats->last, before = stats->before_last, total = stats->total;
         cdl_pathtrace_point(job->ctx, stream, job->grid->points[i], job->grid->normals[i], job->E_direct[i],
-                            job->var_direct[i], &job->E_indirect[i], &job->var_indirect[i], stats);
-        job->tails[3 * i] = stats->last - last;
-        job->tails[3 * i + 1] = stats->before_last - before;
-        job->tails[3 * i + 2] = stats->total - total;
-        stats->last = last;
-        stats->before_last = before;
-        stats->total = total;
+                            job->var_direct[i], &job->E_indirect[i], &job->var_indirect[i], stats, &job->tallies[i]);
     }
     return CDL_OK;
 }
@@ -125,24 +115,20 @@ cdl_status cdl_pathtrace_solve_grid(const cdl_pathtrace_context *ctx, const cdl_
 {
     if (threads < 1) threads = 1;
     cdl_path_stats *locals = calloc((size_t)threads, sizeof *locals);
-    double *tails = calloc(3 * (grid->count ? grid->count : 1), sizeof *tails);
-    if (!locals || !tails) {
+    cdl_path_tally *tallies = calloc(grid->count ? grid->count : 1, sizeof *tallies);
+    if (!locals || !tallies) {
         free(locals);
-        free(tails);
+        free(tallies);
         return cdl_error_out_of_memory(err);
     }
-    grid_job job = {ctx, grid, grid_index, E_direct, var_direct, E_indirect, var_indirect, tails};
+    grid_job job = {ctx, grid, grid_index, E_direct, var_direct, E_indirect, var_indirect, tallies};
     /* Points differ a hundredfold in cost: small chunks keep threads busy. */
     cdl_pool_task task = {.count = grid->count, .chunk = 2, .run = trace_points, .shared = &job,
                           .locals = locals, .local_size = sizeof *locals, .stage = stage};
     cdl_status st = cdl_pool_run(&task, threads, progress, err);
     for (int t = 0; t < threads; ++t) cdl_path_stats_add(stats, &locals[t]);
-    for (size_t i = 0; i < grid->count; ++i) {
-        stats->last += tails[3 * i];
-        stats->before_last += tails[3 * i + 1];
-        stats->total += tails[3 * i + 2];
-    }
+    cdl_path_stats_add_tallies(stats, tallies, grid->count);
     free(locals);
-    free(tails);
+    free(tallies);
     return st;
 }

@@ -39,8 +39,10 @@ cdl_status cdl_pathtrace_solve_grid(const cdl_pathtrace_context *ctx, const cdl_
                                     double *var_indirect, int threads, const cdl_progress_sink *progress,
                                     const char *stage, cdl_path_stats *stats, cdl_error *err);
 
-/* The same for one point (p, unit n) with stream `stream`; adds to *stats. */
+/* The same for one point (p, unit n) with stream `stream`; adds to *stats
+ * and its paths' sums to *tally. */
 void cdl_pathtrace_point(const cdl_pathtrace_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n, double E_direct,
-                         double var_direct, double *E_indirect, double *var_indirect, cdl_path_stats *stats);
+                         double var_direct, double *E_indirect, double *var_indirect, cdl_path_stats *stats,
+                         cdl_path_tally *tally);
 
 #endif

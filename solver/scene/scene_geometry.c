@@ -13,14 +13,9 @@
  *   sphere   an exact Embree sphere
  *   mesh     the triangles as given
  *
- * Ray epsilon. Embree works in single precision on coordinates recentred on
- * the bounding-box centre c (ray_scene.c), so a computed hit distance is
- * off by a few float ulps of the larger of |p - c| and the scene's size.
- * epsilon(p) = 1e-5 x extent + 2^-16 x |p - c|_inf covers that by a factor
- * of about a hundred (2^-16 is 128 ulps of 2^-23), scales with the scene
- * (the same room at 1e-3 and 1e3 gets the same relative epsilon), and
- * stays far below any distance that matters for illuminance (40 um in a
- * 4 m room).
+ * Rays: the ray scene decides hits near a ray's ends in double
+ * (ray_scene.c); this file only hands points through, with no epsilon of
+ * the scene's size (scene_geometry.h, "Rays at every scale").
  */
 #include "solver/scene/scene_geometry.h"
 
@@ -40,8 +35,8 @@
  * multiple of 8 so the fan is symmetric about the frame's axes. */
 #define DISK_SEGMENTS 224
 
-#define EPSILON_EXTENT_FRACTION 1e-5
-#define EPSILON_FLOAT_FRACTION (1.0 / 65536.0)
+/* The relative rounding bound of cdl_ray_offsets_epsilon. */
+#define ROUNDING_RELATIVE 0x1p-40
 
 typedef struct piece_data {
     cdl_geometry_piece piece;
@@ -56,7 +51,6 @@ struct cdl_scene_geometry {
     size_t piece_count, piece_capacity;
     size_t triangle_count;
     cdl_bounds3 bounds;
-    cdl_vec3 centre;
     double extent;
 };
 
@@ -407,7 +401,6 @@ cdl_status cdl_scene_geometry_build(const cdl_scene *scene, cdl_scene_geometry *
         return st;
     }
     if (g->piece_count == 0) g->bounds.lo = g->bounds.hi = cdl_vec3_make(0, 0, 0);
-    g->centre = cdl_bounds3_centre(g->bounds);
     g->extent = cdl_bounds3_diagonal(g->bounds);
     *out = g;
     return CDL_OK;
@@ -476,9 +469,9 @@ double cdl_scene_geometry_extent(const cdl_scene_geometry *g)
 
 void cdl_scene_geometry_ray_offsets(const cdl_scene_geometry *g, cdl_ray_offsets *o)
 {
-    o->centre = g->centre;
-    o->extent_term = EPSILON_EXTENT_FRACTION * g->extent;
-    o->float_fraction = EPSILON_FLOAT_FRACTION;
+    cdl_vec3 lo = g->bounds.lo, hi = g->bounds.hi;
+    o->magnitude = fmax(fmax(fmax(fabs(lo.x), fabs(hi.x)), fmax(fabs(lo.y), fabs(hi.y))), fmax(fabs(lo.z), fabs(hi.z)));
+    o->rounding = ROUNDING_RELATIVE;
 }
 
 double cdl_scene_geometry_ray_epsilon(const cdl_scene_geometry *g, cdl_vec3 p)
@@ -488,17 +481,9 @@ double cdl_scene_geometry_ray_epsilon(const cdl_scene_geometry *g, cdl_vec3 p)
     return cdl_ray_offsets_epsilon(&o, p);
 }
 
-/* p moved eps along n, to the side `toward` points to. */
-static cdl_vec3 offset_origin(cdl_vec3 p, cdl_vec3 n, cdl_vec3 toward, double eps)
+double cdl_scene_geometry_resolution(const cdl_scene_geometry *g, cdl_vec3 p)
 {
-    double side = cdl_vec3_dot(n, toward);
-    if (side == 0.0) return p;
-    return cdl_vec3_madd(p, side > 0.0 ? eps : -eps, n);
-}
-
-cdl_vec3 cdl_scene_geometry_ray_origin(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 n, cdl_vec3 toward)
-{
-    return offset_origin(p, n, toward, cdl_scene_geometry_ray_epsilon(g, p));
+    return cdl_ray_scene_resolution(g->rays, p);
 }
 
 int cdl_scene_geometry_shadow_ray(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
@@ -521,22 +506,15 @@ int cdl_scene_geometry_ray_occluded(const cdl_scene_geometry *g, cdl_vec3 p, cdl
 int cdl_scene_geometry_segment_occluded(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 p_normal, cdl_vec3 q,
                                         cdl_vec3 q_normal)
 {
-    cdl_vec3 a = cdl_scene_geometry_ray_origin(g, p, p_normal, cdl_vec3_sub(q, p));
-    cdl_vec3 b = cdl_scene_geometry_ray_origin(g, q, q_normal, cdl_vec3_sub(p, q));
-    double eps = fmax(cdl_scene_geometry_ray_epsilon(g, p), cdl_scene_geometry_ray_epsilon(g, q));
-    cdl_vec3 d = cdl_vec3_sub(b, a);
-    double len = cdl_vec3_length(d);
-    if (!(len > 2.0 * eps)) return 0;
-    return cdl_ray_scene_occluded(g->rays, a, cdl_vec3_scale(d, 1.0 / len), eps, len - eps);
+    (void)p_normal;
+    (void)q_normal;
+    /* t in (0, 1) along q - p: both ends are decided in double. */
+    return cdl_ray_scene_occluded(g->rays, p, cdl_vec3_sub(q, p), 0.0, 1.0);
 }
 
 int cdl_scene_geometry_intersect(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double t_max,
                                  cdl_ray_hit *hit)
 {
-    double eps = cdl_scene_geometry_ray_epsilon(g, p);
-    cdl_vec3 o = cdl_scene_geometry_ray_origin(g, p, n, dir);
-    if (!cdl_ray_scene_intersect(g->rays, o, dir, eps, t_max, hit)) return 0;
-    /* Report the distance from p, not from the offset origin. */
-    hit->t += cdl_vec3_dot(cdl_vec3_sub(o, p), dir);
-    return 1;
+    (void)n;
+    return cdl_ray_scene_intersect(g->rays, p, dir, 0.0, t_max, hit);
 }

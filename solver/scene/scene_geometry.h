@@ -58,78 +58,65 @@ double cdl_scene_geometry_extent(const cdl_scene_geometry *geometry);
 size_t cdl_scene_geometry_piece_triangles(const cdl_scene_geometry *geometry, size_t geom_id, const double **xyz,
                                           size_t *vertex_count, const uint32_t **triangles);
 
-/* The ray offsets of a scene, for callers that build many rays themselves
- * (the direct solver's hot loop): the functions below are these, inlined. */
+/* Rays at every scale. Rays start at the point itself and end at their
+ * target: the ray scene re-tests Embree's hits in double (ray_scene.c), so
+ * the surface a point lies on, and the one a shadow ray's end lies on, never
+ * count, whatever the scene's size, while any surface off the point by more
+ * than the double rounding bound does. What is left for callers is that
+ * bound (for exact region tests near a point), given here for the hot loops
+ * that build rays themselves. */
 typedef struct cdl_ray_offsets {
-    cdl_vec3 centre;          /* bounding-box centre (where the ray scene works) */
-    double extent_term;       /* 1e-5 x extent */
-    double float_fraction;    /* 2^-16 */
+    double magnitude;         /* largest coordinate magnitude of the geometry, m */
+    double rounding;          /* 2^-40: the relative rounding bound */
 } cdl_ray_offsets;
 
 void cdl_scene_geometry_ray_offsets(const cdl_scene_geometry *geometry, cdl_ray_offsets *offsets);
 
-/* epsilon(p) = extent_term + float_fraction x |p - centre|_inf */
+/* epsilon(p) = 2^-40 x max(magnitude, |p|_inf): a bound, with a margin of
+ * about a hundred, on the rounding of any double computed from the scene's
+ * coordinates and p (a few ulps, 2^-52 each): 1e-9 m in a 1 km scene,
+ * 1e-7 m at 1e5 m from the origin. */
 static inline double cdl_ray_offsets_epsilon(const cdl_ray_offsets *o, cdl_vec3 p)
 {
-    double ax = fabs(p.x - o->centre.x), ay = fabs(p.y - o->centre.y), az = fabs(p.z - o->centre.z);
-    double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az); /* p finite: no NaN to guard */
-    return o->extent_term + o->float_fraction * m;
+    double m = fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z)));
+    return o->rounding * fmax(o->magnitude, m);
 }
 
 /* The shadow segment of cdl_scene_geometry_shadow_ray (documented there). */
 static inline int cdl_ray_offsets_shadow_ray(const cdl_ray_offsets *o, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,
                                              double distance, cdl_vec3 *origin, double *t_near, double *t_far)
 {
-    double eps = cdl_ray_offsets_epsilon(o, p);
-    double far = INFINITY;
-    if (isfinite(distance)) {
-        /* The origin moves up to eps; the far point q is known to the float
-         * precision of its own coordinates, which 4 epsilons there cover;
-         * |q - c| <= |p - c| + distance bounds epsilon(q) by eps + 2^-16 distance. */
-        double eps_far = eps + o->float_fraction * distance;
-        far = distance - eps - 4.0 * eps_far;
-    }
-    if (!(far > eps)) return 0;
-    /* off the surface p may lie on, to the side the ray goes */
-    double side = cdl_vec3_dot(n, dir);
-    *origin = side == 0.0 ? p : cdl_vec3_madd(p, side > 0.0 ? eps : -eps, n);
-    *t_near = eps;
-    *t_far = far;
+    (void)o;
+    (void)n;
+    (void)dir;
+    if (!(distance > 0.0)) return 0;
+    *origin = p;
+    *t_near = 0.0;
+    *t_far = distance;
     return 1;
 }
 
-/* Ray epsilon that works at every scale: a small fraction of the scene
- * extent plus the float resolution at the magnitude of p (measured from the
- * centre of the bounds, where the ray scene works): 1e-5 x extent +
- * 2^-16 x |p - centre|_inf. Shadow and secondary rays start at t = epsilon
- * and stop epsilon short of their end. Alone, that leaves grazing rays from
- * points on tilted or curved surfaces hitting their own surface; the
- * queries below also move the origin off the surface and handle that. */
 double cdl_scene_geometry_ray_epsilon(const cdl_scene_geometry *geometry, cdl_vec3 p);
 
-/* Ray queries that apply the epsilon for the caller (all thread-safe).
- *
- * A point p lying on a surface (a floor grid at z = 0, a hit point) with
- * that surface's normal n starts its rays from p moved epsilon along n, to
- * the side the ray goes (ray_origin; n may be the zero vector: no move).
- * Then every direction of the hemisphere n faces, grazing ones included,
- * leaves the surface without hitting it. Rays also ignore hits closer than
- * epsilon and stop epsilon short of their end.
+/* Embree's float resolution near p (cdl_ray_scene_resolution): closer than
+ * a few of these to a surface, which side of it p is on is beyond Embree. */
+double cdl_scene_geometry_resolution(const cdl_scene_geometry *geometry, cdl_vec3 p);
+
+/* Ray queries (all thread-safe). p may lie on a surface (a floor grid at
+ * z = 0, a hit point): that surface never blocks p's rays, in any
+ * direction, grazing ones included. n is the normal of p's surface (or of
+ * the receiving plane), kept for callers; the queries no longer need it.
  *
  * ray_occluded: anything on p + t dir (dir unit), t in (0, distance)?
  * distance may be INFINITY (directional light, environment, AO).
- * segment_occluded: anything between p and q? Each end may carry the normal
- * of the surface it lies on (an area-light sample), or the zero vector.
+ * segment_occluded: anything strictly between p and q? A surface either
+ * lies on does not count (an area-light sample on its emitter).
  * intersect: the first hit along dir (unit) up to t_max; hit->t is the
  * distance from p. */
-cdl_vec3 cdl_scene_geometry_ray_origin(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 n, cdl_vec3 toward);
 
 /* The segment ray_occluded tests, for callers that query or record it
- * themselves: origin, and t in (t_near, t_far) along dir. The far end stops
- * short of `distance` by the origin's move plus 4 epsilons at the far point,
- * so a ray aimed at a point on a surface (a sample on an area emitter, a
- * luminaire set into a ceiling) never reports that surface. Returns 0 when
- * the segment is too short to hold anything. */
+ * themselves: origin, and t in (t_near, t_far) along dir. Returns 0 when
+ * the segment is empty (distance not positive). */
 int cdl_scene_geometry_shadow_ray(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,
                                   double distance, cdl_vec3 *origin, double *t_near, double *t_far);
 int cdl_scene_geometry_ray_occluded(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,

@@ -398,15 +398,17 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
             if (st != CDL_OK) return st;
             for (size_t i = 0; i < (size_t)p.width * (size_t)p.height; ++i) image[i] = (float)(image[i] * mf);
             p.image = image;
+            proto.is_image = 1;
         } else {
             p.luminance = cdl_nits(sp->luminance_cd_m2 * mf);
-            proto.has_closed_form = 1;
         }
         proto.is_environment = 1;
         proto.upper_only = sp->upper_hemisphere_only;
         proto.up = cdl_vec3_normalize(sp->up);
         L->has_environment = 1;
         st = cdl_emitter_create_environment(&p, &e, err);
+        /* Uniform skies and images alike (an image: the exact pixel sum). */
+        if (st == CDL_OK) proto.has_closed_form = cdl_emitter_has_exact_illuminance(e);
         free(image);
         break;
     }

@@ -82,6 +82,15 @@ void cdl_path_stats_add(cdl_path_stats *to, const cdl_path_stats *from)
     to->direct.sampled_evaluations += from->direct.sampled_evaluations;
 }
 
+void cdl_path_stats_add_tallies(cdl_path_stats *stats, const cdl_path_tally *tallies, size_t count)
+{
+    for (size_t i = 0; i < count; ++i) {
+        stats->last += tallies[i].last;
+        stats->before_last += tallies[i].before_last;
+        stats->total += tallies[i].total;
+    }
+}
+
 double cdl_path_left_out(const cdl_path_stats *stats)
 {
     if (!(stats->total > 0.0) || !(stats->last > 0.0)) return 0.0;

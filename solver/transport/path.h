@@ -22,6 +22,7 @@
 #ifndef CANDELA_SOLVER_TRANSPORT_PATH_H
 #define CANDELA_SOLVER_TRANSPORT_PATH_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "radiometry/rng.h"
@@ -58,10 +59,28 @@ typedef struct cdl_path_result {
     double last, before_last; /* what reflections N and N - 1 gave (bounce limit N) */
 } cdl_path_result;
 
+/* What the bounce-limit estimate needs of one item's paths (a grid point's,
+ * a record's): the sums of their N-th and (N-1)-th reflections and of all
+ * they carried. Kept per item and added to the stats in item order, so
+ * that the sums do not depend on which thread took which item. */
+typedef struct cdl_path_tally {
+    double last, before_last, total;
+} cdl_path_tally;
+
+static inline void cdl_path_tally_add(cdl_path_tally *t, const cdl_path_result *r)
+{
+    t->last += r->last;
+    t->before_last += r->before_last;
+    t->total += r->value;
+}
+
+/* stats' last, before_last and total += those of tallies[0 .. count - 1], in order. */
+void cdl_path_stats_add_tallies(cdl_path_stats *stats, const cdl_path_tally *tallies, size_t count);
+
 /* One path from p (on a surface of unit normal n) leaving along unit
  * `dir`; random numbers from `key` (counter 0 is left to the caller, e.g.
- * for jittering `dir`). Adds to *stats (not to its floating-point tallies,
- * which the caller sums in a fixed order). */
+ * for jittering `dir`). Adds to *stats' counts; its floating-point sums
+ * come from the callers' tallies. */
 void cdl_transport_path(const cdl_path_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,
                         cdl_path_result *out, cdl_path_stats *stats);
 

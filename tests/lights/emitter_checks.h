@@ -24,6 +24,25 @@
 
 typedef double (*direction_fn)(void *ctx, cdl_vec3 w);
 
+/* An environment emitter: uniform (img NULL, luminance L) or a W x H image;
+ * a failed creation is a failed check (and NULL). */
+static inline cdl_emitter *make_environment(double L, const float *img, int w, int h, double scale, int upper,
+                                            cdl_vec3 up)
+{
+    cdl_environment_params p = CDL_ENVIRONMENT_PARAMS_DEFAULT;
+    p.luminance = cdl_nits(L);
+    p.image = img;
+    p.width = w;
+    p.height = h;
+    p.scale = scale;
+    p.upper_hemisphere_only = upper;
+    p.up = up;
+    cdl_emitter *e = NULL;
+    cdl_error err;
+    CHECK_OK(cdl_emitter_create_environment(&p, &e, &err), &err);
+    return e;
+}
+
 /* Configuration factors from a plane element (Howell, "A Catalog of
  * Radiation Heat Transfer Configuration Factors", 3rd ed.), in long double
  * (64-bit significand on x86-64): the perpendicular one subtracts nearly

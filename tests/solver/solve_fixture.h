@@ -16,8 +16,8 @@
  * reported as a failed check. With no_exact_route set, partly hidden lights
  * are sampled even where the visible polygon would be exact (the tests of
  * the sampler). */
-static inline int fixture_solve_route(const char *json, cdl_scene **scene, cdl_solution *sol, int threads,
-                                      int no_exact_route)
+static inline int fixture_solve_options(const char *json, cdl_scene **scene, cdl_solution *sol,
+                                        const cdl_solve_options *o)
 {
     cdl_error err;
     cdl_error_clear(&err);
@@ -27,10 +27,7 @@ static inline int fixture_solve_route(const char *json, cdl_scene **scene, cdl_s
         CHECK(0);
         return 0;
     }
-    cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
-    o.threads = threads;
-    o.no_exact_route = no_exact_route;
-    if (cdl_solve_scene(*scene, &o, sol, &err) != CDL_OK) {
+    if (cdl_solve_scene(*scene, o, sol, &err) != CDL_OK) {
         fprintf(stderr, "solve failed: %s\n", err.message);
         CHECK(0);
         cdl_scene_release(*scene);
@@ -38,6 +35,15 @@ static inline int fixture_solve_route(const char *json, cdl_scene **scene, cdl_s
         return 0;
     }
     return 1;
+}
+
+static inline int fixture_solve_route(const char *json, cdl_scene **scene, cdl_solution *sol, int threads,
+                                      int no_exact_route)
+{
+    cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+    o.threads = threads;
+    o.no_exact_route = no_exact_route;
+    return fixture_solve_options(json, scene, sol, &o);
 }
 
 static inline int fixture_solve(const char *json, cdl_scene **scene, cdl_solution *sol, int threads)

@@ -531,8 +531,9 @@ static void test_method_choices(void)
 /* A lat-long environment image: its top half (polar angle < 90 degrees from
  * up) at 1000 cd/m^2 in Y, the bottom half dark, and in the top half a band
  * of columns u in [0.375, 0.625) - azimuths around +x (phi = pi + 2 pi u)
- * - at 3000 cd/m^2. Sampled by luminance, so the estimates carry a
- * standard error; closed forms for comparison:
+ * - at 3000 cd/m^2. Nothing hides it, so the solver takes the exact sum
+ * over pixels of L times each pixel's projected solid angle (no samples,
+ * E_stderr 0); closed forms for comparison, which know nothing of pixels:
  *   upward receiver: pi L over the upper hemisphere plus the band's excess
  *     (2000 cd/m^2 over a quarter of the azimuths: a quarter of pi x 2000);
  *   receivers facing +x and -x: pi L / 2 each from the uniform part, and the
@@ -568,13 +569,15 @@ static void test_image_environment(void)
     double west = 1000.0 * CDL_PI / 2.0;
     const double expected[3] = {up, east, west};
     for (int i = 0; i < 3; ++i) {
-        CHECK_MSG(se[i] > 0.0 && se[i] < 0.02 * expected[i], "point %d: stderr %g", i, se[i]);
-        /* 4 standard errors; the per-pixel constant luminance is exact for this image */
-        CHECK_MSG(fabs(E[i] - expected[i]) <= 4.0 * se[i], "point %d: E = %g, expected %g +- %g", i, E[i],
-                  expected[i], 4.0 * se[i]);
+        /* Both exact: rounding over 2048 pixel terms, well below 1e-12. */
+        CHECK_REL(E[i], expected[i], 1e-12);
+        CHECK(se[i] == 0.0);
     }
-    CHECK(E[3] == 0.0); /* facing down: the ground half is black */
-    CHECK(strstr(sol.plan_json, "sampled") != NULL);
+    /* facing down: the ground half is black (the band's edges lie on the
+     * receiver's horizon: at most rounding) */
+    CHECK_ABS(E[3], 0.0, 1e-12 * up);
+    CHECK(se[3] == 0.0);
+    CHECK(strstr(sol.plan_json, "the exact sum over its pixels") != NULL);
     fixture_release(scene, &sol);
 }
 
@@ -861,8 +864,8 @@ static void test_goniometric_tilt_and_flux(void)
 /* An environment image without a Y channel: luminance is the Rec. 709 luma
  * 0.2126 R + 0.7152 G + 0.0722 B, times scale and maintenance factor
  * (DESIGN.md). A uniform RGB image is a uniform sphere of that luminance: pi
- * L on any plane, here estimated by sampling (images are always sampled),
- * within 4 standard errors. */
+ * L on any plane, which the exact pixel sum gives to rounding (nothing
+ * hides the sky: no samples, E_stderr 0). */
 static void test_environment_rgb_scale(void)
 {
     enum { W = 16, H = 8 };
@@ -886,9 +889,10 @@ static void test_environment_rgb_scale(void)
     double L = (0.2126 * 1000.0 + 0.7152 * 2000.0 + 0.0722 * 500.0) * 2.5 * 0.6;
     for (int i = 0; i < 2; ++i) {
         double E = sol.grids[0].E[i], se = sol.grids[0].E_stderr[i];
-        /* per sample 4 pi L cos over half the sphere: sd 1.29 pi L; 65536 samples: 0.5 % */
-        CHECK_MSG(se > 0.0 && se < 0.01 * CDL_PI * L, "point %d: stderr %g", i, se);
-        CHECK_MSG(fabs(E - CDL_PI * L) <= 4.0 * se, "point %d: E = %g, expected %g +- %g", i, E, CDL_PI * L, 4.0 * se);
+        /* The image keeps luminance in float: the luma and the maintenance
+         * factor each round it by at most 2^-24 = 6e-8 relative. */
+        CHECK_REL(E, CDL_PI * L, 2e-7);
+        CHECK(se == 0.0);
     }
     fixture_release(scene, &sol);
 }

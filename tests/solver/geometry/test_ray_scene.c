@@ -4,6 +4,48 @@
 #include "check.h"
 #include "solver/geometry/ray_scene.h"
 
+/* Hits near a ray's ends are decided in double (ray_scene.c): a 1 km floor
+ * (z = 0) and wall (x = 0), and a sphere of radius 1 at (200, 0, 50). Every
+ * expected t is the line-plane (line-sphere) distance, exact to rounding. */
+static void test_ends_in_double(void)
+{
+    cdl_error err;
+    cdl_ray_scene *s = NULL;
+    CHECK_OK(cdl_ray_scene_create(&s, &err), &err);
+    if (!s) return;
+    const double floor_xyz[] = {-500, -500, 0, 500, -500, 0, 500, 500, 0, -500, 500, 0};
+    const double wall_xyz[] = {0, -500, 0, 0, 500, 0, 0, 500, 1000, 0, -500, 1000};
+    const uint32_t quad[] = {0, 1, 2, 0, 2, 3};
+    uint32_t floor_id, wall_id, sphere_id;
+    CHECK_OK(cdl_ray_scene_add_triangles(s, floor_xyz, 4, quad, 2, &floor_id, &err), &err);
+    CHECK_OK(cdl_ray_scene_add_triangles(s, wall_xyz, 4, quad, 2, &wall_id, &err), &err);
+    CHECK_OK(cdl_ray_scene_add_sphere(s, cdl_vec3_make(200, 0, 50), 1.0, &sphere_id, &err), &err);
+    CHECK_OK(cdl_ray_scene_commit(s, &err), &err);
+    cdl_ray_hit hit;
+    /* From the floor 0.1 mm off the wall's foot, towards the wall and up
+     * 0.1 %: the wall at t = 1e-4 / |dx|, not the floor the ray starts on. */
+    cdl_vec3 d = cdl_vec3_normalize(cdl_vec3_make(-1, 0, 1e-3));
+    CHECK(cdl_ray_scene_intersect(s, cdl_vec3_make(1e-4, 0, 0), d, 0.0, INFINITY, &hit));
+    CHECK(hit.geom_id == wall_id);
+    CHECK_REL(hit.t, 1e-4 / -d.x, 1e-9);
+    CHECK(cdl_ray_scene_occluded(s, cdl_vec3_make(1e-4, 0, 0), d, 0.0, INFINITY));
+    /* Grazing away from the wall along the floor (1e-9 rad up): nothing. */
+    cdl_vec3 graze = cdl_vec3_normalize(cdl_vec3_make(1, 0.3, 1e-9));
+    CHECK(!cdl_ray_scene_occluded(s, cdl_vec3_make(0.3, 0.2, 0), graze, 0.0, INFINITY));
+    CHECK(!cdl_ray_scene_intersect(s, cdl_vec3_make(0.3, 0.2, 0), graze, 0.0, INFINITY, &hit));
+    /* A segment ending on the floor does not count it; one 1 um longer does. */
+    CHECK(!cdl_ray_scene_occluded(s, cdl_vec3_make(0.3, 0.2, 5), cdl_vec3_make(0, 0, -1), 0.0, 5.0));
+    CHECK(cdl_ray_scene_occluded(s, cdl_vec3_make(0.3, 0.2, 5), cdl_vec3_make(0, 0, -1), 0.0, 5.000001));
+    /* From a point on the sphere, inwards along the diameter: the far side
+     * at t = 2, not the start. */
+    CHECK(cdl_ray_scene_intersect(s, cdl_vec3_make(201, 0, 50), cdl_vec3_make(-1, 0, 0), 0.0, INFINITY, &hit));
+    CHECK(hit.geom_id == sphere_id);
+    CHECK_REL(hit.t, 2.0, 1e-12);
+    /* and outwards: nothing (the floor is below, the wall behind the sphere) */
+    CHECK(!cdl_ray_scene_occluded(s, cdl_vec3_make(201, 0, 50), cdl_vec3_make(1, 0, 0), 0.0, INFINITY));
+    cdl_ray_scene_release(s);
+}
+
 int main(void)
 {
     cdl_error err;
@@ -46,5 +88,6 @@ int main(void)
     CHECK_ABS(hit.t, 5.0 - sqrt(0.25 - 0.49 * 0.49), 1e-4);
     CHECK(!cdl_ray_scene_intersect(s, cdl_vec3_make(0, 0.51, 0), cdl_vec3_make(1, 0, 0), 0.0, INFINITY, &hit));
     cdl_ray_scene_release(s);
+    test_ends_in_double();
     return check_finish();
 }

@@ -78,9 +78,8 @@ static void room_json(double s, char *out, size_t size)
 
 /* Does segment pq cross the table top or the disk? (Exact geometry.)
  * *margin receives how far (m) the crossing points lie from the edges of
- * those occluders: rays start epsilon off the surface and the disk is an
- * inscribed fan, so shadow edges may move by about 1e-4 m; closer calls
- * are not compared. */
+ * those occluders: the disk is an inscribed fan, so shadow edges may move
+ * by about 1e-4 m; closer calls are not compared. */
 static int shadowed_exactly(cdl_vec3 p, cdl_vec3 q, double *margin)
 {
     cdl_vec3 d = cdl_vec3_sub(q, p);
