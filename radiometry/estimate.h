@@ -46,14 +46,24 @@ typedef struct cdl_round {
     uint64_t nonzero;  /* samples != 0 */
 } cdl_round;
 
-/* Add the two samples of one stratum. */
-static inline void cdl_round_add_pair(cdl_round *r, double f1, double f2)
+/* Add the two samples of a stratum of w times the average measure (a
+ * round whose strata differ in size, their w summing to H): with weights
+ * W_h = w_h / H the stratified mean is sum_h W_h (f_h1 + f_h2) / 2 and
+ * Var(m) = sum_h W_h^2 sigma_h^2 / 2 (Cochran 1977, 5.3 and 5A.12), so the
+ * pair's terms are w (f1 + f2) and w^2 d^2. */
+static inline void cdl_round_add_weighted_pair(cdl_round *r, double f1, double f2, double w)
 {
     double d = f1 - f2;
-    r->sum += f1 + f2;
-    r->sum_d2 += d * d;
+    r->sum += w * (f1 + f2);
+    r->sum_d2 += w * w * d * d;
     r->strata += 1.0;
     r->nonzero += (uint64_t)(f1 != 0.0) + (uint64_t)(f2 != 0.0);
+}
+
+/* Add the two samples of one stratum (of the average measure). */
+static inline void cdl_round_add_pair(cdl_round *r, double f1, double f2)
+{
+    cdl_round_add_weighted_pair(r, f1, f2, 1.0);
 }
 
 /* The pooled estimate of all rounds so far. */
@@ -98,20 +108,24 @@ double cdl_estimate_bound_variance(const cdl_estimate *e, double jump);
 
 /* Samples for each of `count` estimates sampled together (the sampled
  * lights of one point) so that the sum of their variances reaches
- * `target_variance` with the fewest samples in all. Each was measured by a
- * pilot of `pilot_samples` samples with variance of the mean variance[j],
- * and is modelled as Var_j(N) = variance[j] (pilot_samples / N)^alpha
- * (alpha = 1 for independent samples; stratified samples of a step fall
- * faster, as N^-1.5). Minimising sum N_j subject to sum Var_j(N_j) = V by
- * a Lagrange multiplier gives N_j proportional to variance[j]^(1/(1+alpha))
- * (for alpha = 1, Neyman's allocation: proportional to the per-sample
- * standard deviation; Cochran 1977, 5.5), scaled by
- *     s = (sum_j variance[j]^(1/(1+alpha)) / V)^(1/alpha),
- *     N_j = pilot_samples s variance[j]^(1/(1+alpha)).
- * Each is then at least `least` and at most `most`; an estimate of
- * variance 0 gets `least`. */
-void cdl_estimate_allocate_samples(const double *variance, double *samples, int count, double pilot_samples,
-                                   double alpha, double target_variance, double least, double most);
+ * `target_variance` with the fewest samples in all. Estimate j was last
+ * measured by a round of pilot[j] samples with variance of the mean
+ * variance[j], and is modelled as Var_j(N) = variance[j] (pilot[j] /
+ * N)^alpha[j] (alpha = 1 for independent samples; stratified samples of a
+ * step fall as N^-1.5). Minimising sum N_j subject to sum Var_j(N_j) = V
+ * by a Lagrange multiplier lambda gives
+ *     1 = lambda alpha_j variance[j] pilot[j]^alpha_j N_j^-(1 + alpha_j),
+ *     N_j = (lambda alpha_j variance[j] pilot[j]^alpha_j)^(1 / (1 + alpha_j))
+ * (for alpha = 1, Neyman's allocation: N_j proportional to the per-sample
+ * standard deviation; Cochran 1977, 5.5). Each N_j is held to
+ * [least, most] and lambda found by bisection (the sum of the modelled
+ * variances falls as lambda grows) to the resolution of doubles. An
+ * estimate of variance 0 gets `least`. A target out of reach even with
+ * every N_j at `most` is planned as if there were no bounds, then each N_j
+ * bounded (the others are not pushed to `most` by one that cannot meet
+ * its share). */
+void cdl_estimate_allocate_samples(const double *variance, const double *pilot, const double *alpha, double *samples,
+                                   int count, double target_variance, double least, double most);
 
 /* Samples needed for the variance of the mean to reach `target_variance`,
  * from a pilot's variance per sample (Var = c / N), twice as many as that

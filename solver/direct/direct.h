@@ -102,6 +102,7 @@ typedef enum cdl_direct_route {
 typedef struct cdl_direct_route_tally {
     uint64_t points[CDL_ROUTE_COUNT];
     uint32_t most_occluders;          /* most occluders past which a point took the exact route */
+    uint64_t capped;                  /* sampled points whose stage the cap of samples held below its plan */
 } cdl_direct_route_tally;
 
 typedef struct cdl_direct_sample_stats {

@@ -219,6 +219,7 @@ void cdl_direct_stats_add(cdl_direct_sample_stats *a, const cdl_direct_sample_st
     if (!a->routes || !b->routes) return;
     for (size_t l = 0; l < light_count; ++l) {
         for (int r = 0; r < CDL_ROUTE_COUNT; ++r) a->routes[l].points[r] += b->routes[l].points[r];
+        a->routes[l].capped += b->routes[l].capped;
         if (b->routes[l].most_occluders > a->routes[l].most_occluders)
             a->routes[l].most_occluders = b->routes[l].most_occluders;
     }
@@ -258,5 +259,8 @@ void cdl_direct_route_describe(const cdl_direct_route_tally *t, char *out, size_
             APPEND("%ssampled: %s at %" PRIu64 " points", sep, why[r], t->points[r]);
             sep = "; ";
         }
+    if (t->capped)
+        APPEND("%sthe cap of %.0f samples a light held %" PRIu64 " points short of the target (their stated error "
+               "is larger)", sep, CDL_DIRECT_MAX_SAMPLES, t->capped);
 #undef APPEND
 }

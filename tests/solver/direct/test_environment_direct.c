@@ -62,8 +62,9 @@ static void test_unoccluded(void)
  * under the uniform sky. Either way E = L x the opening's projected solid
  * angle (Lambert's polygon formula) exactly. The solver samples the hidden
  * part to the quality's target t: each point within 3 stated sigma, most
- * within 2, and the stated sigma between t E / 1.5 and t E (it stops once
- * below t E, and rounds are sized not to overshoot by much). The deep well
+ * within 2, and the stated sigma within a factor 1.5 of t E either way (a
+ * pilot plans the reported stage, direct_extended.c: the stage lands near
+ * the target, on either side of it). The deep well
  * at "high" would need about 3.5e6 samples a point (78 % of the cap's
  * E_0 hidden: per-sample sd 0.41 E_0 against a target of 1e-3 E =
  * 2.2e-4 E_0), beyond
@@ -103,7 +104,7 @@ static void test_light_well(const char *quality, double target, int deep)
         double E = g->E[i], se = g->E_stderr[i];
         CHECK_MSG(fabs(E - exact) <= 3.0 * se, "%s point %d: E = %.6g, exact %.6g, sigma %.3g", quality, i, E, exact, se);
         within2 += fabs(E - exact) <= 2.0 * se;
-        CHECK_MSG(se <= target * E * 1.0000001 && se >= target * E / 1.5, "%s point %d: sigma %.3g, target %.3g", quality,
+        CHECK_MSG(se <= target * E * 1.5 && se >= target * E / 1.5, "%s point %d: sigma %.3g, target %.3g", quality,
                   i, se, target * E);
     }
     CHECK_MSG(within2 >= P - 2, "%s: %d of %d points within 2 sigma", quality, within2, P);
