@@ -5,16 +5,25 @@
  * a uniform sky (parallel-rectangle configuration factors), the window room
  * of data/daylight (Lambert's form of the window) and a luminous wall
  * behind a partition (Lambert's form of its visible rectangle), at
- * "normal" and "high".
+ * "draft", "normal" and "high".
  *
  * DESIGN.md asks for about 68 % of points within one stated sigma and 95 %
- * within two, no bias, and (the direct-light issue) a stated sigma within a
- * factor 1.5 of the target. calibration_check (solve_fixture.h) holds each
- * quality's tally to the first three within four binomial sigmas. The
- * sigma / target range and the points beyond a factor 1.5 either way are
- * printed, not checked: at "high" the cap of samples a light
- * (CDL_DIRECT_MAX_SAMPLES) binds on the well, and a 72-sample pilot judges
- * an edge's variance only roughly (see the closing note of the work).
+ * within two, no bias: calibration_check (solve_fixture.h) holds each
+ * quality's tally to these within four binomial sigmas. The direct-light
+ * issue asks for a stated sigma within a factor 1.5 of the target
+ * wherever the cap of samples a light (CDL_DIRECT_MAX_SAMPLES) does not
+ * bind, and the plan to say where it does. A stated sigma is itself an
+ * estimate: at a fixed sample count, with no planning at all, it scatters
+ * over seeds by 0.58-1.43 of its mean at 128 samples (a "draft" stage on
+ * the partition: a few strata along the edge differ) and by 0.60-1.25 at
+ * 1152, up to 5 % and 1 % of seeds beyond a factor 1.5; planned, about
+ * 99 % of the points the cap did not hold were within a factor 1.5 at
+ * "normal" and "high", 93 % at "draft". So each scene is held to: at least
+ * 95 % of those points within a factor 1.5 at "normal" and "high" (85 % at
+ * "draft", where stages are a few hundred samples), none beyond a factor 2
+ * (3 at "draft") but as many as the plan says the cap held; and at "high"
+ * the well's every point held by the cap (it needs ~3.5e6 samples a
+ * point).
  */
 // ctest-labels: slow
 #include <math.h>
@@ -32,9 +41,13 @@
 
 typedef double (*exact_fn)(cdl_vec3 p, cdl_vec3 n);
 
-/* Points of a quality whose stated sigma is above 1.5 times the target,
- * and below it by that factor. */
-static size_t near_target[2];
+/* How a scene's stated sigmas sit against the target: points within a
+ * factor 1.5 of it either way, points beyond the factor `wide`, and the
+ * points whose stage the cap held (the plan's count). */
+typedef struct band {
+    size_t count, within, beyond, capped;
+    double wide;
+} band;
 
 /* The well (data/daylight/light_well.json): a 1 x 1 x 3 m black shaft open
  * at the top; a floor point sees pi L F of the opening. */
@@ -94,9 +107,10 @@ static void partition_scene(char *json, size_t size, const char *quality)
 }
 
 /* Solve `json` (or data/daylight/`file`) at `quality` with the route off
- * and tally every point against `exact`; also into `scene_tally`. */
+ * and tally every point against `exact`, into `all` and `scene_tally`,
+ * and its sigma against the target into `b`. */
 static void tally_scene(const char *json, const char *file, cdl_quality quality, exact_fn exact, calibration *all,
-                        calibration *scene_tally)
+                        calibration *scene_tally, band *b)
 {
     char path[1024];
     cdl_scene *scene = NULL;
@@ -129,44 +143,61 @@ static void tally_scene(const char *json, const char *file, cdl_quality quality,
         calibration_add(all, g->E[i], expected, g->E_stderr[i], target);
         calibration_add(scene_tally, g->E[i], expected, g->E_stderr[i], target);
         double r = g->E_stderr[i] / (target * expected);
-        near_target[0] += r > 1.5;
-        near_target[1] += r < 1.0 / 1.5;
+        b->count++;
+        b->within += r <= 1.5 && r >= 1.0 / 1.5;
+        b->beyond += r > b->wide || r < 1.0 / b->wide;
     }
+    b->capped = fixture_capped_points(sol.plan_json);
     fixture_release(scene, &sol);
 }
 
-static void test_calibration(cdl_quality quality, const char *name)
+/* The scenes at one quality: calibration over all points, and each scene's
+ * sigma against the target (at least `least_within` of the points the cap
+ * did not hold within a factor 1.5, none beyond `wide` but as many as it
+ * held). */
+static void test_calibration(cdl_quality quality, const char *name, double least_within, double wide)
 {
     calibration all = CALIBRATION_INIT;
-    calibration well = CALIBRATION_INIT, roof = CALIBRATION_INIT, window = CALIBRATION_INIT,
-                partition = CALIBRATION_INIT;
+    calibration tallies[4] = {CALIBRATION_INIT, CALIBRATION_INIT, CALIBRATION_INIT, CALIBRATION_INIT};
+    band bands[4];
+    for (int s = 0; s < 4; ++s) bands[s] = (band){0, 0, 0, 0, wide};
     char json[16384], label[64];
-    near_target[0] = near_target[1] = 0;
-    tally_scene(NULL, "light_well.json", quality, well_exact, &all, &well);
+    tally_scene(NULL, "light_well.json", quality, well_exact, &all, &tallies[0], &bands[0]);
     snprintf(json, sizeof json, roof_scene, name);
-    tally_scene(json, NULL, quality, roof_exact, &all, &roof);
-    tally_scene(NULL, "window_room.json", quality, window_exact, &all, &window);
+    tally_scene(json, NULL, quality, roof_exact, &all, &tallies[1], &bands[1]);
+    tally_scene(NULL, "window_room.json", quality, window_exact, &all, &tallies[2], &bands[2]);
     partition_scene(json, sizeof json, name);
-    tally_scene(json, NULL, quality, partition_exact, &all, &partition);
-    /* Per scene printed for the record; the scenes' counts (48 to 192) are
-     * too small for the four-sigma bounds to say much one by one. */
-    const calibration *each[4] = {&well, &roof, &window, &partition};
+    tally_scene(json, NULL, quality, partition_exact, &all, &tallies[3], &bands[3]);
+    /* Calibration per scene printed for the record; the scenes' counts (48
+     * to 192) are too small for the four-sigma bounds to say much one by
+     * one. */
     const char *names[4] = {"well", "roof", "window", "partition"};
-    for (int s = 0; s < 4; ++s)
-        printf("  %s %s: %zu points, %.1f %% within 1 sigma, %.1f %% within 2, mean %+.3f sigma, sigma / target "
-               "%.2f .. %.2f\n",
-               name, names[s], each[s]->count, 100.0 * each[s]->within1 / each[s]->count,
-               100.0 * each[s]->within2 / each[s]->count, each[s]->zsum / each[s]->count,
-               each[s]->sigma_over_target_min, each[s]->sigma_over_target_max);
-    printf("  %s: sigma above 1.5 x target at %zu points, below target / 1.5 at %zu\n", name, near_target[0],
-           near_target[1]);
+    for (int s = 0; s < 4; ++s) {
+        const calibration *c = &tallies[s];
+        const band *b = &bands[s];
+        printf("  %s %s: %zu points, %.1f %% within 1 sigma, %.1f %% within 2, mean %+.3f sigma; sigma / target "
+               "%.2f .. %.2f, within a factor 1.5 at %zu, beyond %g at %zu, the cap held %zu\n",
+               name, names[s], c->count, 100.0 * c->within1 / c->count, 100.0 * c->within2 / c->count,
+               c->zsum / c->count, c->sigma_over_target_min, c->sigma_over_target_max, b->within, wide, b->beyond,
+               b->capped);
+        size_t free_points = b->count > b->capped ? b->count - b->capped : 0;
+        CHECK_MSG((double)b->within >= least_within * (double)free_points,
+                  "%s %s: %zu of %zu points within a factor 1.5 of the target (the cap held %zu)", name, names[s],
+                  b->within, b->count, b->capped);
+        CHECK_MSG(b->beyond <= b->capped, "%s %s: %zu points beyond a factor %g of the target, the cap held %zu", name,
+                  names[s], b->beyond, wide, b->capped);
+    }
+    if (quality == CDL_QUALITY_HIGH)
+        CHECK_MSG(bands[0].capped == bands[0].count, "high: the cap held %zu of the well's %zu points",
+                  bands[0].capped, bands[0].count);
     snprintf(label, sizeof label, "sampled direct light, %s", name);
     calibration_check(&all, label);
 }
 
 int main(void)
 {
-    test_calibration(CDL_QUALITY_NORMAL, "normal");
-    test_calibration(CDL_QUALITY_HIGH, "high");
+    test_calibration(CDL_QUALITY_DRAFT, "draft", 0.85, 3.0);
+    test_calibration(CDL_QUALITY_NORMAL, "normal", 0.95, 2.0);
+    test_calibration(CDL_QUALITY_HIGH, "high", 0.95, 2.0);
     return check_finish();
 }
