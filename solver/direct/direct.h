@@ -91,6 +91,7 @@ typedef enum cdl_direct_route {
     CDL_ROUTE_CURVED_EMITTER,         /* sampled: a disk, sphere or non-planar emitter */
     CDL_ROUTE_TOO_COMPLEX,            /* sampled: the visible part had too many pieces */
     CDL_ROUTE_IMAGE_SKY,              /* sampled: an image sky is not one luminance */
+    CDL_ROUTE_OVERCAST_SKY,           /* sampled: the CIE overcast sky is not one luminance */
     CDL_ROUTE_DISABLED,               /* sampled: the context asked for it (no_exact_route) */
     CDL_ROUTE_COUNT
 } cdl_direct_route;
