@@ -74,11 +74,12 @@
  * next pilot round would be larger than the stage. The variance of a step
  * is a count of differing pairs (estimate.h), Poisson, so known to
  * 1 / sqrt(D) relative: 35 % at 8, its sigma to 18 %. Measured on the
- * partition scene of test_direct_calibration (a luminous wall half hidden,
- * few strata along one edge): without the rule sigma / target spread over
- * 0.39-1.45 at "normal" and 0.62-1.33 at "high"; with 8 pairs over
- * 0.65-1.28 and 0.76-1.22, for 22 % more rays at "high"; 16 pairs gained
- * no more at "normal" and cost 11 % more rays at "high". */
+ * partition scene of test_direct_calibration (a luminous wall partly
+ * hidden, few strata along the edge): without the rule sigma / target
+ * spread over 0.62-1.45 at "normal" and 0.62-1.33 at "high"; with 8 pairs
+ * over 0.65-1.28 and 0.76-1.22, for 22 % more rays at "high" (1 % more
+ * over the four scenes at "normal"); 16 pairs gained little more (0.78 at
+ * "high") for 36 %. */
 #define PLAN_PAIRS 8.0
 
 /* How fast a light's stage variance falls with its samples, Var ~ N^-alpha,
@@ -90,10 +91,11 @@
  * sampler.h) turns u1 into a run of pixels along rows, u1's fraction
  * placing the direction within each pixel: a stratum is a comb of slivers
  * over many pixels that an edge crosses nearly all of, until strata are
- * narrower than a pixel in u1; measured over 72 to 73728 samples on the
- * image wells of test_environment_direct (16 seeds) the variance fell as
- * N^-1.17 to N^-1.24. Planned with 1.5 the image wells' sigma reached 1.8
- * times the target, with 1 it stayed at 0.2-0.5 of it.
+ * narrower than a pixel in u1; measured from 72 to 73728 samples at 8
+ * points of the image wells of test_environment_direct (16 seeds each) the
+ * variance fell as N^-1.06 to N^-1.43, N^-1.22 on average. Planned with
+ * 1.5 the image wells' sigma reached 1.8 times the target, with 1 it
+ * stayed at 0.2-0.5 of it; with 1.2 it lies within 0.72-1.34.
  *
  * Why by sampler and not measured point by point: the exponent can be
  * measured from one round (the variance of its 2 x 2 blocks of strata
@@ -102,10 +104,10 @@
  * it crosses carry the measurement, and it scattered by 0.1-0.3 between
  * seeds however large the round; on image skies it was tight but followed
  * the scale of the pilot's strata (1.0-1.7 by round size), not the slope
- * out to the stage. Planned with the measured exponent (weighed against
- * these by their spreads) sigma / target spread over 0.59-1.86 on the
- * image wells and 0.58-1.13 on the partition at "normal"; with these
- * alone, 0.72-1.26 and 0.65-1.28. */
+ * out to the stage. An earlier revision of this planner that used the
+ * measured exponent (weighed against these by their spreads) left an
+ * image well's sigma at up to 1.86 times the target at "high"; these
+ * alone keep the image wells within 0.72-1.34. */
 #define ALPHA_STEP 1.5
 #define ALPHA_IMAGE 1.2
 
@@ -196,8 +198,8 @@ static double golden_offset(int64_t j)
  * evenly over [0, 1), whatever k and c, and the variance is that of an
  * edge in general position. On the partition scene of test_direct_
  * calibration (the wall's hidden part ends at a line of constant u1)
- * sigma / target spread over 0.19-3.31 at "high" before, 0.78-1.22 with
- * the bricks.
+ * sigma / target spread over 0.34-2.05 at "normal" and 0.22-2.35 at
+ * "high" without the bricks, 0.65-1.28 and 0.76-1.22 with them.
  *
  * Also the round's differing pairs in effect, t->pairs = (sum w^2 d^2)^2
  * / sum w^4 d^4: D for a step (every differing pair alike), more where
