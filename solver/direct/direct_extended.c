@@ -175,9 +175,9 @@ static double stratum_sample(const cdl_direct_context *ctx, term *t, const doubl
 }
 
 /* The fractional part of j times the golden ratio: offsets that stay
- * evenly spread for every run of rows (Weyl's equidistribution; the golden
- * ratio's, the most evenly: Kuipers and Niederreiter, "Uniform Distribution
- * of Sequences", 1974, 1.5). */
+ * evenly spread for every run of rows (Weyl's equidistribution theorem;
+ * of all irrationals the golden ratio, whose continued fraction is all
+ * ones, leaves the most even gaps: the three-distance theorem, Sos 1958). */
 static double golden_offset(int64_t j)
 {
     const double phi = 0.61803398874989484820; /* (sqrt 5 - 1) / 2 */

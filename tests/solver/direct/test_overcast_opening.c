@@ -4,7 +4,8 @@
  * exact route off and on. The sky's luminance varies with height, so the
  * exact route (one luminance times a visible polygon) refuses it: both
  * ways the hidden part is sampled, the plan says why, and the two solves
- * give the same bytes.
+ * (the route off on 2 threads, on with 1) give the same bytes: the pilots
+ * and stage of a point depend on neither.
  *
  * The exact answer, computed here from the CIE formula and nothing of the
  * solver's: seen from a floor point p (normal up) the hole, at height h
