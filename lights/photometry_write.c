@@ -103,19 +103,7 @@ cdl_status cdl_photometry_write_file(const cdl_photometry *p, const char *path, 
     /* No half-written output (radiometry/atomic_file.h). A file that cannot
      * be created there (a missing or read-only folder) is the user's path
      * to fix: bad input; failing writes and syncs stay internal failures. */
-    cdl_atomic_file out;
-    st = cdl_atomic_file_open(&out, path, err);
-    if (st != CDL_OK) {
-        st = CDL_ERR_INPUT;
-        if (err) err->status = st;
-    } else {
-        if (len > 0 && fwrite(text, 1, len, out.fp) != len) {
-            cdl_atomic_file_abort(&out);
-            st = cdl_error_set(err, CDL_ERR_INTERNAL, "%s: write failed", path);
-        } else {
-            st = cdl_atomic_file_commit(&out, err);
-        }
-    }
+    st = cdl_atomic_file_write_all(path, text, len, err);
     free(text);
     return st;
 }

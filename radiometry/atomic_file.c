@@ -150,3 +150,16 @@ cdl_status cdl_atomic_file_commit(cdl_atomic_file *file, cdl_error *err)
     reset(file);
     return CDL_OK;
 }
+
+cdl_status cdl_atomic_file_write_all(const char *path, const void *data, size_t size, cdl_error *err)
+{
+    cdl_atomic_file file;
+    if (cdl_atomic_file_open(&file, path, err) != CDL_OK) {
+        if (err) err->status = CDL_ERR_INPUT;
+        return CDL_ERR_INPUT;
+    }
+    /* A short write leaves the stream's error flag set: commit reports it
+     * and keeps the previous file. */
+    if (size > 0) (void)fwrite(data, 1, size, file.fp);
+    return cdl_atomic_file_commit(&file, err);
+}

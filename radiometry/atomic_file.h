@@ -37,4 +37,10 @@ cdl_status cdl_atomic_file_open(cdl_atomic_file *file, const char *path, cdl_err
 cdl_status cdl_atomic_file_commit(cdl_atomic_file *file, cdl_error *err);
 void cdl_atomic_file_abort(cdl_atomic_file *file);
 
+/* The `size` bytes at `data` as the whole file at `path`: open, write,
+ * commit. A file that cannot be created there (a missing or read-only
+ * folder) is the caller's path to fix: CDL_ERR_INPUT; a failing write,
+ * sync or rename stays CDL_ERR_INTERNAL. */
+cdl_status cdl_atomic_file_write_all(const char *path, const void *data, size_t size, cdl_error *err);
+
 #endif

@@ -40,6 +40,9 @@ typedef struct cdl_solution {
     double compute_seconds;           /* the grids' points only (setup excluded) */
     uint64_t rays;
     uint64_t records;                 /* irradiance-cache records used, all grids */
+    uint64_t records_gathered;        /* of those, gathered by this solve (the others read from a cache file) */
+    int cache_reused;                 /* 1: the records came from options->cache_path; 0: none asked for, or
+                                         gathered and written to it */
 } cdl_solution;
 
 /* Zeroed arrays for the grid's points (gs->grid built): E, E_direct,

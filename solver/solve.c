@@ -6,15 +6,19 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "radiometry/constants.h"
+#include "radiometry/content_hash.h"
 #include "radiometry/rng.h"
 #include "solver/direct/direct.h"
 #include "solver/direct/direct_grid.h"
 #include "solver/geometry/occluder_index.h"
 #include "solver/icache/icache.h"
+#include "solver/icache/icache_file.h"
 #include "solver/pathtrace/pathtrace.h"
 #include "solver/scene/scene_geometry.h"
+#include "solver/scene/scene_hash.h"
 #include "solver/scene/scene_lights.h"
 #include "solver/scene/scene_occluders.h"
 
@@ -51,20 +55,30 @@ static const char *first_reflector(const cdl_scene *scene, double *rho)
     return NULL;
 }
 
-/* Under "auto", the grids of at least this many points take the irradiance
- * cache, smaller ones path tracing. Measured (tools/bench, this machine):
- * on the Radiance peer's room (81 points, quality high) path tracing takes
- * 0.95 s, the cache more, since every record costs about two points' paths
- * and 81 points need tens of records; on the closed cube's 100 x 100 floor
- * the cache is many times faster (figures in bench_icache). The crossing
- * lies between a few hundred and a thousand points. */
-#define CDL_AUTO_CACHE_POINTS 1000
+/* Under "auto", a grid takes the irradiance cache when its point count
+ * times the target relative error is at least CDL_AUTO_CACHE_SCORE, else
+ * path tracing. Why a product: path tracing costs points / t^2; the cache
+ * costs records / t^2 (each record gathered to about a point's variance),
+ * and its records, spaced in proportion to sqrt t (icache.c), number about
+ * 1 / t over a grid's area, so the ratio goes as points t. Measured (user
+ * CPU seconds at equal RMS error against path tracing to 0.05 % or finer):
+ *  - the Radiance peer's room, 81 points, high (0.1 %): path tracing 0.3 s
+ *    for the cache's 0.14 % RMS, the cache 1.2 s (points t = 0.08);
+ *  - the office work plane, 60 points, normal (0.5 %): the cache 0.26 s for
+ *    0.41 % RMS, path tracing about 0.32 s (points t = 0.3); at 240 points
+ *    the cache 0.57 s, path tracing 2.3 s at its (smaller) stated error;
+ *  - the closed cube's 10 000 floor and 2500 wall points at normal: the
+ *    cache several times cheaper (bench_icache).
+ * The crossing lies near points t = 0.3 to 0.4. */
+#define CDL_AUTO_CACHE_SCORE 0.4
 
-/* The method that computes a grid's interreflection. */
-static cdl_method grid_method(cdl_method method, const cdl_grid *grid)
+/* The method that computes a grid's interreflection, and the point count
+ * times the target that chose it under "auto". */
+static cdl_method grid_method(cdl_method method, const cdl_grid *grid, double target, double *score)
 {
+    *score = (double)grid->count * target;
     if (method == CDL_METHOD_ICACHE || method == CDL_METHOD_PATHTRACE) return method;
-    return grid->count >= CDL_AUTO_CACHE_POINTS && grid->raster_width > 0 ? CDL_METHOD_ICACHE : CDL_METHOD_PATHTRACE;
+    return *score >= CDL_AUTO_CACHE_SCORE ? CDL_METHOD_ICACHE : CDL_METHOD_PATHTRACE;
 }
 
 /* The method, and whether interreflection is computed at all (*indirect),
@@ -95,8 +109,8 @@ static cdl_status choose_method(const cdl_scene *scene, cdl_method *method, int 
         *indirect = 1;
         snprintf(why, sizeof why,
                  "%s reflects %g %%: interreflected light to the target, each grid by the method cheaper for it "
-                 "(see grids: the irradiance cache for maps of %d points or more, path tracing below)",
-                 reflector, rho * 100.0, CDL_AUTO_CACHE_POINTS);
+                 "(see grids: the irradiance cache where points x target error >= %g, path tracing below)",
+                 reflector, rho * 100.0, CDL_AUTO_CACHE_SCORE);
         break;
     case CDL_METHOD_PATHTRACE:
         *indirect = reflector != NULL;
@@ -163,15 +177,135 @@ static cdl_status check_finite(const cdl_scene *scene, const cdl_scene_lights *l
  * when other grids are added, removed or reordered. */
 static uint64_t grid_key(const char *name)
 {
-    uint64_t h = 0xcbf29ce484222325ull;
-    for (const unsigned char *c = (const unsigned char *)name; *c; ++c) h = (h ^ *c) * 0x100000001b3ull;
-    return h;
+    cdl_content_hash h = CDL_CONTENT_HASH_INIT;
+    cdl_content_hash_raw(&h, name, strlen(name));
+    return h.value;
 }
 
 static void release_records(cdl_icache_records *records, size_t count)
 {
     for (size_t g = 0; g < count; ++g) cdl_icache_records_release(&records[g]);
     free(records);
+}
+
+/* ---- the cache file (icache/icache_file.h) ---------------------------------------- */
+
+typedef struct cache_use {
+    const char *path;
+    cdl_icache_key key;
+    size_t *grids;            /* the grids the irradiance cache solves */
+    size_t count;
+    int reused;               /* 1: their records were read from the file */
+    uint64_t records_read;
+} cache_use;
+
+/* A missing cache file is written after the solve: its folder must take it
+ * (checked now, not after a long solve). */
+static cdl_status check_cache_folder(const char *path, cdl_error *err)
+{
+    const char *slash = strrchr(path, '/');
+    size_t n = slash ? (slash == path ? 1 : (size_t)(slash - path)) : 1;
+    char *folder = malloc(n + 1);
+    if (!folder) return cdl_error_out_of_memory(err);
+    memcpy(folder, slash ? path : ".", n);
+    folder[n] = '\0';
+    cdl_status st = CDL_OK;
+    if (access(folder, W_OK | X_OK) != 0)
+        st = cdl_error_set(err, CDL_ERR_INPUT,
+                           "%s: cannot write the irradiance cache file there: the folder %s is missing or not "
+                           "writable", path, folder);
+    free(folder);
+    return st;
+}
+
+/* What the records depend on now; which grids the cache solves; and, when
+ * the file exists and was made for them, their records (moved into
+ * records[g]). */
+static cdl_status cache_open(const cdl_scene *scene, const cdl_scene_lights *lights, const cdl_solve_options *opts,
+                             int indirect, const cdl_solution *out, cdl_icache_records *records, cache_use *cache,
+                             cdl_error *err)
+{
+    cache->path = opts->cache_path;
+    if (!cache->path[0]) return cdl_error_set(err, CDL_ERR_USAGE, "cache: expected a file name, found an empty string");
+    snprintf(cache->key.version, sizeof cache->key.version, "%s", CANDELA_VERSION);
+    cdl_icache_settings *ks = &cache->key.settings;
+    ks->method = scene->settings.method;
+    ks->target = cdl_solver_settings_target(&scene->settings);
+    ks->bounces = scene->settings.bounces;
+    ks->seed = scene->settings.seed;
+    ks->direct_samples = out->settings.direct_samples;
+    ks->exact_route = !opts->no_exact_route;
+    ks->gradients = !opts->no_cache_gradients;
+    cdl_status st = cdl_scene_hash(scene, lights, &cache->key.scene, err);
+    if (st != CDL_OK) return st;
+    cache->grids = malloc((scene->grid_count ? scene->grid_count : 1) * sizeof *cache->grids);
+    if (!cache->grids) return cdl_error_out_of_memory(err);
+    double score;
+    for (size_t g = 0; indirect && g < scene->grid_count; ++g)
+        if (grid_method(scene->settings.method, &out->grids[g].grid, cdl_solver_settings_target(&scene->settings),
+                        &score) == CDL_METHOD_ICACHE)
+            cache->grids[cache->count++] = g;
+
+    int found = 0;
+    cdl_icache_file file;
+    st = cdl_icache_file_load(cache->path, &found, &file, err);
+    if (st != CDL_OK) return st;
+    if (!found) return check_cache_folder(cache->path, err);
+    const char **names = malloc((cache->count ? cache->count : 1) * sizeof *names);
+    const cdl_grid **grids = malloc((cache->count ? cache->count : 1) * sizeof *grids);
+    size_t *index = malloc((cache->count ? cache->count : 1) * sizeof *index);
+    st = names && grids && index ? cdl_icache_file_match_key(&file, cache->path, &cache->key, err)
+                                 : cdl_error_out_of_memory(err);
+    for (size_t k = 0; st == CDL_OK && k < cache->count; ++k) {
+        names[k] = scene->grids[cache->grids[k]].name;
+        grids[k] = &out->grids[cache->grids[k]].grid;
+    }
+    if (st == CDL_OK)
+        st = cdl_icache_file_match_grids(&file, cache->path, names, grids, cache->count, index, err);
+    for (size_t k = 0; st == CDL_OK && k < cache->count; ++k) {
+        cdl_icache_records *from = &file.grids[index[k]].records;
+        records[cache->grids[k]] = *from;
+        cache->records_read += from->count;
+        memset(from, 0, sizeof *from);
+    }
+    cache->reused = st == CDL_OK;
+    free(names);
+    free(grids);
+    free(index);
+    cdl_icache_file_release(&file);
+    return st;
+}
+
+/* Write the records the solve gathered. */
+static cdl_status cache_save(const cache_use *cache, const cdl_scene *scene, const cdl_solution *out,
+                             const cdl_icache_records *records, cdl_error *err)
+{
+    cdl_icache_file_grid *grids = calloc(cache->count ? cache->count : 1, sizeof *grids);
+    if (!grids) return cdl_error_out_of_memory(err);
+    for (size_t k = 0; k < cache->count; ++k) {
+        size_t g = cache->grids[k];
+        grids[k].name = scene->grids[g].name;
+        grids[k].point_count = out->grids[g].grid.count;
+        grids[k].points_hash = cdl_icache_grid_hash(&out->grids[g].grid);
+        grids[k].records = records[g];
+    }
+    cdl_status st = cdl_icache_file_save(cache->path, &cache->key, grids, cache->count, err);
+    free(grids);
+    return st;
+}
+
+/* The plan's "cache": the file, and whether its records were used. */
+static void cache_describe(const cache_use *cache, cJSON *plan)
+{
+    cJSON *c = cJSON_AddObjectToObject(plan, "cache");
+    cJSON_AddStringToObject(c, "file", cache->path);
+    cJSON_AddBoolToObject(c, "reused", cache->reused);
+    cJSON_AddNumberToObject(c, "records_read", (double)cache->records_read);
+    cJSON_AddNumberToObject(c, "grids", (double)cache->count);
+    cJSON_AddStringToObject(c, "why", cache->reused
+                                          ? "the file was made for this scene, these settings and this Candela: "
+                                            "its records were used, none gathered"
+                                          : "the file did not exist: records gathered, then written to it");
 }
 
 cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *options, cdl_solution *out,
@@ -206,6 +340,8 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     cdl_light_strategy *strategies = NULL;
     cdl_direct_route_tally *routes = NULL;
     cJSON **plan_grids = NULL;
+    cache_use cache;
+    memset(&cache, 0, sizeof cache);
     cdl_icache_records *records = calloc(scene->grid_count ? scene->grid_count : 1, sizeof *records);
     if (!records) {
         cJSON_Delete(plan);
@@ -287,17 +423,25 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         st = cdl_error_out_of_memory(err);
         goto fail;
     }
-    cdl_direct_sample_stats total = {0};
+    /* Every grid is built before any is solved: a cache file is checked
+     * against all of them before the long work starts. */
     for (size_t g = 0; g < scene->grid_count; ++g) {
-        const cdl_grid_spec *spec = &scene->grids[g];
-        cdl_grid_solution *gs = &out->grids[g];
-        st = cdl_grid_build(spec, &gs->grid, err);
+        st = cdl_grid_build(&scene->grids[g], &out->grids[g].grid, err);
         if (st != CDL_OK) {
             cdl_error_prefix(err, "%s: ", scene->path);
             goto fail;
         }
-        st = cdl_grid_solution_alloc(gs, spec->want_ao, err);
+        st = cdl_grid_solution_alloc(&out->grids[g], scene->grids[g].want_ao, err);
         if (st != CDL_OK) goto fail;
+    }
+    if (opts.cache_path) {
+        st = cache_open(scene, &lights, &opts, indirect, out, records, &cache, err);
+        if (st != CDL_OK) goto fail;
+    }
+    cdl_direct_sample_stats total = {0};
+    for (size_t g = 0; g < scene->grid_count; ++g) {
+        const cdl_grid_spec *spec = &scene->grids[g];
+        cdl_grid_solution *gs = &out->grids[g];
         gs->edge_point_count = cdl_direct_find_edge_points(&ctx, &gs->grid, &gs->first_edge_point);
         cdl_direct_plan_grid(&ctx, gs->grid.points, gs->grid.count, strategies);
         memset(routes, 0, (lights.count + 1) * sizeof *routes);
@@ -321,7 +465,9 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         }
         if (indirect) {
             /* gs->E holds the indirect part's variance until added. */
-            cdl_method gm = grid_method(scene->settings.method, &gs->grid);
+            double score;
+            cdl_method gm = grid_method(scene->settings.method, &gs->grid, cdl_solver_settings_target(&scene->settings),
+                                        &score);
             snprintf(stage_name, sizeof stage_name, "grid %s: interreflection (%s)", spec->name,
                      gm == CDL_METHOD_ICACHE ? "records" : "paths");
             tc = cdl_pool_now_seconds();
@@ -329,8 +475,10 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
             cJSON_AddStringToObject(gi, "method", cdl_method_name(gm));
             if (gm == CDL_METHOD_ICACHE) {
                 cdl_icache_stats before = ic_stats;
+                size_t preloaded = records[g].count;
                 st = cdl_icache_solve_grid(&ic, &gs->grid, (size_t)grid_key(spec->name), gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,
                                            &records[g], threads, &opts.progress, stage_name, &ic_stats, err);
+                out->records_gathered += records[g].count - preloaded;
                 cJSON_AddNumberToObject(gi, "records", (double)(ic_stats.records - before.records));
                 cJSON_AddNumberToObject(gi, "placement_passes", (double)ic_stats.passes);
             } else {
@@ -339,10 +487,15 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                                               threads, &opts.progress, stage_name, &pt_stats, err);
                 cJSON_AddNumberToObject(gi, "paths", (double)(pt_stats.paths - paths));
             }
-            if (scene->settings.method == CDL_METHOD_AUTO)
-                cJSON_AddStringToObject(gi, "why", gm == CDL_METHOD_ICACHE
-                                                       ? "a dense map: records interpolated cost less than paths per point"
-                                                       : "few points: paths per point cost less than gathering records");
+            if (scene->settings.method == CDL_METHOD_AUTO) {
+                char why[200];
+                snprintf(why, sizeof why,
+                         gm == CDL_METHOD_ICACHE
+                             ? "%zu points x target %g = %.3g >= %g: records interpolated cost less than paths per point"
+                             : "%zu points x target %g = %.3g < %g: paths per point cost less than gathering records",
+                         gs->grid.count, cdl_solver_settings_target(&scene->settings), score, CDL_AUTO_CACHE_SCORE);
+                cJSON_AddStringToObject(gi, "why", why);
+            }
             out->compute_seconds += cdl_pool_now_seconds() - tc;
             if (st != CDL_OK) goto fail;
         }
@@ -384,6 +537,14 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         out->records = ic_stats.records;
     }
     out->rays = total.rays;
+    if (opts.cache_path) {
+        if (!cache.reused) {
+            st = cache_save(&cache, scene, out, records, err);
+            if (st != CDL_OK) goto fail;
+        }
+        out->cache_reused = cache.reused;
+        cache_describe(&cache, plan);
+    }
     out->plan_json = cJSON_PrintUnformatted(plan);
     if (!out->plan_json) {
         st = cdl_error_out_of_memory(err);
@@ -393,6 +554,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     free(plan_grids);
     free(strategies);
     release_records(records, scene->grid_count);
+    free(cache.grids);
     free(routes);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);
@@ -405,6 +567,7 @@ fail:
     free(plan_grids);
     free(strategies);
     release_records(records, scene->grid_count);
+    free(cache.grids);
     free(routes);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);

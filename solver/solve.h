@@ -4,11 +4,11 @@
  * grid, and computes (in memory, solution.h); output/solution_write.h writes
  * the files of DESIGN.md.
  *
- * Methods: "direct" computes direct light only; "auto" picks the cheapest
- * method that gives the whole answer for the quality asked, which is
- * "direct" when nothing in the scene reflects light. A scene that needs a
- * method not built yet (interreflection: the irradiance cache or the path
- * tracer) is refused with a message, never solved with less.
+ * Methods: "direct" computes direct light only; "pathtrace" adds
+ * interreflected light by paths from every point, "icache" by an
+ * irradiance cache; "auto" picks, per grid, the cheapest method that gives
+ * the whole answer for the target asked, which is "direct" when nothing in
+ * the scene reflects light.
  */
 #ifndef CANDELA_SOLVER_SOLVE_H
 #define CANDELA_SOLVER_SOLVE_H
@@ -34,9 +34,18 @@ typedef struct cdl_solve_options {
                                        * default 0 */
     int no_cache_gradients;           /* 1: the irradiance cache interpolates without its records' gradients
                                          (to measure what they buy) */
+    /* A file of irradiance-cache records (icache/icache_file.h), NULL for
+     * none (the default). When it exists it must have been made for this
+     * scene, these settings and this Candela: its records are then used and
+     * none is gathered; otherwise the solve is refused (CDL_ERR_INPUT,
+     * naming the file and what differs) before any grid is computed. When
+     * it does not exist, the records are gathered and the file written
+     * (atomically) after the solve succeeds; its folder must exist. */
+    const char *cache_path;
 } cdl_solve_options;
-#define CDL_SOLVE_OPTIONS_DEFAULT \
-    {.threads = -1, .progress = {.fn = NULL, .user = NULL}, .ray_log = NULL, .no_exact_route = 0, .no_cache_gradients = 0}
+#define CDL_SOLVE_OPTIONS_DEFAULT                                                                                     \
+    {.threads = -1, .progress = {.fn = NULL, .user = NULL}, .ray_log = NULL, .no_exact_route = 0,                    \
+     .no_cache_gradients = 0, .cache_path = NULL}
 
 cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *options, cdl_solution *out,
                            cdl_error *err);

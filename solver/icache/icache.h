@@ -7,6 +7,9 @@
  *     w_i(p) = 1 - kappa max( |p - p_i| / clamp(2 R_i, Rmin, Rmax),
  *                             sqrt(1 - n . n_i) / sqrt(1 - cos 10 deg) ),
  *     E(p)   = sum_{w_i > 0} w_i (E_i + (n_i x n) . g_r,i + (p - p_i) . g_t,i) / sum w_i,
+ * plus, per record, the second-order term its gradient leaves out, 1/2
+ * (g(p) - g_t,i) . (p - p_i) with g(p) the weighted mean of the records'
+ * g_t (the trapezoid rule along p_i -> p; icache.c says what it buys),
  * a record serving only points in front of it (the behind test: (p - p_i) .
  * (n + n_i) / 2 may not be below -1 % of its reach) and only points it can
  * see (the leak test: a ray from p_i to p; a wall or a table top between

@@ -99,6 +99,16 @@ int main(void)
     CHECK(file_equals(path, "second version\n"));
     CHECK(fixture_count_entries(dir) == 1);
 
+    /* A whole buffer at once: written complete; a missing folder is the
+     * caller's path to fix (bad input), nothing created. */
+    CHECK_OK(cdl_atomic_file_write_all(path, "fourth\0version", 14, &err), &err);
+    CHECK(fixture_file_is(path, "fourth\0version", 14));
+    CHECK(fixture_count_entries(dir) == 1);
+    snprintf(sub, sizeof sub, "%s/no/such/folder/out.bin", dir);
+    CHECK(cdl_atomic_file_write_all(sub, "x", 1, &err) == CDL_ERR_INPUT);
+    CHECK(err.status == CDL_ERR_INPUT && strstr(err.message, "no/such/folder/out.bin"));
+    CHECK(fixture_count_entries(dir) == 1);
+
     unlink(path);
     return check_finish();
 }

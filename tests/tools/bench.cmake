@@ -5,3 +5,11 @@
 add_test(NAME tools/bench_direct COMMAND bench_direct --points 4000 --luminaires 8 --triangles 20000)
 set_tests_properties(tools/bench_direct PROPERTIES LABELS "tools;bench;no-sanitize" TIMEOUT 300
                      PASS_REGULAR_EXPRESSION "ratio \\(solver / Embree, per core\\): [0-9.]+")
+
+# The dense-map benchmark (tools/bench/bench_icache.c), run small: 20 x 20
+# and 10 x 10 grids, two rungs a method, a reference to 0.2 %. It must
+# complete, report its ratio and give the same bytes on one thread and on
+# all (it exits 1 otherwise). No time is asserted. Full size: build/bench_icache
+add_test(NAME tools/bench_icache COMMAND bench_icache --small --reference-target 0.002)
+set_tests_properties(tools/bench_icache PROPERTIES LABELS "tools;bench;no-sanitize" TIMEOUT 600
+                     PASS_REGULAR_EXPRESSION "ratio \\(pathtrace / icache, equal RMS\\): [0-9.]+")
