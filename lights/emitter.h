@@ -7,7 +7,9 @@
  *   goniometric   position, rotation, photometry, factors     factor x photometric flux
  *   area          Lambertian, one-sided shape, L (cd/m^2)     pi L A
  *   directional   direction of travel, E normal to the beam   E per m^2 of beam section
- *   environment   uniform L or lat-long image, up, hemisphere see cdl_emitter_flux
+ *   environment   uniform L, CIE overcast (L at   see cdl_emitter_flux
+ *                 the zenith) or lat-long image,
+ *                 up, hemisphere
  *
  * All inputs are photometric (cd, cd/m^2, lx, lm). Positions in metres,
  * world frame (right-handed, z up). An emitter is immutable once created;
@@ -127,10 +129,20 @@ typedef struct cdl_directional_params {
     cdl_illuminance illuminance;           /* measured normal to the beam */
 } cdl_directional_params;
 
+/* The luminance of an environment without an image (image == NULL). */
+typedef enum cdl_sky_model {
+    CDL_SKY_UNIFORM,                       /* `luminance` in every direction */
+    CDL_SKY_CIE_OVERCAST                   /* the CIE standard overcast sky (Moon and Spencer 1942, adopted by
+                                            * the CIE in 1955; CIE 110-1994): L(theta) = L_z (1 + 2 cos theta)
+                                            * / 3, theta from `up`, L_z = `luminance`; nothing below the
+                                            * horizon */
+} cdl_sky_model;
+
 typedef struct cdl_environment_params {
     cdl_vec3 up;                           /* zenith, any length > 0 (default +z) */
-    int upper_hemisphere_only;             /* 1: no light from below the horizon of `up` */
-    /* uniform: image == NULL */
+    int upper_hemisphere_only;             /* 1: no light from below the horizon of `up` (a CIE overcast sky
+                                            * has none either way) */
+    /* image == NULL: a sky model of `luminance` (cd/m^2, >= 0) */
     cdl_luminance luminance;
     /* lat-long image (copied): luminance in cd/m^2 per pixel BEFORE `scale`
      * (the file's Y, or 0.2126 R + 0.7152 G + 0.0722 B), row-major, top row
@@ -142,8 +154,9 @@ typedef struct cdl_environment_params {
     const float *image;
     int width, height;
     double scale;                          /* multiplies the image, > 0 (default 1) */
+    cdl_sky_model sky;                     /* image == NULL: the model (default CDL_SKY_UNIFORM) */
 } cdl_environment_params;
-#define CDL_ENVIRONMENT_PARAMS_DEFAULT {{0.0, 0.0, 1.0}, 0, {0.0}, NULL, 0, 0, 1.0}
+#define CDL_ENVIRONMENT_PARAMS_DEFAULT {{0.0, 0.0, 1.0}, 0, {0.0}, NULL, 0, 0, 1.0, CDL_SKY_UNIFORM}
 
 cdl_status cdl_emitter_create_point(const cdl_point_params *p, cdl_emitter **out, cdl_error *err);
 cdl_status cdl_emitter_create_spot(const cdl_spot_params *p, cdl_emitter **out, cdl_error *err);
@@ -161,8 +174,9 @@ int cdl_emitter_is_delta(const cdl_emitter *emitter);
  * Directional: flux through 1 m^2 normal to the beam (= E).
  * Environment: flux incident on the face of a 1 m^2 disk facing `up` with
  * nothing around it: pi L for a uniform sky (full or upper hemisphere);
- * for an image, the exact sum over pixels of L times their cosine-weighted
- * solid angle above the horizon (emitter_environment.c). */
+ * for a CIE overcast sky 7 pi L_z / 9; for an image, the exact sum over
+ * pixels of L times their cosine-weighted solid angle above the horizon
+ * (emitter_environment.c). */
 cdl_luminous_flux cdl_emitter_flux(const cdl_emitter *emitter);
 
 /* Luminous intensity emitted toward world direction `dir` (any length > 0).
@@ -217,7 +231,9 @@ int cdl_emitter_emission_cone(const cdl_emitter *emitter, cdl_vec3 *position, cd
  * an inward sphere pi L. A non-convex mesh's self-occlusion is ignored (the
  * caller's visibility test must treat the emitter's own triangles as
  * occluders). Uniform environment: pi L (full sphere) or pi L (1 + cos
- * beta) / 2 (upper hemisphere, beta between n and up). Image environment: the exact sum over pixels of
+ * beta) / 2 (upper hemisphere, beta between n and up). CIE overcast sky:
+ * (L_z / 3) [pi (1 + cos beta) / 2 + (4 / 3)((pi - beta) cos beta +
+ * sin beta)]. Image environment: the exact sum over pixels of
  * L times the pixel's projected solid angle on n's hemisphere (pixels the
  * horizon crosses clipped exactly), one pass over the pixels; it depends on
  * n only, so callers may cache it by normal. Delta emitters: the E of
@@ -249,8 +265,8 @@ typedef struct cdl_light_sample {
  * 64 triangles by solid angle (facing triangles only), larger ones by
  * area; disks cos-weighted about n when they fill half the receiver's
  * cosine-weighted hemisphere, else by area; spheres uniform in their cone
- * (outside) or cos-weighted about n (inside an inward sphere); uniform sky
- * cos-weighted about n; image sky by pixel luminance x solid angle (a
+ * (outside) or cos-weighted about n (inside an inward sphere); uniform and
+ * CIE overcast skies cos-weighted about n; image sky by pixel luminance x solid angle (a
  * sampler for one receiver normal, by luminance x projected solid angle,
  * is lights/environment_sampler.h). */
 int cdl_emitter_sample(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, double u1, double u2,

@@ -3,7 +3,9 @@
  *   parameter      meaning                                       unit    default  range
  *   up             zenith                                        -       +z       non-zero
  *   upper_hemi...  1: nothing from below the horizon of up       -       0        0 or 1
- *   luminance      uniform sky (image == NULL)                   cd/m^2  -        >= 0
+ *   luminance      sky model's (image == NULL): everywhere       cd/m^2  -        >= 0
+ *                  (uniform) or at the zenith (CIE overcast)
+ *   sky            uniform or CIE overcast (image == NULL)       -       uniform
  *   image          lat-long luminance, width x height, copied    cd/m^2  NULL     finite, >= 0
  *   scale          multiplies the image                          -       1        > 0
  *
@@ -18,7 +20,11 @@
  * Illuminance on a plane of normal n, unoccluded:
  *   uniform, full sphere:      E = pi L for every n;
  *   uniform, upper hemisphere: E = pi L (1 + cos beta) / 2, beta the angle
- *     between n and up (derivation at uniform_exact below);
+ *     between n and up (derivation at environment_exact below);
+ *   CIE overcast, L = L_z (1 + 2 cos theta) / 3 above the horizon:
+ *     E = (L_z / 3) [pi (1 + cos beta) / 2 + (4 / 3)((pi - beta) cos beta
+ *     + sin beta)] (derivation at overcast_exact below), 7 pi L_z / 9 on
+ *     a horizontal plane (beta = 0);
  *   image: E(n) = sum over pixels of L_ij times the pixel's projected solid
  *     angle on n's hemisphere, exact (environment_pixels.h: the per-pixel
  *     vector integral of w for whole pixels, the boundary contour of the
@@ -27,10 +33,12 @@
  *     that meet many points with one normal can cache it by normal.
  * "Flux" (cdl_emitter_flux): the flux on the face of a 1 m^2 disk facing up,
  * Phi = int over the upper hemisphere of L cos theta dw: pi L for a uniform
- * sky either way; for an image, E(up) above.
+ * sky either way, 7 pi L_z / 9 for the overcast sky; for an image, E(up)
+ * above.
  *
- * Sampling: uniform sky, cosine-weighted about the receiver normal n
- * (pdf = cos / pi: zero variance for a full sky with nothing in the way);
+ * Sampling: uniform and overcast skies, cosine-weighted about the receiver
+ * normal n (pdf = cos / pi: zero variance for a full uniform sky with
+ * nothing in the way);
  * image, a pixel with probability L_ij Omega_j / sum(L Omega), then a
  * uniform direction within the pixel's solid angle: pdf = L_ij / sum(L Omega)
  * in solid angle, exact.
@@ -51,7 +59,8 @@ typedef struct environment_emitter {
     cdl_emitter base;
     cdl_frame frame; /* s: azimuth 0, t: azimuth 90, n: up */
     int upper_only;
-    double L;        /* uniform sky */
+    cdl_sky_model sky; /* without an image */
+    double L;        /* uniform sky; the overcast sky's zenith */
     /* image */
     float *image;
     int width, height;
@@ -71,11 +80,37 @@ static const environment_emitter *as_env(const cdl_emitter *e)
 static cdl_luminous_flux environment_flux(const cdl_emitter *e)
 {
     const environment_emitter *env = as_env(e);
-    /* Uniform sky over the upper hemisphere: int L cos dw = pi L. */
-    return cdl_lumens(env->image ? env->flux : CDL_PI * env->L);
+    /* Uniform sky over the upper hemisphere: int L cos dw = pi L; the
+     * overcast sky's E on the horizontal (overcast_exact, beta = 0). */
+    if (env->image) return cdl_lumens(env->flux);
+    return cdl_lumens(env->sky == CDL_SKY_CIE_OVERCAST ? 7.0 * CDL_PI * env->L / 9.0 : CDL_PI * env->L);
 }
 
 /* ---- exact illuminance ------------------------------------------------------ */
+
+/* The CIE overcast sky on the plane of n, beta between n and up. Its
+ * luminance is L_z (1 + 2 u.w) / 3 over the sky D = {u.w > 0, n.w > 0}
+ * (u = up), so
+ *     E = (L_z / 3) [int_D n.w dw + 2 int_D (u.w)(n.w) dw].
+ * D is a lune: two hemispheres whose boundary great circles meet at
+ * +-l, l = u x n / |u x n|. About l as the polar axis (polar angle t,
+ * azimuth a from u, u = (1, 0, 0) and n = (cos beta, sin beta, 0) in the
+ * plane l is normal to), u.w = sin t cos a and n.w = sin t cos(a - beta),
+ * and D is a in [beta - pi/2, pi/2], t in [0, pi]. With int_0^pi sin^2 t
+ * dt = pi / 2 and int_0^pi sin^3 t dt = 4 / 3:
+ *     int_D n.w dw = (pi / 2) int cos(a - beta) da = (pi / 2)(1 + cos beta),
+ *     int_D (u.w)(n.w) dw = (4 / 3) int cos a cos(a - beta) da
+ *                         = (2 / 3)((pi - beta) cos beta + sin beta)
+ * (cos a cos(a - beta) = [cos beta + cos(2a - beta)] / 2). The first is
+ * the uniform sky's view factor again (environment_exact); at beta = 0
+ * E = (L_z / 3)(pi + 4 pi / 3) = 7 pi L_z / 9, the overcast sky's
+ * classical horizontal illuminance (Moon and Spencer, "Illumination from a
+ * non-uniform sky", Illuminating Engineering 37, 1942). */
+static double overcast_exact(double L_z, double cos_beta)
+{
+    double beta = acos(cos_beta), sin_beta = sqrt(fmax(0.0, 1.0 - cos_beta * cos_beta));
+    return L_z / 3.0 * (0.5 * CDL_PI * (1.0 + cos_beta) + 4.0 / 3.0 * ((CDL_PI - beta) * cos_beta + sin_beta));
+}
 
 static int environment_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_illuminance *E)
 {
@@ -83,6 +118,10 @@ static int environment_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_i
     const environment_emitter *env = as_env(e);
     if (env->image) {
         *E = cdl_lux(cdl_env_pixels_illuminance(&env->px, n, NULL));
+        return 1;
+    }
+    if (env->sky == CDL_SKY_CIE_OVERCAST) {
+        *E = cdl_lux(overcast_exact(env->L, fmax(-1.0, fmin(1.0, cdl_vec3_dot(n, env->frame.n)))));
         return 1;
     }
     if (!env->upper_only) {
@@ -104,9 +143,14 @@ static int environment_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_i
 
 /* ---- directions and pixels ------------------------------------------------- */
 
-static cdl_luminance uniform_radiance_towards(const environment_emitter *env, cdl_vec3 w)
+/* A sky model's luminance towards unit w: uniform, or the CIE overcast
+ * sky's L_z (1 + 2 cos theta) / 3 (overcast_exact), nothing below the
+ * horizon where the sky has none. */
+static cdl_luminance sky_radiance_towards(const environment_emitter *env, cdl_vec3 w)
 {
-    if (env->upper_only && !(cdl_vec3_dot(w, env->frame.n) > 0.0)) return cdl_nits(0.0);
+    double cos_theta = cdl_vec3_dot(w, env->frame.n);
+    if (env->upper_only && !(cos_theta > 0.0)) return cdl_nits(0.0);
+    if (env->sky == CDL_SKY_CIE_OVERCAST) return cdl_nits(env->L * (1.0 + 2.0 * fmin(1.0, cos_theta)) / 3.0);
     return cdl_nits(env->L);
 }
 
@@ -129,7 +173,7 @@ static int environment_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, doub
         cdl_frame f = cdl_frame_from_normal(n);
         w = cdl_frame_to_world(&f, cdl_sample_cosine_hemisphere(u1, u2));
         pdf = fmax(0.0, cdl_vec3_dot(n, w)) * CDL_INV_PI;
-        L = uniform_radiance_towards(env, w);
+        L = sky_radiance_towards(env, w);
     } else {
         size_t i, j;
         double fx, fy;
@@ -159,7 +203,7 @@ static cdl_luminance environment_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_
     const environment_emitter *env = as_env(e);
     if (!env->image) {
         *pdf = fmax(0.0, cdl_vec3_dot(n, w)) * CDL_INV_PI;
-        return uniform_radiance_towards(env, w);
+        return sky_radiance_towards(env, w);
     }
     int i, j;
     if (!cdl_env_pixels_locate(&env->px, w, &i, &j)) return cdl_nits(0.0);
@@ -229,6 +273,12 @@ cdl_status cdl_emitter_create_environment(const cdl_environment_params *p, cdl_e
         (st = cdl_emitter_check_nonnegative(p->luminance.cd_m2, "environment emitter: luminance", "cd/m^2", err)) !=
             CDL_OK)
         return st;
+    if (p->sky != CDL_SKY_UNIFORM && p->sky != CDL_SKY_CIE_OVERCAST)
+        return cdl_error_set(err, CDL_ERR_INPUT, "environment emitter: sky: expected uniform or CIE overcast, found %d",
+                             (int)p->sky);
+    if (p->image && p->sky != CDL_SKY_UNIFORM)
+        return cdl_error_set(err, CDL_ERR_INPUT, "environment emitter: sky: expected no sky model with an image, "
+                                                 "found the CIE overcast sky");
     environment_emitter *env = cdl_emitter_alloc(sizeof *env, CDL_EMITTER_ENVIRONMENT, &environment_ops, err);
     if (!env) return CDL_ERR_INTERNAL;
     /* Azimuth reference: world +x made perpendicular to up (Gram-Schmidt). */
@@ -236,7 +286,10 @@ cdl_status cdl_emitter_create_environment(const cdl_environment_params *p, cdl_e
     env->frame.n = up;
     env->frame.s = cdl_vec3_normalize(cdl_vec3_madd(ref, -cdl_vec3_dot(ref, up), up));
     env->frame.t = cdl_vec3_cross(up, env->frame.s);
-    env->upper_only = p->upper_hemisphere_only ? 1 : 0;
+    env->sky = p->image ? CDL_SKY_UNIFORM : p->sky;
+    /* The overcast sky has no ground: L would be below L_z / 3 and fall to
+     * -L_z / 3 at the nadir. */
+    env->upper_only = p->upper_hemisphere_only || env->sky == CDL_SKY_CIE_OVERCAST ? 1 : 0;
     env->L = p->image ? 0.0 : p->luminance.cd_m2;
     if (p->image && (st = build_image(env, p, err)) != CDL_OK) {
         cdl_emitter_release(&env->base);

@@ -69,3 +69,81 @@ int cdl_estimate_side_for(double samples, int k_min, int k_max)
     if (k > k_max) k = k_max;
     return (int)k;
 }
+
+double cdl_estimate_bound_variance(const cdl_estimate *e, double jump)
+{
+    if (!(e->samples > 0.0)) return 0.0;
+    /* Poisson posterior of the differing pairs (estimate.h): D + 1. */
+    return (e->var_num + jump * jump) / (e->samples * e->samples);
+}
+
+/* N_j for log lambda = t (estimate.h), held to [least, most]. */
+static double allocated(double t, double log_c, double alpha, double least, double most)
+{
+    double n = exp((t + log_c) / (1.0 + alpha));
+    return n < least ? least : n > most ? most : n;
+}
+
+typedef struct allocation {
+    const double *variance, *pilot, *alpha, *log_c;
+    int count;
+    double target;
+} allocation;
+
+/* The modelled variance of the stage at log lambda = t, N_j held to
+ * [least, most], less the target. */
+static double allocation_excess(const allocation *a, double t, double least, double most)
+{
+    double sum = 0.0;
+    for (int j = 0; j < a->count; ++j)
+        if (a->variance[j] > 0.0)
+            sum += a->variance[j] * pow(a->pilot[j] / allocated(t, a->log_c[j], a->alpha[j], least, most), a->alpha[j]);
+    return sum - a->target;
+}
+
+/* log lambda where the excess changes sign, N_j held to [least, most]:
+ * bisection between every N_j at the least and every N_j at the most (the
+ * excess falls as t grows), halved until the bracket is two neighbouring
+ * doubles. */
+static double allocation_solve(const allocation *a, double least, double most)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (int j = 0; j < a->count; ++j)
+        if (a->variance[j] > 0.0) {
+            lo = fmin(lo, (1.0 + a->alpha[j]) * log(least) - a->log_c[j]);
+            hi = fmax(hi, (1.0 + a->alpha[j]) * log(most) - a->log_c[j]);
+        }
+    if (!(allocation_excess(a, lo, least, most) > 0.0)) return lo;
+    for (;;) {
+        double mid = 0.5 * (lo + hi);
+        if (!(mid > lo && mid < hi)) break;
+        if (allocation_excess(a, mid, least, most) > 0.0)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return hi;
+}
+
+void cdl_estimate_allocate_samples(const double *variance, const double *pilot, const double *alpha, double *samples,
+                                   int count, double target_variance, double least, double most)
+{
+    /* samples[] holds log c_j = log(alpha_j v_j pilot_j^alpha_j) until the
+     * end, so that N_j = exp((log lambda + log c_j) / (1 + alpha_j)). */
+    int any = 0;
+    for (int j = 0; j < count; ++j)
+        if (variance[j] > 0.0) {
+            any = 1;
+            samples[j] = log(alpha[j] * variance[j]) + alpha[j] * log(pilot[j]);
+        }
+    allocation a = {variance, pilot, alpha, samples, count, target_variance};
+    double t = 0.0;
+    if (any) {
+        /* A target out of reach even with every N_j at the most: planned as
+         * if there were no bounds, then bounded. */
+        int reachable = target_variance > 0.0 && allocation_excess(&a, INFINITY, least, most) <= 0.0;
+        t = reachable ? allocation_solve(&a, least, most) : allocation_solve(&a, 1e-300, 1e300);
+    }
+    for (int j = 0; j < count; ++j)
+        samples[j] = variance[j] > 0.0 ? allocated(t, samples[j], alpha[j], least, most) : least;
+}

@@ -46,14 +46,24 @@ typedef struct cdl_round {
     uint64_t nonzero;  /* samples != 0 */
 } cdl_round;
 
-/* Add the two samples of one stratum. */
-static inline void cdl_round_add_pair(cdl_round *r, double f1, double f2)
+/* Add the two samples of a stratum of w times the average measure (a
+ * round whose strata differ in size, their w summing to H): with weights
+ * W_h = w_h / H the stratified mean is sum_h W_h (f_h1 + f_h2) / 2 and
+ * Var(m) = sum_h W_h^2 sigma_h^2 / 2 (Cochran 1977, 5.3 and 5A.12), so the
+ * pair's terms are w (f1 + f2) and w^2 d^2. */
+static inline void cdl_round_add_weighted_pair(cdl_round *r, double f1, double f2, double w)
 {
     double d = f1 - f2;
-    r->sum += f1 + f2;
-    r->sum_d2 += d * d;
+    r->sum += w * (f1 + f2);
+    r->sum_d2 += w * w * d * d;
     r->strata += 1.0;
     r->nonzero += (uint64_t)(f1 != 0.0) + (uint64_t)(f2 != 0.0);
+}
+
+/* Add the two samples of one stratum (of the average measure). */
+static inline void cdl_round_add_pair(cdl_round *r, double f1, double f2)
+{
+    cdl_round_add_weighted_pair(r, f1, f2, 1.0);
 }
 
 /* The pooled estimate of all rounds so far. */
@@ -75,6 +85,47 @@ double cdl_estimate_variance(const cdl_estimate *e);
  * a uniform prior, is Beta(1, N + 1) after N misses, with variance
  * (N + 1) / ((N + 2)^2 (N + 3)); times potential^2. */
 double cdl_estimate_unseen_variance(double samples, double potential);
+
+/* The variance of the mean with one phantom disagreeing pair added:
+ * (sum d^2 + jump^2) / N^2, `jump` the largest difference a stratum's two
+ * samples could show (for a visibility edge, the unoccluded value of a
+ * sample). Why: where the integrand is a step of height a (a light seen or
+ * hidden), a stratum straddling the edge with a fraction p on one side
+ * gives a differing pair with probability 2p(1 - p), and then d^2 = a^2;
+ * so sum d^2 = a^2 D, D the number of differing pairs, and the true
+ * Var(m) = a^2 mu / N^2 with mu = E[D] = sum_h 2 p_h (1 - p_h). When few
+ * strata straddle the edge, or each only by a sliver, mu is small and
+ * D = 0 is likely (P = e^-mu): the pair estimate says 0 although the mean
+ * may be off by several strata's worth. D is a sum of independent rare
+ * events, Poisson in mu; with a uniform prior on mu, the posterior after
+ * observing D is Gamma(D + 1, 1), of mean D + 1 (the same argument as the
+ * unseen fraction's Beta(1, N + 1) below). So the honest estimate is
+ * a^2 (D + 1) / N^2: the pair estimate plus one phantom pair, which costs
+ * nothing where many pairs differ (D >> 1) and is never near zero where
+ * the estimate could be far off. Over pooled rounds every pair carries the
+ * same weight 1 / N^2, so one phantom pair covers them all. */
+double cdl_estimate_bound_variance(const cdl_estimate *e, double jump);
+
+/* Samples for each of `count` estimates sampled together (the sampled
+ * lights of one point) so that the sum of their variances reaches
+ * `target_variance` with the fewest samples in all. Estimate j was last
+ * measured by a round of pilot[j] samples with variance of the mean
+ * variance[j], and is modelled as Var_j(N) = variance[j] (pilot[j] /
+ * N)^alpha[j] (alpha = 1 for independent samples; stratified samples of a
+ * step fall as N^-1.5). Minimising sum N_j subject to sum Var_j(N_j) = V
+ * by a Lagrange multiplier lambda gives
+ *     1 = lambda alpha_j variance[j] pilot[j]^alpha_j N_j^-(1 + alpha_j),
+ *     N_j = (lambda alpha_j variance[j] pilot[j]^alpha_j)^(1 / (1 + alpha_j))
+ * (for alpha = 1, Neyman's allocation: N_j proportional to the per-sample
+ * standard deviation; Cochran 1977, 5.5). Each N_j is held to
+ * [least, most] and lambda found by bisection (the sum of the modelled
+ * variances falls as lambda grows) to the resolution of doubles. An
+ * estimate of variance 0 gets `least`. A target out of reach even with
+ * every N_j at `most` is planned as if there were no bounds, then each N_j
+ * bounded (the others are not pushed to `most` by one that cannot meet
+ * its share). */
+void cdl_estimate_allocate_samples(const double *variance, const double *pilot, const double *alpha, double *samples,
+                                   int count, double target_variance, double least, double most);
 
 /* Samples needed for the variance of the mean to reach `target_variance`,
  * from a pilot's variance per sample (Var = c / N), twice as many as that

@@ -91,6 +91,7 @@ typedef enum cdl_direct_route {
     CDL_ROUTE_CURVED_EMITTER,         /* sampled: a disk, sphere or non-planar emitter */
     CDL_ROUTE_TOO_COMPLEX,            /* sampled: the visible part had too many pieces */
     CDL_ROUTE_IMAGE_SKY,              /* sampled: an image sky is not one luminance */
+    CDL_ROUTE_OVERCAST_SKY,           /* sampled: the CIE overcast sky is not one luminance */
     CDL_ROUTE_DISABLED,               /* sampled: the context asked for it (no_exact_route) */
     CDL_ROUTE_COUNT
 } cdl_direct_route;
@@ -102,6 +103,7 @@ typedef enum cdl_direct_route {
 typedef struct cdl_direct_route_tally {
     uint64_t points[CDL_ROUTE_COUNT];
     uint32_t most_occluders;          /* most occluders past which a point took the exact route */
+    uint64_t capped;                  /* sampled points whose stage the cap of samples held below its plan */
 } cdl_direct_route_tally;
 
 typedef struct cdl_direct_sample_stats {

@@ -156,8 +156,10 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     *occluders = 0;
     if (ctx->no_exact_route || !ctx->geometry || !ctx->occluders) return CDL_ROUTE_DISABLED;
     const cdl_geometry_piece *piece = NULL;
-    /* An image sky varies over the visible polygon: L Omega does not hold. */
+    /* An image or overcast sky varies over the visible polygon: L Omega
+     * does not hold. */
     if (light->is_image) return CDL_ROUTE_IMAGE_SKY;
+    if (light->is_overcast) return CDL_ROUTE_OVERCAST_SKY;
     if (!light->is_environment) {
         if (light->owner == UINT32_MAX || light->outline_is_sphere) return CDL_ROUTE_CURVED_EMITTER;
         piece = cdl_scene_geometry_piece(ctx->geometry, light->owner);
@@ -219,6 +221,7 @@ void cdl_direct_stats_add(cdl_direct_sample_stats *a, const cdl_direct_sample_st
     if (!a->routes || !b->routes) return;
     for (size_t l = 0; l < light_count; ++l) {
         for (int r = 0; r < CDL_ROUTE_COUNT; ++r) a->routes[l].points[r] += b->routes[l].points[r];
+        a->routes[l].capped += b->routes[l].capped;
         if (b->routes[l].most_occluders > a->routes[l].most_occluders)
             a->routes[l].most_occluders = b->routes[l].most_occluders;
     }
@@ -231,6 +234,7 @@ void cdl_direct_route_describe(const cdl_direct_route_tally *t, char *out, size_
         [CDL_ROUTE_CURVED_OCCLUDER] = "curved occluder (sphere or disk)",
         [CDL_ROUTE_CURVED_EMITTER] = "curved or non-planar emitter",
         [CDL_ROUTE_IMAGE_SKY] = "an image sky (its radiance varies over the visible part)",
+        [CDL_ROUTE_OVERCAST_SKY] = "a CIE overcast sky (its luminance varies with height over the visible part)",
         [CDL_ROUTE_TOO_COMPLEX] = "visible part in too many pieces",
         [CDL_ROUTE_DISABLED] = "exact route turned off",
     };
@@ -258,5 +262,8 @@ void cdl_direct_route_describe(const cdl_direct_route_tally *t, char *out, size_
             APPEND("%ssampled: %s at %" PRIu64 " points", sep, why[r], t->points[r]);
             sep = "; ";
         }
+    if (t->capped)
+        APPEND("%sthe cap of %.0f samples a light held %" PRIu64 " points short of the target (their stated error "
+               "is larger)", sep, CDL_DIRECT_MAX_SAMPLES, t->capped);
 #undef APPEND
 }

@@ -4,6 +4,11 @@
 
 #include "solver/direct/direct.h"
 
+/* Most samples per light and point when sampling to a target, pilots and
+ * stage together (an explicit direct_samples may ask for more). 2^18
+ * shadow rays take about 30 ms. */
+#define CDL_DIRECT_MAX_SAMPLES 262144.0
+
 /* Geometric tolerance of region tests around p (direct_visibility.c). */
 double cdl_direct_region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p);
 

@@ -110,6 +110,7 @@ typedef struct cdl_luminaire_spec {
     double scale;                        /* default 1 */
     cdl_vec3 up;                         /* default (0, 0, 1) */
     int upper_hemisphere_only;           /* "hemisphere": "upper" */
+    int sky_overcast;                    /* "sky": "cie_overcast" (luminance_cd_m2 holds its zenith's) */
 } cdl_luminaire_spec;
 
 /* ---- grids -------------------------------------------------------------- */

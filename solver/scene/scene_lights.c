@@ -401,13 +401,15 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
             proto.is_image = 1;
         } else {
             p.luminance = cdl_nits(sp->luminance_cd_m2 * mf);
+            p.sky = sp->sky_overcast ? CDL_SKY_CIE_OVERCAST : CDL_SKY_UNIFORM;
+            proto.is_overcast = sp->sky_overcast;
         }
         proto.is_environment = 1;
         proto.upper_only = sp->upper_hemisphere_only;
         proto.up = cdl_vec3_normalize(sp->up);
         L->has_environment = 1;
         st = cdl_emitter_create_environment(&p, &e, err);
-        /* Uniform skies and images alike (an image: the exact pixel sum). */
+        /* Uniform and overcast skies and images alike (an image: the exact pixel sum). */
         if (st == CDL_OK) proto.has_closed_form = cdl_emitter_has_exact_illuminance(e);
         free(image);
         break;

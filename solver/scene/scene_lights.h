@@ -30,9 +30,10 @@ typedef struct cdl_scene_light {
     const cdl_emitter *emitter;
     char label[160];                  /* "luminaires[3]" or "surfaces[2]" (+ face) for the plan */
     uint32_t owner;                   /* geometry piece id of its own surface, UINT32_MAX if none */
-    int has_closed_form;              /* area or environment (uniform or image) */
+    int has_closed_form;              /* area or environment (uniform, overcast or image) */
     int is_environment;
     int is_image;                     /* environment: a lat-long image (not one luminance everywhere) */
+    int is_overcast;                  /* environment: the CIE overcast sky (luminance rises towards the zenith) */
     int upper_only;                   /* environment: sky above the horizon of `up` only */
     cdl_vec3 up;
     /* A convex outline bounding the emitter (area emitters), for the

@@ -14,7 +14,11 @@
  *   directional  direction, illuminance_lx (>= 0)
  *   environment  exactly one of luminance_cd_m2 (>= 0) or file (with
  *                scale >= 0, default 1); up (default [0, 0, 1]);
- *                hemisphere "full" (default) or "upper"
+ *                hemisphere "full" (default) or "upper"; or "sky":
+ *                "cie_overcast" with zenith_luminance_cd_m2 (>= 0), up
+ *                and no other (the CIE standard overcast sky, L_z (1 + 2
+ *                cos theta) / 3 above the horizon, nothing below);
+ *                "sky": "uniform" is the default
  * Grids: name (letters, digits, '.', '_', '-'; unique ignoring case, so the
  * output files differ on every file system), type, outputs (["ao"]), and
  *   rect     origin, u, v, nu, nv, normal (default u x v)
@@ -116,7 +120,8 @@ static const char *const luminaire_keys[][10] = {
     {"type", "file", "position", "rotation", "multiplier", "flux_lm", "maintenance_factor", NULL},
     {"type", "shape", "luminance_cd_m2", "flux_lm", "reflectance", "maintenance_factor", NULL},
     {"type", "direction", "illuminance_lx", "maintenance_factor", NULL},
-    {"type", "luminance_cd_m2", "file", "scale", "up", "hemisphere", "maintenance_factor", NULL},
+    {"type", "luminance_cd_m2", "file", "scale", "up", "hemisphere", "maintenance_factor", "sky",
+     "zenith_luminance_cd_m2", NULL},
 };
 
 static cdl_status read_intensity(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
@@ -178,6 +183,29 @@ static cdl_status read_environment(const cdl_scene_parse *ctx, const cJSON *node
 {
     char p[CDL_SCENE_PATH_MAX];
     int which = -1;
+    static const char *const skies[] = {"uniform", "cie_overcast", NULL};
+    if (cdl_scene_json_read_choice(ctx, field(node, path, "sky", p), p, skies, 0, &out->sky_overcast) != CDL_OK)
+        return CDL_ERR_INPUT;
+    if (out->sky_overcast) {
+        /* A sky model: its zenith luminance and `up` only. */
+        static const char *const others[] = {"luminance_cd_m2", "file", "scale", "hemisphere", NULL};
+        for (int k = 0; others[k]; ++k)
+            if (field(node, path, others[k], p))
+                return cdl_scene_json_failf(ctx, p, "no \"luminance_cd_m2\", \"file\", \"scale\" or \"hemisphere\" "
+                                            "with \"sky\": \"cie_overcast\" (zenith_luminance_cd_m2 and up only)",
+                                            "\"%s\"", others[k]);
+        out->has_luminance = 1;
+        out->upper_hemisphere_only = 1;
+        if (cdl_scene_json_read_quantity(ctx, field(node, path, "zenith_luminance_cd_m2", p), p, CDL_DIM_LUMINANCE,
+                                         CDL_RANGE_NONNEGATIVE, 1, &out->luminance_cd_m2) != CDL_OK ||
+            cdl_scene_json_read_vec3(ctx, field(node, path, "up", p), p, 1, 0, &out->up) != CDL_OK)
+            return CDL_ERR_INPUT;
+        out->up = cdl_vec3_normalize(out->up);
+        return CDL_OK;
+    }
+    if (field(node, path, "zenith_luminance_cd_m2", p))
+        return cdl_scene_json_failf(ctx, p, "\"zenith_luminance_cd_m2\" only with \"sky\": \"cie_overcast\"",
+                                    "it with a uniform or image sky");
     if (one_of(ctx, node, path, "luminance_cd_m2", "file", 1, &which) != CDL_OK) return CDL_ERR_INPUT;
     if (which == 0) {
         out->has_luminance = 1;

@@ -24,8 +24,17 @@
 
 typedef double (*direction_fn)(void *ctx, cdl_vec3 w);
 
-/* An environment emitter: uniform (img NULL, luminance L) or a W x H image;
- * a failed creation is a failed check (and NULL). */
+/* An environment emitter from its parameters; a failed creation is a
+ * failed check (and NULL). */
+static inline cdl_emitter *create_environment(const cdl_environment_params *p)
+{
+    cdl_emitter *e = NULL;
+    cdl_error err;
+    CHECK_OK(cdl_emitter_create_environment(p, &e, &err), &err);
+    return e;
+}
+
+/* An environment emitter: uniform (img NULL, luminance L) or a W x H image. */
 static inline cdl_emitter *make_environment(double L, const float *img, int w, int h, double scale, int upper,
                                             cdl_vec3 up)
 {
@@ -37,10 +46,7 @@ static inline cdl_emitter *make_environment(double L, const float *img, int w, i
     p.scale = scale;
     p.upper_hemisphere_only = upper;
     p.up = up;
-    cdl_emitter *e = NULL;
-    cdl_error err;
-    CHECK_OK(cdl_emitter_create_environment(&p, &e, &err), &err);
-    return e;
+    return create_environment(&p);
 }
 
 /* Configuration factors from a plane element (Howell, "A Catalog of

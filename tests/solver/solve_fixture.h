@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "check.h"
 #include "solver/solve.h"
@@ -66,6 +67,20 @@ static inline void fixture_release(cdl_scene *scene, cdl_solution *sol)
     "{\"type\": \"rect\", \"origin\": [0,0,1.5], \"u\": [2,0,0], \"v\": [0,2,0], \"reflectance\": 1},"        \
     "{\"type\": \"rect\", \"origin\": [2,0,0], \"u\": [0,2,0], \"v\": [0,0,2], \"reflectance\": 1}],"         \
     " \"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 2000}],"
+
+/* Points whose sampled stage the cap of samples held short of its plan, by
+ * the plan's words ("... held N points short of the target"), summed over
+ * its lights and grids. */
+static inline size_t fixture_capped_points(const char *plan_json)
+{
+    size_t total = 0;
+    for (const char *at = plan_json; at && (at = strstr(at, " held ")) != NULL; at += 6) {
+        unsigned long n = 0;
+        char word[8] = "";
+        if (sscanf(at, " held %lu %7s", &n, word) == 2 && strcmp(word, "points") == 0) total += n;
+    }
+    return total;
+}
 
 typedef struct calibration {
     size_t count, within1, within2;

@@ -16,8 +16,8 @@
 #include <string.h>
 
 #include "check.h"
-#include "lights/projected_solid_angle.h"
 #include "radiometry/constants.h"
+#include "solver/direct/exact_forms.h"
 #include "solver/solve.h"
 
 static const char *const presets[4] = {"draft", "normal", "high", "reference"};
@@ -61,30 +61,6 @@ static void done(cdl_scene *scene, cdl_solution *sol)
 {
     cdl_solution_release(sol);
     cdl_scene_release(scene);
-}
-
-/* Configuration factor from a point to the rectangle [0, a] x [0, b] in a
- * parallel plane at height h, the point below the corner (0, 0). Odd in a
- * and in b, so the factor of [x1, x2] x [y1, y2] (offsets from the foot of
- * the point) is the signed sum over the four corners. */
-static double cf_corner(double a, double b, double h)
-{
-    double A = a / h, B = b / h;
-    return (A / sqrt(1 + A * A) * atan(B / sqrt(1 + A * A)) + B / sqrt(1 + B * B) * atan(A / sqrt(1 + B * B))) /
-           (2.0 * CDL_PI);
-}
-
-static double cf_parallel_rect(double x1, double x2, double y1, double y2, double h)
-{
-    return cf_corner(x2, y2, h) - cf_corner(x1, y2, h) - cf_corner(x2, y1, h) + cf_corner(x1, y1, h);
-}
-
-/* Lambert's projected solid angle of the rectangle origin + s u + t v from p. */
-static double psa_rect(cdl_vec3 p, cdl_vec3 n, cdl_vec3 origin, cdl_vec3 u, cdl_vec3 v)
-{
-    cdl_vec3 c[4] = {cdl_vec3_sub(origin, p), cdl_vec3_sub(cdl_vec3_add(origin, u), p),
-                     cdl_vec3_sub(cdl_vec3_add(cdl_vec3_add(origin, u), v), p), cdl_vec3_sub(cdl_vec3_add(origin, v), p)};
-    return fabs(cdl_projected_solid_angle_polygon(c, 4, n));
 }
 
 static size_t count_sampled_points(const cdl_grid_solution *g)
@@ -152,11 +128,6 @@ static void test_roof_opening(void)
  * point gets L Omega_p of the window rectangle, at every preset, and the
  * uniformity U0 = min / mean is the exact one (within 1 %; in fact to
  * rounding). */
-static double window_exact(cdl_vec3 p, cdl_vec3 n)
-{
-    return 5000.0 * psa_rect(p, n, cdl_vec3_make(5, 1, 0.9), cdl_vec3_make(0, 2, 0), cdl_vec3_make(0, 0, 1.2));
-}
-
 static void test_window_room(void)
 {
     for (int q = 0; q < 4; ++q) {
@@ -166,7 +137,7 @@ static void test_window_room(void)
         const cdl_grid_solution *g = &sol.grids[0];
         double min = INFINITY, sum = 0.0, min_x = INFINITY, sum_x = 0.0, worst = 0.0;
         for (size_t i = 0; i < g->grid.count; ++i) {
-            double expected = window_exact(g->grid.points[i], g->grid.normals[i]);
+            double expected = window_room_exact(g->grid.points[i], g->grid.normals[i]);
             worst = fmax(worst, fabs(g->E[i] - expected) / expected);
             CHECK(g->E_stderr[i] == 0.0);
             min = fmin(min, g->E[i]);
@@ -228,12 +199,12 @@ static void test_wall_behind_partition(void)
  * the sampler stays tested against exact answers:
  *  - unbiased: the sampled grid sum is within 3 of its stated sigmas
  *    (sqrt of the summed variances) of the exact sum;
- *  - per point, the issue asks for ~95 % within 2 stated sigma. The sampler
- *    does not meet that yet (32 of 40 here, one point 13 sigma off: the
- *    stratified pair variance of a first round that straddles the partition's
- *    edge in few strata comes out small, and the point stops early). Until
- *    its calibration is fixed this asks for at least 75 % (30 of 40), so
- *    that it cannot get worse unnoticed; raise it to 85 % with the fix.
+ *  - per point, the issue asks for ~95 % within 2 stated sigma. Of 40
+ *    calibrated points about 1.8 fall outside (Poisson-like, 40 x 0.046);
+ *    7 or more do with probability 0.3 %, so at least 34 of 40 (85 %) are
+ *    asked for here; the 95 % itself is checked over 404 points at two
+ *    qualities in test_direct_calibration.c. (Before the pilot and the
+ *    planned stage, 32 of 40 were within, one point 13 sigma off.)
  *  - every point sampled (a stated error above 0), the plan saying why. */
 static void test_sampler_agrees(void)
 {
@@ -269,7 +240,7 @@ static void test_sampler_agrees(void)
         CHECK(x->E_stderr[i] == 0.0);
     }
     CHECK_MSG(fabs(sum_s - sum_x) <= 3.0 * sqrt(var), "sum %g, exact %g, sigma %g", sum_s, sum_x, sqrt(var));
-    CHECK_MSG(within >= (size_t)(0.75 * g->grid.count), "%zu of %zu within 2 sigma", within, g->grid.count);
+    CHECK_MSG(within >= (size_t)(0.85 * g->grid.count), "%zu of %zu within 2 sigma", within, g->grid.count);
     CHECK_MSG(count_sampled_points(g) == g->grid.count, "the sampler was not used at every point");
     CHECK_MSG(strstr(sampled.plan_json, "sampled: exact route turned off") != NULL, "plan: %s", sampled.plan_json);
     printf("sampler behind the partition (normal): %zu of %zu points within 2 sigma\n", within, g->grid.count);
