@@ -227,7 +227,7 @@ static cdl_status cache_open(const cdl_scene *scene, const cdl_scene_lights *lig
 {
     cache->path = opts->cache_path;
     if (!cache->path[0]) return cdl_error_set(err, CDL_ERR_USAGE, "cache: expected a file name, found an empty string");
-    snprintf(cache->key.version, sizeof cache->key.version, "%s", CANDELA_VERSION);
+    snprintf(cache->key.version, sizeof cache->key.version, "%s", CDL_ICACHE_MAKER);
     cdl_icache_settings *ks = &cache->key.settings;
     ks->method = scene->settings.method;
     ks->target = cdl_solver_settings_target(&scene->settings);

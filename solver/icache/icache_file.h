@@ -64,6 +64,13 @@
 
 #define CDL_ICACHE_FILE_FORMAT 1
 #define CDL_ICACHE_FILE_VERSION_SIZE 64  /* the version string and its NUL */
+
+/* The version a cache is made by, stored in the file and compared on
+ * reading: Candela's, and the revision of how records are made. Bump the
+ * revision whenever gathering, placement or interpolation would make other
+ * records from the same scene and settings (2: records held to twice a
+ * point's variance target, second-order term in the interpolation). */
+#define CDL_ICACHE_MAKER CANDELA_VERSION " records-2"
 #define CDL_ICACHE_FILE_NAME_MAX 4096    /* longest grid name, bytes */
 
 /* The solver settings records depend on (not threads, outputs or colours). */

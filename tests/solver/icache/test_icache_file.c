@@ -151,7 +151,7 @@ static void test_round_trip(const char *cache, const char *dir)
     CHECK_OK(cdl_icache_file_load(cache, &found, &f, &err), &err);
     CHECK(found);
     if (!found || err.status != CDL_OK) return;
-    CHECK(strcmp(f.key.version, CANDELA_VERSION) == 0);
+    CHECK(strcmp(f.key.version, CDL_ICACHE_MAKER) == 0);
     CHECK(f.grid_count == 2 && f.key.settings.target == 0.02 && f.key.settings.seed == 1);
     cdl_icache_record *r = &f.grids[0].records.items[0];
     r->harmonic = INFINITY;
@@ -227,7 +227,7 @@ static void test_damaged(const char *cache)
     /* The header: magic 8, format 4, length 8, version string length 4,
      * the string, hashes 24, settings 36, grid count 8, the first grid's
      * name length 4, name "floor" 5, three counts 24; then its records. */
-    size_t header = 24 + strlen(CANDELA_VERSION) + 24 + 36 + 8 + 4 + 5 + 24;
+    size_t header = 24 + strlen(CDL_ICACHE_MAKER) + 24 + 36 + 8 + 4 + 5 + 24;
     CHECK(size > header + 1000);
     /* Truncated at every byte of the header, and within the records. */
     int all = 1;
@@ -356,7 +356,7 @@ static void test_stale(const char *cache, const char *dir)
     snprintf(old, sizeof old, "%s/old.bin", dir);
     CHECK_OK(cdl_icache_file_save(old, &f.key, f.grids, f.grid_count, &err), &err);
     cdl_icache_file_release(&f);
-    expect_refusal(old, &base, "version", "written by Candela 0.0.9, this is Candela " CANDELA_VERSION);
+    expect_refusal(old, &base, "version", "written by Candela 0.0.9, this is Candela " CDL_ICACHE_MAKER);
     unlink(old);
 }
 
