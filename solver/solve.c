@@ -449,8 +449,15 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         char stage_name[160];
         snprintf(stage_name, sizeof stage_name, "grid %s", spec->name);
         double tc = cdl_pool_now_seconds();
+        /* A grid the cache serves takes its ambient occlusion from the
+         * records' gathers (icache.h); the others cast rays of their own. */
+        double score;
+        cdl_method gm = grid_method(scene->settings.method, &gs->grid, cdl_solver_settings_target(&scene->settings),
+                                    &score);
+        int ao_from_records = indirect && gm == CDL_METHOD_ICACHE;
         /* E_stderr holds the variance until the grid is done. */
-        st = cdl_direct_solve_grid(&ctx, strategies, &gs->grid, (size_t)grid_key(spec->name), gs->E_direct, gs->E_stderr, gs->ao, threads,
+        st = cdl_direct_solve_grid(&ctx, strategies, &gs->grid, (size_t)grid_key(spec->name), gs->E_direct, gs->E_stderr,
+                                   ao_from_records ? NULL : gs->ao, threads,
                                    &opts.progress, stage_name, &total, err);
         out->compute_seconds += cdl_pool_now_seconds() - tc;
         if (st != CDL_OK) goto fail;
@@ -465,9 +472,6 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         }
         if (indirect) {
             /* gs->E holds the indirect part's variance until added. */
-            double score;
-            cdl_method gm = grid_method(scene->settings.method, &gs->grid, cdl_solver_settings_target(&scene->settings),
-                                        &score);
             snprintf(stage_name, sizeof stage_name, "grid %s: interreflection (%s)", spec->name,
                      gm == CDL_METHOD_ICACHE ? "records" : "paths");
             tc = cdl_pool_now_seconds();
@@ -477,7 +481,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                 cdl_icache_stats before = ic_stats;
                 size_t preloaded = records[g].count;
                 st = cdl_icache_solve_grid(&ic, &gs->grid, (size_t)grid_key(spec->name), gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,
-                                           &records[g], threads, &opts.progress, stage_name, &ic_stats, err);
+                                           gs->ao, &records[g], threads, &opts.progress, stage_name, &ic_stats, err);
                 out->records_gathered += records[g].count - preloaded;
                 cJSON_AddNumberToObject(gi, "records", (double)(ic_stats.records - before.records));
                 cJSON_AddNumberToObject(gi, "placement_passes", (double)ic_stats.passes);

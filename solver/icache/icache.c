@@ -119,6 +119,7 @@ static void lookup_release(lookup *lk)
 
 typedef struct interpolation {
     double E, var;            /* the interpolated E_ind and its stated variance */
+    double open;              /* the interpolated open fraction (ambient occlusion) */
     double interp_var;        /* the interpolation's share of var */
     size_t used;              /* records with w > 0 */
     double reach;             /* smallest reach among them (reach_max when none) */
@@ -138,7 +139,7 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
         lk->w = grown;
         lk->w_capacity = m;
     }
-    double W = 0.0, sum = 0.0, noise = 0.0, noise_mean = 0.0, sum2 = 0.0, change2 = 0.0;
+    double W = 0.0, open = 0.0, sum = 0.0, noise = 0.0, noise_mean = 0.0, sum2 = 0.0, change2 = 0.0;
     cdl_vec3 gbar = cdl_vec3_make(0, 0, 0);
     const cdl_scene_geometry *geometry = ctx->path.geometry;
     for (size_t c = 0; c < m; ++c) {
@@ -162,6 +163,7 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
         lk->w[c] = w;
         gbar = cdl_vec3_add(gbar, cdl_vec3_scale(r->grad_t, w));
         W += w;
+        open += w * r->open;
         sum += w * x;
         sum2 += w * x * x;
         noise += w * w * r->var;
@@ -176,6 +178,7 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
     }
     if (out->used == 0) return 1;
     out->E = sum / W;
+    out->open = fmin(1.0, fmax(0.0, open / W));
     double spread = fmax(0.0, sum2 / W - out->E * out->E);
     if (out->used >= 2)
         out->interp_var = fmax(0.0, spread - noise_mean / W);
@@ -337,6 +340,7 @@ typedef struct point_job {
     int final;                /* 1: write E and var; 0: flag points that need a record */
     int sweep;                /* with final 0: flag only the points no record serves */
     double *E, *var;
+    double *ao;               /* NULL, or the points' ambient occlusion (final) */
     double *ask;              /* per point: the separation a new record there keeps, or 0 */
 } point_job;
 
@@ -352,6 +356,7 @@ static cdl_status visit_points(void *shared, void *local, size_t begin, size_t e
         if (job->final) {
             job->E[i] = it.E;
             job->var[i] = it.var;
+            if (job->ao) job->ao[i] = it.open;
             continue;
         }
         if (job->sweep) {
@@ -423,7 +428,7 @@ void cdl_icache_records_release(cdl_icache_records *records)
 
 cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *grid, size_t grid_index,
                                  const double *E_direct, const double *var_direct, double *E_indirect,
-                                 double *var_indirect, cdl_icache_records *recs, int threads,
+                                 double *var_indirect, double *ao, cdl_icache_records *recs, int threads,
                                  const cdl_progress_sink *progress, const char *stage, cdl_icache_stats *stats,
                                  cdl_error *err)
 {
@@ -458,7 +463,7 @@ cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *
     for (size_t id = 0; st == CDL_OK && reuse && id < recs->count; ++id)
         st = cdl_record_octree_insert(tree, (uint32_t)id, recs->items[id].p, record_reach(&l, &recs->items[id]), err);
     point_job job = {ctx, &l, recs, tree, grid, E_direct, var_direct, 1e-3 * brightest, 0, 0, E_indirect,
-                     var_indirect, ask};
+                     var_indirect, ao, ask};
     for (int pass = 1; st == CDL_OK && !reuse && pass <= MAX_PASSES; ++pass) {
         st = visit(&job, threads, progress, stage, recs->count, err);
         size_t count = 0;

@@ -7,14 +7,20 @@
  *     F = 1 / (2 pi) [A / sqrt(1 + A^2) atan(B / sqrt(1 + A^2))
  *                   + B / sqrt(1 + B^2) atan(A / sqrt(1 + B^2))]
  * (Howell's catalogue of configuration factors, B-5), and any rectangle by
- * adding and subtracting four such corners. Checked for the direct method
- * and for a grid the irradiance cache serves (its AO is computed per point
- * in both). The tolerance: AO is a mean of N cosine-distributed 0/1
- * samples, whose standard deviation is at most sqrt(AO (1 - AO) / N)
- * (stratification only lowers it); four of those, and 1e-3 for the finite
- * ground's far edge (50 m away: below 1e-3 of the hemisphere). */
+ * adding and subtracting four such corners.
+ *  - The direct method casts each point's own rays: AO is a mean of N
+ *    cosine-distributed 0/1 samples, whose standard deviation is at most
+ *    sqrt(AO (1 - AO) / N) (stratification only lowers it); the tolerance is
+ *    four of those, and 1e-3 for the finite ground's far edge (50 m away:
+ *    below 1e-3 of the hemisphere).
+ *  - A grid the irradiance cache serves takes AO from the records' gathers,
+ *    interpolated (icache.h): its error is the interpolation's across the
+ *    shadow's edges, not sampling noise. Measured at normal: worst 0.093,
+ *    RMS 0.035; the bounds 0.15 and 0.05 (a cache whose AO were missing, 0,
+ *    or ignored the plate, 1, is off by up to 0.4 under it). */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "check.h"
 #include "radiometry/constants.h"
@@ -57,11 +63,13 @@ static void test_plate(const char *method)
     if (!fixture_solve(json, &scene, &sol, 2)) return;
     const cdl_grid_solution *g = &sol.grids[0];
     CHECK(g->ao != NULL);
-    double n = (double)sol.settings.ao_samples, worst = 0.0, lowest = 1.0;
+    int interpolated = strcmp(method, "icache") == 0;
+    double n = (double)sol.settings.ao_samples, worst = 0.0, lowest = 1.0, sq = 0.0;
     for (size_t i = 0; g->ao && i < g->grid.count; ++i) {
         cdl_vec3 p = g->grid.points[i];
         double expected = 1.0 - plate_factor(p.x, p.y);
-        double tol = 4.0 * sqrt(expected * (1.0 - expected) / n) + 1e-3;
+        double tol = interpolated ? 0.15 : 4.0 * sqrt(expected * (1.0 - expected) / n) + 1e-3;
+        sq += (g->ao[i] - expected) * (g->ao[i] - expected);
         CHECK_MSG(fabs(g->ao[i] - expected) <= tol, "%s: AO at (%.2f, %.2f) %.4f, expected %.4f +- %.4f", method, p.x,
                   p.y, g->ao[i], expected, tol);
         worst = fmax(worst, fabs(g->ao[i] - expected));
@@ -69,7 +77,10 @@ static void test_plate(const char *method)
     }
     /* The plate hides a good part of the sky under it: a test that means something. */
     CHECK(lowest < 0.75);
-    printf("%s: AO of %zu points within %.4f of 1 - F (%g samples each)\n", method, g->grid.count, worst, n);
+    double rms = sqrt(sq / (double)g->grid.count);
+    if (interpolated) CHECK_MSG(rms <= 0.05, "%s: AO RMS error %.4f", method, rms);
+    printf("%s: AO of %zu points within %.4f of 1 - F, RMS %.4f%s\n", method, g->grid.count, worst, rms,
+           interpolated ? " (from the cache's gathers)" : "");
     fixture_release(scene, &sol);
 }
 
