@@ -30,9 +30,7 @@ static int quality_ao_samples(cdl_quality q)
     return ao[q];
 }
 
-/* Does light reflect anywhere? Returns the JSON path of the first reflecting
- * surface, or NULL. */
-static const char *first_reflector(const cdl_scene *scene, double *rho)
+const char *cdl_solve_first_reflector(const cdl_scene *scene, double *rho)
 {
     for (size_t i = 0; i < scene->surface_count; ++i) {
         const cdl_surface_spec *s = &scene->surfaces[i];
@@ -87,7 +85,7 @@ static cdl_status choose_method(const cdl_scene *scene, cdl_method *method, int 
                                 cdl_error *err)
 {
     double rho = 0.0;
-    const char *reflector = first_reflector(scene, &rho);
+    const char *reflector = cdl_solve_first_reflector(scene, &rho);
     cJSON *inter = cJSON_AddObjectToObject(plan, "interreflection");
     char why[320];
     *indirect = 0;

@@ -50,4 +50,9 @@ typedef struct cdl_solve_options {
 cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *options, cdl_solution *out,
                            cdl_error *err);
 
+/* Does light reflect anywhere? The JSON path of the first surface (or area
+ * luminaire) with a reflectance above 0, its reflectance in *rho; NULL
+ * when nothing reflects (then only direct light is computed). */
+const char *cdl_solve_first_reflector(const cdl_scene *scene, double *rho);
+
 #endif

@@ -2,6 +2,7 @@
 #include "cli_args.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 cdl_cli_option *cdl_cli_find(cdl_cli_option *options, size_t count, const char *long_name)
@@ -66,5 +67,18 @@ int cdl_cli_scan(int argc, char **argv, cdl_cli_option *options, size_t count, c
             return 2;
         }
     }
+    return 0;
+}
+
+int cdl_cli_parse_threads(const char *command, const cdl_cli_option *option, int *threads)
+{
+    if (!option->present) return 0;
+    char *end = NULL;
+    long t = strtol(option->value, &end, 10);
+    if (!end || *end || t < 0 || t > 4096) {
+        fprintf(stderr, "candela %s: --threads: expected a whole number 0..4096, found '%s'\n", command, option->value);
+        return 2;
+    }
+    *threads = (int)t;
     return 0;
 }

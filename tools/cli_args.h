@@ -32,4 +32,9 @@ int cdl_cli_scan(int argc, char **argv, cdl_cli_option *options, size_t option_c
 /* The option named long_name, or NULL. */
 cdl_cli_option *cdl_cli_find(cdl_cli_option *options, size_t option_count, const char *long_name);
 
+/* The value of a --threads option, when present, into *threads (left as it
+ * is otherwise): a whole number 0..4096. Returns 0, or 2 after saying on
+ * stderr what was found ("candela COMMAND: --threads: ..."). */
+int cdl_cli_parse_threads(const char *command, const cdl_cli_option *option, int *threads);
+
 #endif

@@ -1,17 +1,417 @@
-/* cmd_bench.c - `candela bench`. */
+/* cmd_bench.c - `candela bench SCENE.json -o DIR`: the speed/accuracy trade
+ * of each method on the user's scene, measured against a converged reference. */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "cli_args.h"
 #include "command.h"
+#include "radiometry/atomic_file.h"
+#include "solver/bench/bench_ladder.h"
+#include "solver/bench/bench_report.h"
+#include "solver/output/solution_write.h"
+#include "solver/solve.h"
 
 static void print_help(FILE *out)
 {
-    fputs("usage: candela bench SCENE.json\n"
+    fputs("usage: candela bench SCENE.json -o DIR [--budget SECONDS] [--methods LIST] [--threads N] [--quiet]\n"
           "\n"
-          "Solves the scene with a ladder of settings and reports the error of each\n"
-          "against a converged reference, with the time it took.\n", out);
+          "Solves the scene with a ladder of settings for each method and reports the\n"
+          "error of each against a converged reference, with the time it took.\n"
+          "\n"
+          "  reference  path tracing to the \"reference\" quality (0.02 % relative standard\n"
+          "             error per point), written to DIR/reference/ with the hash of what\n"
+          "             it depends on (DIR/reference/reference.key: geometry, materials,\n"
+          "             lights and their files, grids' points, seed, bounces,\n"
+          "             direct_samples). A later run reuses it when the hash matches and\n"
+          "             refuses it (exit 1) when not: remove DIR/reference to start anew.\n"
+          "  ladder     icache and pathtrace: draft (2 %), 1 %, normal (0.5 %), 0.25 %,\n"
+          "             high (0.1 %); direct: draft, normal, high. Each a whole solve with\n"
+          "             the scene's seed, its files in DIR/runs/LABEL/ as `candela solve`\n"
+          "             writes them.\n"
+          "\n"
+          "For each rung: seconds (wall, whole solve), rays, cache records, the RMS and\n"
+          "largest relative error of E against the reference over every point of every\n"
+          "grid (the reference's own noise removed from the RMS in quadrature), and the\n"
+          "share of points within 2 combined sigma. An RMS not above 2x the reference's\n"
+          "own stated RMS cannot be resolved: bench.csv keeps the figure, the table\n"
+          "marks it \"<ref\" and a note says so.\n"
+          "\n"
+          "Writes DIR/bench.csv (label,method,quality,target_error,seconds,rays,records,\n"
+          "rms_rel_error,max_rel_error,within_2_sigma; errors as fractions; skipped rungs\n"
+          "left out), DIR/bench.svg (RMS error against seconds, log-log, the reference's\n"
+          "error as a floor), and on stdout a table ending with the cheapest rung that\n"
+          "reaches each preset's target. The same scene, seed and threads give the same\n"
+          "bench.csv apart from its seconds column.\n"
+          "\n"
+          "options:\n"
+          "  -o, --output DIR     folder for the results (required; created when missing)\n"
+          "  --budget SECONDS     bound on the whole run: a rung whose estimated time (the\n"
+          "                       method's previous rung scaled by (target ratio)^2) would\n"
+          "                       not fit is skipped and listed; a reference that would not\n"
+          "                       fit (estimated from a pilot solve at 2 %) is exit 1\n"
+          "  --methods LIST       comma-separated from icache, pathtrace, direct (default\n"
+          "                       icache,pathtrace; direct only when nothing reflects light)\n"
+          "  --threads N          worker threads (default: the scene's; 0 = all cores)\n"
+          "  --quiet              no progress lines on stderr\n"
+          "\n"
+          "exit status: 0 success, 1 bad scene, stale reference or too small a budget,\n"
+          "2 usage error, 3 internal failure\n",
+          out);
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The run's settings from the command line. */
+typedef struct bench_args {
+    const char *scene_path, *dir;
+    double budget;               /* seconds; <= 0: none */
+    int methods[3];              /* direct, icache, pathtrace asked for */
+    int threads;
+    int quiet;
+} bench_args;
+
+static const cdl_method method_of[3] = {CDL_METHOD_DIRECT, CDL_METHOD_ICACHE, CDL_METHOD_PATHTRACE};
+
+static int parse_methods(const char *list, int methods[3])
+{
+    char buf[128];
+    snprintf(buf, sizeof buf, "%s", list);
+    memset(methods, 0, 3 * sizeof *methods);
+    for (char *save = NULL, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        int found = 0;
+        for (int m = 0; m < 3; ++m)
+            if (strcmp(t, cdl_method_name(method_of[m])) == 0) methods[m] = found = 1;
+        if (!found) {
+            fprintf(stderr, "candela bench: --methods: expected icache, pathtrace or direct, found '%s'\n", t);
+            return 0;
+        }
+    }
+    return methods[0] || methods[1] || methods[2];
+}
+
+static int parse_args(int argc, char **argv, bench_args *a)
+{
+    cdl_cli_option opts[] = {
+        {"output", 'o', 1, 0, NULL}, {"budget", 0, 1, 0, NULL},  {"methods", 0, 1, 0, NULL},
+        {"threads", 0, 1, 0, NULL},  {"quiet", 'q', 0, 0, NULL},
+    };
+    const size_t n = sizeof opts / sizeof opts[0];
+    cdl_cli_result r;
+    if (cdl_cli_scan(argc, argv, opts, n, &r) != 0) {
+        fprintf(stderr, "candela bench: %s\n(see 'candela bench --help')\n", r.message);
+        return CDL_EXIT_USAGE;
+    }
+    if (r.help) {
+        print_help(stdout);
+        return -1;
+    }
+    cdl_cli_option *out = cdl_cli_find(opts, n, "output");
+    if (r.positional_count != 1 || !out->present || !out->value[0]) {
+        fprintf(stderr, "candela bench: expected SCENE.json and -o DIR\n(see 'candela bench --help')\n");
+        return CDL_EXIT_USAGE;
+    }
+    memset(a, 0, sizeof *a);
+    a->scene_path = r.positional[0];
+    a->dir = out->value;
+    a->threads = -1;
+    a->quiet = cdl_cli_find(opts, n, "quiet")->present;
+    cdl_cli_option *o = cdl_cli_find(opts, n, "budget");
+    if (o->present) {
+        char *end = NULL;
+        a->budget = strtod(o->value, &end);
+        if (!end || *end || !(a->budget > 0.0) || !isfinite(a->budget)) {
+            fprintf(stderr, "candela bench: --budget: expected seconds above 0, found '%s'\n", o->value);
+            return CDL_EXIT_USAGE;
+        }
+    }
+    if (cdl_cli_parse_threads("bench", cdl_cli_find(opts, n, "threads"), &a->threads)) return CDL_EXIT_USAGE;
+    o = cdl_cli_find(opts, n, "methods");
+    if (o->present) {
+        if (!parse_methods(o->value, a->methods)) return CDL_EXIT_USAGE;
+    } else {
+        a->methods[1] = a->methods[2] = 1;
+    }
+    return CDL_EXIT_OK;
+}
+
+/* A folder under DIR, created when missing. */
+static cdl_status make_folder(const char *path, cdl_error *err)
+{
+    if (mkdir(path, 0777) == 0 || errno == EEXIST) return CDL_OK;
+    return cdl_error_set(err, CDL_ERR_INPUT, "%s: cannot create the folder: %s", path, strerror(errno));
+}
+
+/* Solve one rung and write its files into `dir`. */
+static cdl_status solve_into(const cdl_scene *scene, cdl_method method, double target, int threads,
+                             const char *dir, cdl_solution *sol, cdl_error *err)
+{
+    cdl_status st = cdl_solution_prepare_folder(dir, err);
+    if (st == CDL_OK) st = cdl_bench_solve_rung(scene, method, target, threads, sol, err);
+    if (st != CDL_OK) return st;
+    st = cdl_solution_write(scene, sol, dir, cdl_default_ocio_config(), err);
+    if (st != CDL_OK) cdl_solution_release(sol);
+    return st;
+}
+
+#define KEY_HEADER "candela bench reference 1"
+
+/* The reference: read from DIR/reference when its key matches (refused
+ * when not), else path traced to `target` (within the budget) and
+ * written there with its key. Read back from its CSV either way, so a
+ * fresh and a reused reference give the same figures. */
+static int get_reference(const cdl_scene *scene, const bench_args *a, double target, double t0, cdl_solution *ref)
+{
+    cdl_error err;
+    cdl_error_clear(&err);
+    char dir[4096], keypath[4200];
+    snprintf(dir, sizeof dir, "%s/reference", a->dir);
+    snprintf(keypath, sizeof keypath, "%s/reference.key", dir);
+    uint64_t key = 0;
+    cdl_status st = cdl_bench_reference_key(scene, target, &key, &err);
+    if (st != CDL_OK) {
+        fprintf(stderr, "candela bench: %s\n", err.message);
+        return (int)st;
+    }
+    FILE *kf = fopen(keypath, "r");
+    if (kf) {
+        char line[128] = "";
+        unsigned long long stored = 0;
+        int ok = fgets(line, sizeof line, kf) && strncmp(line, KEY_HEADER, strlen(KEY_HEADER)) == 0 &&
+                 fscanf(kf, " key %llx", &stored) == 1;
+        fclose(kf);
+        if (!ok || stored != key) {
+            fprintf(stderr,
+                    "candela bench: %s: the reference there was made for another scene or other settings (its hash "
+                    "%016llx, this scene's %016llx: geometry, materials, lights, grids, seed or bounces changed); "
+                    "remove %s to compute a new one\n",
+                    dir, stored, (unsigned long long)key, dir);
+            return CDL_EXIT_INPUT;
+        }
+        printf("reference: reused %s (scene and settings hash %016llx match)\n", dir, (unsigned long long)key);
+    } else {
+        if (a->budget > 0.0) {
+            /* Monte Carlo time goes as target^-2 (the per-point work), the
+             * setup not at all: a pilot at the draft target, scaled. */
+            cdl_solution pilot;
+            double pilot_target = cdl_quality_target_error(CDL_QUALITY_DRAFT);
+            st = cdl_bench_solve_rung(scene, CDL_METHOD_PATHTRACE, pilot_target, a->threads, &pilot, &err);
+            if (st != CDL_OK) {
+                fprintf(stderr, "candela bench: %s\n", err.message);
+                return (int)st;
+            }
+            double ratio = pilot_target / target;
+            double pilot_compute = pilot.compute_seconds;
+            double need = (pilot.seconds - pilot_compute) + pilot_compute * ratio * ratio;
+            cdl_solution_release(&pilot);
+            if (now_seconds() - t0 + need > a->budget) {
+                fprintf(stderr,
+                        "candela bench: --budget %g s is too small: the reference (path tracing to %g %%) needs about "
+                        "%.3g s (a pilot to %g %% took %.3g s of computing, scaled by (%g/%g)^2)\n",
+                        a->budget, 100.0 * target, need, 100.0 * pilot_target,
+                        pilot_compute, pilot_target, target);
+                return CDL_EXIT_INPUT;
+            }
+        }
+        if (!a->quiet) fprintf(stderr, "candela bench: reference: path tracing to %g %%\n", 100.0 * target);
+        cdl_solution sol;
+        st = solve_into(scene, CDL_METHOD_PATHTRACE, target, a->threads, dir, &sol, &err);
+        if (st == CDL_OK) {
+            printf("reference: path traced to %g %% in %.2f s, %llu rays; written to %s\n", 100.0 * target,
+                   sol.seconds, (unsigned long long)sol.rays, dir);
+            cdl_solution_release(&sol);
+            char text[128];
+            int len = snprintf(text, sizeof text, KEY_HEADER "\nkey %016llx\ntarget %.17g\n", (unsigned long long)key,
+                               target);
+            st = cdl_atomic_file_write_all(keypath, text, (size_t)len, &err);
+        }
+        if (st != CDL_OK) {
+            fprintf(stderr, "candela bench: %s\n", err.message);
+            return (int)st;
+        }
+    }
+    st = cdl_bench_reference_read(dir, scene, ref, &err);
+    if (st != CDL_OK) {
+        fprintf(stderr, "candela bench: %s\n", err.message);
+        return (int)st;
+    }
+    return CDL_EXIT_OK;
+}
+
+/* The rungs of a method: its presets and targets between them. */
+typedef struct rung_spec {
+    const char *quality, *suffix;
+    double target;
+} rung_spec;
+
+static const rung_spec gi_rungs[] = {{"draft", "draft", 0.02},    {"custom", "t0.01", 0.01},
+                                     {"normal", "normal", 0.005}, {"custom", "t0.0025", 0.0025},
+                                     {"high", "high", 0.001}};
+static const rung_spec direct_rungs[] = {{"draft", "draft", 0.02}, {"normal", "normal", 0.005}, {"high", "high", 0.001}};
+
+/* Run one method's ladder into rows (appended at *count). */
+static int run_ladder(const cdl_scene *scene, const bench_args *a, int m, const cdl_solution *ref, double ref_rms,
+                      double t0, cdl_bench_row *rows, size_t *count)
+{
+    const rung_spec *specs = m == 0 ? direct_rungs : gi_rungs;
+    int n = m == 0 ? 3 : 5;
+    const cdl_bench_row *prev = NULL;
+    for (int k = 0; k < n; ++k) {
+        cdl_bench_row *row = &rows[(*count)++];
+        memset(row, 0, sizeof *row);
+        snprintf(row->label, sizeof row->label, "%s_%s", cdl_method_name(method_of[m]), specs[k].suffix);
+        row->quality = specs[k].quality;
+        row->rung.method = method_of[m];
+        row->rung.target = specs[k].target;
+        if (a->budget > 0.0 && prev) {
+            /* Monte Carlo: time ~ target^-2 at a fixed cost per sample. */
+            double ratio = prev->rung.target / specs[k].target;
+            double need = prev->rung.seconds * ratio * ratio;
+            if (now_seconds() - t0 + need > a->budget) {
+                row->skipped = 1;
+                continue;
+            }
+        }
+        if (!a->quiet) fprintf(stderr, "candela bench: %s (target %g %%)\n", row->label, 100.0 * specs[k].target);
+        char dir[4200];
+        snprintf(dir, sizeof dir, "%s/runs/%s", a->dir, row->label);
+        cdl_error err;
+        cdl_error_clear(&err);
+        cdl_solution sol;
+        cdl_status st = solve_into(scene, method_of[m], specs[k].target, a->threads, dir, &sol, &err);
+        if (st != CDL_OK) {
+            fprintf(stderr, "candela bench: %s: %s\n", row->label, err.message);
+            return (int)st;
+        }
+        cdl_bench_rung_measure(&sol, ref, &row->rung);
+        cdl_solution_release(&sol);
+        row->below_reference = row->rung.rms <= CDL_BENCH_RESOLVABLE * ref_rms;
+        prev = row;
+    }
+    return CDL_EXIT_OK;
+}
+
+static void print_table(const cdl_bench_row *rows, size_t count, double ref_rms)
+{
+    printf("\n%-18s %-9s %-7s %8s %9s %12s %8s %10s %10s %9s %9s\n", "label", "method", "quality", "target",
+           "seconds", "rays", "records", "rms_rel", "max_rel", "within_2s", "stated");
+    int flagged = 0;
+    for (size_t k = 0; k < count; ++k) {
+        const cdl_bench_row *r = &rows[k];
+        if (r->skipped) {
+            printf("%-18s %-9s %-7s %7.3g%% skipped: would not fit the budget\n", r->label,
+                   cdl_method_name(r->rung.method), r->quality, 100.0 * r->rung.target);
+            continue;
+        }
+        char rms[32];
+        if (r->below_reference)
+            snprintf(rms, sizeof rms, "<ref");
+        else
+            snprintf(rms, sizeof rms, "%.3f%%", 100.0 * r->rung.rms);
+        flagged |= r->below_reference;
+        printf("%-18s %-9s %-7s %7.3g%% %9.3f %12llu %8llu %10s %9.3f%% %8.1f%% %8.3f%%\n", r->label,
+               cdl_method_name(r->rung.method), r->quality, 100.0 * r->rung.target, r->rung.seconds,
+               (unsigned long long)r->rung.rays, (unsigned long long)r->rung.records, rms, 100.0 * r->rung.worst,
+               100.0 * r->rung.within2, 100.0 * r->rung.stated_rms);
+    }
+    if (flagged)
+        printf("note: \"<ref\": the RMS error is not above %g x the reference's own stated RMS (%.4f %%), so the "
+               "reference cannot resolve it; bench.csv keeps the figure measured\n",
+               CDL_BENCH_RESOLVABLE, 100.0 * ref_rms);
+    printf("\nrecommendation (cheapest rung whose measured RMS error reaches the preset's target on this scene):\n");
+    static const cdl_quality presets[3] = {CDL_QUALITY_DRAFT, CDL_QUALITY_NORMAL, CDL_QUALITY_HIGH};
+    for (int q = 0; q < 3; ++q) {
+        double t = cdl_quality_target_error(presets[q]);
+        const cdl_bench_row *best = NULL;
+        for (size_t k = 0; k < count; ++k) {
+            const cdl_bench_row *r = &rows[k];
+            if (r->skipped || r->rung.rms > t) continue;
+            if (!best || r->rung.seconds < best->rung.seconds) best = r;
+        }
+        if (best)
+            printf("  %-7s (%g %%): %s, %.2f s, RMS %s%.3f %%\n", cdl_quality_name(presets[q]), 100.0 * t, best->label,
+                   best->rung.seconds, best->below_reference ? "below the reference's resolution, " : "",
+                   100.0 * best->rung.rms);
+        else
+            printf("  %-7s (%g %%): no rung run reached it\n", cdl_quality_name(presets[q]), 100.0 * t);
+    }
+}
+
+static int bench(const bench_args *a, cdl_scene *scene)
+{
+    double t0 = now_seconds();
+    int methods[3] = {a->methods[0], a->methods[1], a->methods[2]};
+    double rho = 0.0;
+    const char *reflector = cdl_solve_first_reflector(scene, &rho);
+    if (!reflector) {
+        printf("no surface reflects light (every reflectance is 0): interreflected light is zero and icache and "
+               "pathtrace would compute direct light only, so only the direct method is benched\n");
+        methods[0] = 1;
+        methods[1] = methods[2] = 0;
+    }
+    cdl_error err;
+    cdl_error_clear(&err);
+    char path[4200];
+    snprintf(path, sizeof path, "%s/runs", a->dir);
+    cdl_status st = cdl_solution_prepare_folder(a->dir, &err);
+    if (st == CDL_OK) st = make_folder(path, &err);
+    if (st != CDL_OK) {
+        fprintf(stderr, "candela bench: %s\n", err.message);
+        return (int)st;
+    }
+    double ref_target = cdl_quality_target_error(CDL_QUALITY_REFERENCE);
+    cdl_solution ref;
+    int rc = get_reference(scene, a, ref_target, t0, &ref);
+    if (rc != CDL_EXIT_OK) return rc;
+    double ref_rms = cdl_bench_stated_rms(&ref);
+    printf("reference's own stated RMS error: %.4f %%\n", 100.0 * ref_rms);
+
+    cdl_bench_row rows[16];
+    size_t count = 0;
+    for (int m = 0; m < 3 && rc == CDL_EXIT_OK; ++m)
+        if (methods[m]) rc = run_ladder(scene, a, m, &ref, ref_rms, t0, rows, &count);
+    cdl_solution_release(&ref);
+    if (rc != CDL_EXIT_OK) return rc;
+
+    snprintf(path, sizeof path, "%s/bench.csv", a->dir);
+    st = cdl_bench_report_write_csv(path, rows, count, &err);
+    snprintf(path, sizeof path, "%s/bench.svg", a->dir);
+    if (st == CDL_OK) st = cdl_bench_report_write_svg(path, rows, count, ref_rms, &err);
+    if (st != CDL_OK) {
+        fprintf(stderr, "candela bench: %s\n", err.message);
+        return (int)st;
+    }
+    print_table(rows, count, ref_rms);
+    printf("\nresults in %s (bench.csv, bench.svg, reference/, runs/); %.1f s in all\n", a->dir, now_seconds() - t0);
+    return CDL_EXIT_OK;
 }
 
 static int run(int argc, char **argv)
 {
-    return cdl_command_not_built(&cdl_command_bench, argc, argv);
+    bench_args a;
+    int rc = parse_args(argc, argv, &a);
+    if (rc != CDL_EXIT_OK) return rc < 0 ? CDL_EXIT_OK : rc;
+    cdl_error err;
+    cdl_error_clear(&err);
+    cdl_scene *scene = NULL;
+    cdl_status st = cdl_scene_load(a.scene_path, &scene, &err);
+    if (st != CDL_OK) {
+        fprintf(stderr, "candela bench: %s\n", err.message);
+        return (int)st;
+    }
+    rc = bench(&a, scene);
+    cdl_scene_release(scene);
+    return rc;
 }
 
-const cdl_command cdl_command_bench = {"bench", "speed/accuracy trade: a ladder of settings vs a converged reference", run, print_help};
+const cdl_command cdl_command_bench = {"bench", "speed/accuracy trade: a ladder of settings vs a converged reference",
+                                       run, print_help};

@@ -124,16 +124,7 @@ static int run(int argc, char **argv)
         return CDL_EXIT_USAGE;
     }
     cdl_solve_options so = CDL_SOLVE_OPTIONS_DEFAULT;
-    cdl_cli_option *threads = cdl_cli_find(opts, nopts, "threads");
-    if (threads->present) {
-        char *end = NULL;
-        long t = strtol(threads->value, &end, 10);
-        if (!end || *end || t < 0 || t > 4096) {
-            fprintf(stderr, "candela solve: --threads: expected a whole number 0..4096, found '%s'\n", threads->value);
-            return CDL_EXIT_USAGE;
-        }
-        so.threads = (int)t;
-    }
+    if (cdl_cli_parse_threads("solve", cdl_cli_find(opts, nopts, "threads"), &so.threads)) return CDL_EXIT_USAGE;
     cdl_cli_option *cache = cdl_cli_find(opts, nopts, "cache");
     if (cache->present) {
         if (!cache->value[0]) {

@@ -1,0 +1,146 @@
+/* bench_report.c - bench.csv and bench.svg (see bench_report.h). */
+#include "solver/bench/bench_report.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "radiometry/atomic_file.h"
+#include "solver/solve.h"
+
+cdl_status cdl_bench_report_write_csv(const char *path, const cdl_bench_row *rows, size_t count, cdl_error *err)
+{
+    cdl_atomic_file f;
+    cdl_status st = cdl_atomic_file_open(&f, path, err);
+    if (st != CDL_OK) return st;
+    fputs("label,method,quality,target_error,seconds,rays,records,rms_rel_error,max_rel_error,within_2_sigma\n", f.fp);
+    for (size_t k = 0; k < count; ++k) {
+        const cdl_bench_row *r = &rows[k];
+        if (r->skipped) continue;
+        fprintf(f.fp, "%s,%s,%s,%.6g,%.3f,%llu,%llu,%.6g,%.6g,%.6g\n", r->label, cdl_method_name(r->rung.method),
+                r->quality, r->rung.target, r->rung.seconds, (unsigned long long)r->rung.rays,
+                (unsigned long long)r->rung.records, r->rung.rms, r->rung.worst, r->rung.within2);
+    }
+    return cdl_atomic_file_commit(&f, err);
+}
+
+/* The plot's frame: pixels of the SVG, the axes' decades. */
+typedef struct plot_frame {
+    double left, right, top, bottom;   /* plot area, px */
+    double x_lo, x_hi, y_lo, y_hi;     /* log10 of seconds and of RMS (%) at the edges */
+} plot_frame;
+
+static double plot_x(const plot_frame *f, double seconds)
+{
+    return f->left + (log10(seconds) - f->x_lo) / (f->x_hi - f->x_lo) * (f->right - f->left);
+}
+
+static double plot_y(const plot_frame *f, double percent)
+{
+    return f->bottom - (log10(percent) - f->y_lo) / (f->y_hi - f->y_lo) * (f->bottom - f->top);
+}
+
+/* The point a rung is drawn at: seconds and RMS in %, kept above 0 (an RMS
+ * the reference cannot resolve sits at half the floor). */
+static void rung_point(const cdl_bench_row *r, double floor_percent, double *s, double *p)
+{
+    *s = fmax(r->rung.seconds, 1e-4);
+    *p = fmax(100.0 * r->rung.rms, 0.5 * floor_percent);
+}
+
+static const char *method_colour(cdl_method m)
+{
+    return m == CDL_METHOD_ICACHE ? "#1f77b4" : m == CDL_METHOD_PATHTRACE ? "#d62728" : "#2ca02c";
+}
+
+static void write_axes(FILE *fp, const plot_frame *f)
+{
+    fprintf(fp, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" stroke=\"#000\"/>\n", f->left,
+            f->top, f->right - f->left, f->bottom - f->top);
+    for (int k = (int)f->x_lo; k <= (int)f->x_hi; ++k) {
+        double x = plot_x(f, pow(10.0, k));
+        fprintf(fp, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>\n", x, f->top, x,
+                f->bottom);
+        fprintf(fp, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%g</text>\n", x, f->bottom + 18,
+                pow(10.0, k));
+    }
+    for (int k = (int)f->y_lo; k <= (int)f->y_hi; ++k) {
+        double y = plot_y(f, pow(10.0, k));
+        fprintf(fp, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>\n", f->left, y, f->right,
+                y);
+        fprintf(fp, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">%g</text>\n", f->left - 6, y + 4, pow(10.0, k));
+    }
+    fprintf(fp, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">wall time of the whole solve (s)</text>\n",
+            0.5 * (f->left + f->right), f->bottom + 44);
+    fprintf(fp,
+            "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" transform=\"rotate(-90 %.1f %.1f)\">RMS relative "
+            "error of E against the reference (%%)</text>\n",
+            f->left - 50, 0.5 * (f->top + f->bottom), f->left - 50, 0.5 * (f->top + f->bottom));
+}
+
+cdl_status cdl_bench_report_write_svg(const char *path, const cdl_bench_row *rows, size_t count,
+                                      double reference_rms, cdl_error *err)
+{
+    double floor_percent = fmax(100.0 * reference_rms, 1e-6);
+    double s_min = INFINITY, s_max = 0.0, p_min = floor_percent, p_max = floor_percent;
+    for (size_t k = 0; k < count; ++k) {
+        if (rows[k].skipped) continue;
+        double s, p;
+        rung_point(&rows[k], floor_percent, &s, &p);
+        s_min = fmin(s_min, s);
+        s_max = fmax(s_max, s);
+        p_min = fmin(p_min, p);
+        p_max = fmax(p_max, p);
+    }
+    if (!(s_max > 0.0)) s_min = s_max = 1.0;
+    plot_frame f = {100.0, 620.0, 30.0, 420.0, floor(log10(s_min)), ceil(log10(s_max)), floor(log10(p_min)),
+                    ceil(log10(p_max))};
+    if (f.x_hi <= f.x_lo) f.x_hi = f.x_lo + 1.0;
+    if (f.y_hi <= f.y_lo) f.y_hi = f.y_lo + 1.0;
+
+    cdl_atomic_file file;
+    cdl_status st = cdl_atomic_file_open(&file, path, err);
+    if (st != CDL_OK) return st;
+    FILE *fp = file.fp;
+    fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+          "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"760\" height=\"500\" viewBox=\"0 0 760 500\" "
+          "font-family=\"sans-serif\" font-size=\"12\">\n"
+          "<title>candela bench: RMS error against time</title>\n"
+          "<rect width=\"760\" height=\"500\" fill=\"#fff\"/>\n",
+          fp);
+    write_axes(fp, &f);
+    double yf = plot_y(&f, floor_percent);
+    fprintf(fp,
+            "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#555\" stroke-dasharray=\"6 4\"/>\n"
+            "<text x=\"%.1f\" y=\"%.1f\" fill=\"#555\">reference's own error %.3g %%</text>\n",
+            f.left, yf, f.right, yf, f.left + 6, yf - 5, floor_percent);
+    const cdl_method methods[3] = {CDL_METHOD_DIRECT, CDL_METHOD_ICACHE, CDL_METHOD_PATHTRACE};
+    int legend = 0;
+    for (int m = 0; m < 3; ++m) {
+        int any = 0;
+        for (size_t k = 0; k < count; ++k) {
+            if (rows[k].skipped || rows[k].rung.method != methods[m]) continue;
+            double s, p;
+            rung_point(&rows[k], floor_percent, &s, &p);
+            if (!any) fprintf(fp, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" points=\"", method_colour(methods[m]));
+            fprintf(fp, "%s%.1f,%.1f", any ? " " : "", plot_x(&f, s), plot_y(&f, p));
+            any = 1;
+        }
+        if (!any) continue;
+        fputs("\"/>\n", fp);
+        for (size_t k = 0; k < count; ++k) {
+            if (rows[k].skipped || rows[k].rung.method != methods[m]) continue;
+            double s, p;
+            rung_point(&rows[k], floor_percent, &s, &p);
+            fprintf(fp,
+                    "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\"/>\n"
+                    "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\">%s%s</text>\n",
+                    plot_x(&f, s), plot_y(&f, p), method_colour(methods[m]), plot_x(&f, s) + 6, plot_y(&f, p) - 6,
+                    rows[k].label, rows[k].below_reference ? " (below the reference)" : "");
+        }
+        fprintf(fp, "<text x=\"%d\" y=\"%d\" fill=\"%s\">%s</text>\n", 640, 50 + 18 * legend++,
+                method_colour(methods[m]), cdl_method_name(methods[m]));
+    }
+    fputs("</svg>\n", fp);
+    return cdl_atomic_file_commit(&file, err);
+}
