@@ -272,11 +272,12 @@ static int run_ladder(const cdl_scene *scene, const bench_args *a, int m, const 
         row->quality = specs[k].quality;
         row->rung.method = method_of[m];
         row->rung.target = specs[k].target;
-        if (a->budget > 0.0 && prev) {
-            /* Monte Carlo: time ~ target^-2 at a fixed cost per sample. */
-            double ratio = prev->rung.target / specs[k].target;
-            double need = prev->rung.seconds * ratio * ratio;
-            if (now_seconds() - t0 + need > a->budget) {
+        if (a->budget > 0.0) {
+            /* Monte Carlo: time ~ target^-2 at a fixed cost per sample; a
+             * method's first rung is run when any budget is left. */
+            double ratio = prev ? prev->rung.target / specs[k].target : 0.0;
+            double need = prev ? prev->rung.seconds * ratio * ratio : 0.0;
+            if (now_seconds() - t0 + need >= a->budget) {
                 row->skipped = 1;
                 continue;
             }

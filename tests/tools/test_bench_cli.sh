@@ -1,0 +1,116 @@
+#!/usr/bin/env bash
+# candela bench through the command line, on the integrating sphere (radius
+# 1 m, inward, reflectance 0.5, a 1000 lm point source at its centre) whose
+# answer is known at every point of the wall: direct Phi/(4 pi d^2) at the
+# point's distance d from the source, interreflected rho Phi/(A (1 - rho))
+# with A = 4 pi r^2 (the integrating sphere's equation; e.g. Ohno, OSA
+# Handbook of Optics, "Integrating sphere"). Checks: the reference against
+# that answer within its stated error; each rung's stated RMS against its
+# true RMS within a factor 1.5; bench.csv's exact header and numbers;
+# bench.svg valid XML with both axes labelled in units; a second run
+# reuses DIR/reference (and gives the same CSV apart from seconds); a
+# changed reflectance is refused; a scene without reflection benches
+# direct only and says why; a budget too small for the reference is exit 1
+# naming the time it needs.
+# ctest-timeout: 120
+set -u
+: "${CANDELA:?}"
+fail=0
+check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 1
+
+# 24 points spread over the wall (a Fibonacci lattice), 0.999 m from the
+# centre, normals towards it.
+points=$(awk 'BEGIN { n = 24; pi = atan2(0, -1); R = 0.999
+  for (i = 0; i < n; ++i) {
+    z = 1 - 2 * (i + 0.5) / n; r = sqrt(1 - z * z); ph = i * pi * (3 - sqrt(5))
+    x = r * cos(ph); y = r * sin(ph)
+    printf "%s{\"p\": [%.9f, %.9f, %.9f], \"n\": [%.9f, %.9f, %.9f]}", (i ? ", " : ""), R*x, R*y, R*z, -x, -y, -z
+  } }')
+scene() { # reflectance
+  printf '{"version": 1,\n "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "inward": true, "reflectance": %s}],\n' "$1"
+  printf ' "luminaires": [{"type": "point", "position": [0, 0, 0], "flux_lm": 1000}],\n'
+  printf ' "grids": [{"name": "wall", "type": "points", "points": [%s]}]}\n' "$points"
+}
+scene 0.5 > sphere.json
+
+"$CANDELA" bench sphere.json -o B --quiet > out1.txt 2> err1.txt; st=$?
+check "first run: exit 0" '[ $st -eq 0 ]'
+[ $st -eq 0 ] || cat err1.txt
+check "first run: reference computed" 'grep -q "^reference: path traced to 0.02 %" out1.txt'
+check "reference and its key written" '[ -s B/reference/wall.csv ] && [ -s B/reference/summary.json ] && [ -s B/reference/reference.key ]'
+check "every rung's outputs as solve writes them" \
+  'for m in icache pathtrace; do for r in draft t0.01 normal t0.0025 high; do [ -s B/runs/${m}_$r/wall.csv ] && [ -s B/runs/${m}_$r/summary.json ] || exit 1; done; done'
+check "table ends with a recommendation per preset" \
+  'grep -q "^recommendation" out1.txt && grep -Eq "^  draft +\(2 %\): " out1.txt && grep -Eq "^  normal +\(0.5 %\): " out1.txt && grep -Eq "^  high +\(0.1 %\): " out1.txt'
+check "no temporary file left" '[ -z "$(find B -name "*.tmp.*")" ]'
+
+# The exact answer at a point d from the centre.
+exact='function exact(x, y, z) { pi = atan2(0, -1); return 1000 / (4 * pi * (x*x + y*y + z*z)) + 0.5 * 1000 / (4 * pi * 0.5) }'
+# The reference: every point within 4 of its own sigma, and sigma <= 0.02 %.
+check "reference within 4 sigma of the exact answer, to 0.02 %" \
+  'awk -F, "$exact"'"'"' NR > 1 { e = exact($1, $2, $3); if (($7 - e) > 4 * $10 || (e - $7) > 4 * $10 || $10 / $7 > 0.0002) bad++ } END { exit bad > 0 }'"'"' B/reference/wall.csv'
+# Each rung: stated RMS (of E_stderr/E) against the true RMS (against the
+# exact answer) within a factor 1.5.
+for d in B/runs/*/; do
+  ratio=$(awk -F, "$exact"' NR > 1 { e = exact($1, $2, $3); t += (($7 - e) / e)^2; s += ($10 / $7)^2; n++ }
+            END { printf "%.4f", sqrt(s / n) / sqrt(t / n) }' "$d/wall.csv")
+  check "$(basename "$d"): stated RMS / true RMS = $ratio, within a factor 1.5" \
+    'awk -v r="$ratio" "BEGIN { exit !(r >= 1/1.5 && r <= 1.5) }"'
+done
+
+# bench.csv: the exact header, 10 rows, numbers past the third column.
+check "bench.csv header" \
+  '[ "$(head -1 B/bench.csv)" = "label,method,quality,target_error,seconds,rays,records,rms_rel_error,max_rel_error,within_2_sigma" ]'
+check "bench.csv: 10 rungs, each field a number past the third" \
+  'awk -F, "NR > 1 { n++; if (NF != 10) bad++; for (i = 4; i <= 10; ++i) if (\$i !~ /^[0-9.e+-]+\$/) bad++ } END { exit !(n == 10 && !bad) }" B/bench.csv'
+check "bench.csv: errors are fractions, shares within [0, 1]" \
+  'awk -F, "NR > 1 && (\$8 > 0.1 || \$9 > 0.1 || \$10 < 0 || \$10 > 1) { bad++ } END { exit bad > 0 }" B/bench.csv'
+# bench.svg: well-formed XML, both axes labelled with their units.
+check "bench.svg is valid XML" 'xmllint --noout B/bench.svg'
+check "bench.svg: x axis labelled in seconds" 'grep -q "wall time of the whole solve (s)" B/bench.svg'
+check "bench.svg: y axis labelled in percent" 'grep -q "RMS relative error of E against the reference (%)" B/bench.svg'
+check "bench.svg: one polyline per method and the reference floor" \
+  '[ "$(grep -c "<polyline" B/bench.svg)" -eq 2 ] && grep -q "reference.s own error" B/bench.svg'
+
+# A second run reuses the reference and gives the same CSV but for seconds.
+"$CANDELA" bench sphere.json -o B --quiet > out2.txt 2> err2.txt; st=$?
+check "second run: exit 0" '[ $st -eq 0 ]'
+check "second run: says the reference is reused" 'grep -q "^reference: reused B/reference (scene and settings hash" out2.txt'
+cut -d, -f5 --complement B/bench.csv > second.csv
+check "second run: same CSV apart from seconds" \
+  '"$CANDELA" bench sphere.json -o C --quiet > /dev/null 2>&1 && cut -d, -f5 --complement C/bench.csv | cmp -s - second.csv'
+
+# A changed reflectance: the reference is refused.
+scene 0.6 > rho.json
+"$CANDELA" bench rho.json -o B --quiet > /dev/null 2> err3.txt; st=$?
+check "changed reflectance: exit 1" '[ $st -eq 1 ]'
+check "changed reflectance: refused with a message" \
+  'grep -q "B/reference: the reference there was made for another scene or other settings" err3.txt && grep -q "remove B/reference" err3.txt'
+
+# Nothing reflects: direct only, with the reason.
+scene 0 > black.json
+"$CANDELA" bench black.json -o D --quiet > out4.txt 2> err4.txt; st=$?
+check "no reflection: exit 0" '[ $st -eq 0 ]'
+check "no reflection: says why only direct" 'grep -q "no surface reflects light" out4.txt && grep -q "only the direct method is benched" out4.txt'
+check "no reflection: only direct rungs" \
+  '[ "$(awk -F, "NR > 1 { print \$2 }" D/bench.csv | sort -u)" = direct ] && [ "$(wc -l < D/bench.csv)" -eq 4 ]'
+
+# A budget too small for the reference.
+"$CANDELA" bench sphere.json -o E --budget 0.001 --quiet > /dev/null 2> err5.txt; st=$?
+check "tiny budget: exit 1" '[ $st -eq 1 ]'
+check "tiny budget: says how long the reference needs" \
+  'grep -Eq "budget 0.001 s is too small: the reference \(path tracing to 0.02 %\) needs about [0-9.e+]+ s" err5.txt'
+# A budget the reused reference leaves nothing of: every rung skipped and listed.
+"$CANDELA" bench sphere.json -o B --budget 0.000001 --quiet > out7.txt 2> err7.txt; st=$?
+check "budget spent: exit 0" '[ $st -eq 0 ]'
+check "budget spent: rungs listed as skipped" '[ "$(grep -c "skipped: would not fit the budget" out7.txt)" -eq 10 ]'
+check "budget spent: bench.csv keeps only the header" '[ "$(wc -l < B/bench.csv)" -eq 1 ]'
+# Usage.
+"$CANDELA" bench sphere.json > /dev/null 2>&1; st=$?
+check "no -o: usage error" '[ $st -eq 2 ]'
+"$CANDELA" bench sphere.json -o F --methods frob > /dev/null 2> err6.txt; st=$?
+check "unknown method: usage error naming it" '[ $st -eq 2 ] && grep -q "frob" err6.txt'
+exit $fail
