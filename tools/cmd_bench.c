@@ -74,11 +74,15 @@ static double now_seconds(void)
 /* The run's settings from the command line. */
 typedef struct bench_args {
     const char *scene_path, *dir;
-    double budget;               /* seconds; <= 0: none */
+    double budget;               /* seconds; 0: none */
     int methods[3];              /* direct, icache, pathtrace asked for */
     int threads;
     int quiet;
 } bench_args;
+
+/* The whole run's bound when --budget is not given: nine minutes, so that
+ * a bench of a room-sized scene ends within ten. */
+#define BENCH_DEFAULT_BUDGET 540.0
 
 static const cdl_method method_of[3] = {CDL_METHOD_DIRECT, CDL_METHOD_ICACHE, CDL_METHOD_PATHTRACE};
 
@@ -124,13 +128,14 @@ static int parse_args(int argc, char **argv, bench_args *a)
     a->scene_path = r.positional[0];
     a->dir = out->value;
     a->threads = -1;
+    a->budget = BENCH_DEFAULT_BUDGET;
     a->quiet = cdl_cli_find(opts, n, "quiet")->present;
     cdl_cli_option *o = cdl_cli_find(opts, n, "budget");
     if (o->present) {
         char *end = NULL;
         a->budget = strtod(o->value, &end);
-        if (!end || *end || !(a->budget > 0.0) || !isfinite(a->budget)) {
-            fprintf(stderr, "candela bench: --budget: expected seconds above 0, found '%s'\n", o->value);
+        if (!end || *end || end == o->value || !(a->budget >= 0.0) || !isfinite(a->budget)) {
+            fprintf(stderr, "candela bench: --budget: expected seconds (0 = no bound), found '%s'\n", o->value);
             return CDL_EXIT_USAGE;
         }
     }
