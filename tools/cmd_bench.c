@@ -43,8 +43,8 @@ static void print_help(FILE *out)
           "\n"
           "Writes DIR/bench.csv (label,method,quality,target_error,seconds,rays,records,\n"
           "rms_rel_error,max_rel_error,within_2_sigma; errors as fractions; skipped rungs\n"
-          "left out), DIR/bench.svg (RMS error against seconds, log-log, the reference's\n"
-          "error as a floor), and on stdout a table ending with the cheapest rung that\n"
+          "left out), DIR/bench.svg and DIR/bench.png (RMS error against seconds,\n"
+          "log-log, the reference's error as a floor), and on stdout a table ending with the cheapest rung that\n"
           "reaches each preset's target. The same scene, seed and threads give the same\n"
           "bench.csv apart from its seconds column.\n"
           "\n"
@@ -392,12 +392,14 @@ static int bench(const bench_args *a, cdl_scene *scene)
     st = cdl_bench_report_write_csv(path, rows, count, &err);
     snprintf(path, sizeof path, "%s/bench.svg", a->dir);
     if (st == CDL_OK) st = cdl_bench_report_write_svg(path, rows, count, ref_rms, &err);
+    snprintf(path, sizeof path, "%s/bench.png", a->dir);
+    if (st == CDL_OK) st = cdl_bench_report_write_png(path, rows, count, ref_rms, &err);
     if (st != CDL_OK) {
         fprintf(stderr, "candela bench: %s\n", err.message);
         return (int)st;
     }
     print_table(rows, count, ref_rms);
-    printf("\nresults in %s (bench.csv, bench.svg, reference/, runs/); %.1f s in all\n", a->dir, now_seconds() - t0);
+    printf("\nresults in %s (bench.csv, bench.svg, bench.png, reference/, runs/); %.1f s in all\n", a->dir, now_seconds() - t0);
     return CDL_EXIT_OK;
 }
 

@@ -3,9 +3,13 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "radiometry/atomic_file.h"
+#include "solver/output/bitmap_font.h"
+#include "solver/output/png_write.h"
 #include "solver/solve.h"
 
 cdl_status cdl_bench_report_write_csv(const char *path, const cdl_bench_row *rows, size_t count, cdl_error *err)
@@ -48,9 +52,18 @@ static void rung_point(const cdl_bench_row *r, double floor_percent, double *s, 
     *p = fmax(100.0 * r->rung.rms, 0.5 * floor_percent);
 }
 
+/* One colour a method, as hex for the SVG and as bytes for the PNG. */
 static const char *method_colour(cdl_method m)
 {
     return m == CDL_METHOD_ICACHE ? "#1f77b4" : m == CDL_METHOD_PATHTRACE ? "#d62728" : "#2ca02c";
+}
+
+static void method_rgb(cdl_method m, uint8_t rgb[3])
+{
+    unsigned v = (unsigned)strtoul(method_colour(m) + 1, NULL, 16);
+    rgb[0] = (uint8_t)(v >> 16);
+    rgb[1] = (uint8_t)(v >> 8);
+    rgb[2] = (uint8_t)v;
 }
 
 static void write_axes(FILE *fp, const plot_frame *f)
@@ -78,10 +91,10 @@ static void write_axes(FILE *fp, const plot_frame *f)
             f->left - 50, 0.5 * (f->top + f->bottom), f->left - 50, 0.5 * (f->top + f->bottom));
 }
 
-cdl_status cdl_bench_report_write_svg(const char *path, const cdl_bench_row *rows, size_t count,
-                                      double reference_rms, cdl_error *err)
+/* The frame that holds every measured rung and the floor, in whole
+ * decades on both axes. */
+static plot_frame frame_for(const cdl_bench_row *rows, size_t count, double floor_percent)
 {
-    double floor_percent = fmax(100.0 * reference_rms, 1e-6);
     double s_min = INFINITY, s_max = 0.0, p_min = floor_percent, p_max = floor_percent;
     for (size_t k = 0; k < count; ++k) {
         if (rows[k].skipped) continue;
@@ -97,7 +110,14 @@ cdl_status cdl_bench_report_write_svg(const char *path, const cdl_bench_row *row
                     ceil(log10(p_max))};
     if (f.x_hi <= f.x_lo) f.x_hi = f.x_lo + 1.0;
     if (f.y_hi <= f.y_lo) f.y_hi = f.y_lo + 1.0;
+    return f;
+}
 
+cdl_status cdl_bench_report_write_svg(const char *path, const cdl_bench_row *rows, size_t count,
+                                      double reference_rms, cdl_error *err)
+{
+    double floor_percent = fmax(100.0 * reference_rms, 1e-6);
+    plot_frame f = frame_for(rows, count, floor_percent);
     cdl_atomic_file file;
     cdl_status st = cdl_atomic_file_open(&file, path, err);
     if (st != CDL_OK) return st;
@@ -143,4 +163,118 @@ cdl_status cdl_bench_report_write_svg(const char *path, const cdl_bench_row *row
     }
     fputs("</svg>\n", fp);
     return cdl_atomic_file_commit(&file, err);
+}
+
+/* ---- the same plot as a PNG, drawn pixel by pixel ---------------------- */
+
+enum { PLOT_WIDTH = 760, PLOT_HEIGHT = 500 };
+
+static void put_pixel(uint8_t *img, int x, int y, const uint8_t c[3])
+{
+    if (x < 0 || y < 0 || x >= PLOT_WIDTH || y >= PLOT_HEIGHT) return;
+    memcpy(img + 3 * ((size_t)y * PLOT_WIDTH + (size_t)x), c, 3);
+}
+
+/* A line from (x0, y0) to (x1, y1), `thick` pixels wide, dashed when dash
+ * > 0 (dash pixels on, dash off): Bresenham's algorithm (Bresenham 1965,
+ * IBM Systems Journal 4(1)), all octants by the error term of both axes. */
+static void draw_line(uint8_t *img, double fx0, double fy0, double fx1, double fy1, int thick, int dash,
+                      const uint8_t c[3])
+{
+    int x0 = (int)lround(fx0), y0 = (int)lround(fy0), x1 = (int)lround(fx1), y1 = (int)lround(fy1);
+    int dx = abs(x1 - x0), dy = -abs(y1 - y0), sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1, e = dx + dy;
+    for (int step = 0;; ++step) {
+        if (dash <= 0 || (step / dash) % 2 == 0)
+            for (int t = 0; t < thick; ++t) {
+                put_pixel(img, x0, y0 + t, c);
+                put_pixel(img, x0 + t, y0, c);
+            }
+        if (x0 == x1 && y0 == y1) break;
+        int e2 = 2 * e;
+        if (e2 >= dy) {
+            e += dy;
+            x0 += sx;
+        }
+        if (e2 <= dx) {
+            e += dx;
+            y0 += sy;
+        }
+    }
+}
+
+static void draw_text(uint8_t *img, double x, double y, const char *text, int anchor, const uint8_t c[3])
+{
+    /* anchor: 0 left, 1 centre, 2 right of x; y is the text's top */
+    int w = cdl_bitmap_font_text_width(text, 1);
+    int left = (int)lround(x) - (anchor == 1 ? w / 2 : anchor == 2 ? w : 0);
+    cdl_bitmap_font_draw_text(img, PLOT_WIDTH, PLOT_HEIGHT, left, (int)lround(y), text, 1, c);
+}
+
+static void draw_png_axes(uint8_t *img, const plot_frame *f)
+{
+    static const uint8_t black[3] = {0, 0, 0}, grey[3] = {221, 221, 221};
+    char label[32];
+    for (int k = (int)f->x_lo; k <= (int)f->x_hi; ++k) {
+        double x = plot_x(f, pow(10.0, k));
+        draw_line(img, x, f->top, x, f->bottom, 1, 0, grey);
+        snprintf(label, sizeof label, "%g", pow(10.0, k));
+        draw_text(img, x, f->bottom + 8, label, 1, black);
+    }
+    for (int k = (int)f->y_lo; k <= (int)f->y_hi; ++k) {
+        double y = plot_y(f, pow(10.0, k));
+        draw_line(img, f->left, y, f->right, y, 1, 0, grey);
+        snprintf(label, sizeof label, "%g", pow(10.0, k));
+        draw_text(img, f->left - 6, y - 3, label, 2, black);
+    }
+    draw_line(img, f->left, f->top, f->right, f->top, 1, 0, black);
+    draw_line(img, f->left, f->bottom, f->right, f->bottom, 1, 0, black);
+    draw_line(img, f->left, f->top, f->left, f->bottom, 1, 0, black);
+    draw_line(img, f->right, f->top, f->right, f->bottom, 1, 0, black);
+    draw_text(img, 0.5 * (f->left + f->right), f->bottom + 30, "wall time of the whole solve (s)", 1, black);
+    draw_text(img, f->left, f->top - 16, "rms relative error of e against the reference (%)", 0, black);
+}
+
+cdl_status cdl_bench_report_write_png(const char *path, const cdl_bench_row *rows, size_t count,
+                                      double reference_rms, cdl_error *err)
+{
+    double floor_percent = fmax(100.0 * reference_rms, 1e-6);
+    plot_frame f = frame_for(rows, count, floor_percent);
+    uint8_t *img = malloc((size_t)PLOT_WIDTH * PLOT_HEIGHT * 3);
+    if (!img) return cdl_error_out_of_memory(err);
+    memset(img, 255, (size_t)PLOT_WIDTH * PLOT_HEIGHT * 3);
+    draw_png_axes(img, &f);
+    static const uint8_t floor_grey[3] = {85, 85, 85};
+    double yf = plot_y(&f, floor_percent);
+    char label[96];
+    draw_line(img, f.left, yf, f.right, yf, 1, 6, floor_grey);
+    snprintf(label, sizeof label, "reference error %.3g %%", floor_percent);
+    draw_text(img, f.left + 6, yf - 11, label, 0, floor_grey);
+    const cdl_method methods[3] = {CDL_METHOD_DIRECT, CDL_METHOD_ICACHE, CDL_METHOD_PATHTRACE};
+    int legend = 0;
+    for (int m = 0; m < 3; ++m) {
+        uint8_t c[3];
+        method_rgb(methods[m], c);
+        double px = 0.0, py = 0.0;
+        int any = 0;
+        for (size_t k = 0; k < count; ++k) {
+            if (rows[k].skipped || rows[k].rung.method != methods[m]) continue;
+            double s, p;
+            rung_point(&rows[k], floor_percent, &s, &p);
+            double x = plot_x(&f, s), y = plot_y(&f, p);
+            if (any) draw_line(img, px, py, x, y, 2, 0, c);
+            for (int dy = -3; dy <= 3; ++dy)
+                for (int dx = -3; dx <= 3; ++dx)
+                    if (dx * dx + dy * dy <= 10) put_pixel(img, (int)lround(x) + dx, (int)lround(y) + dy, c);
+            snprintf(label, sizeof label, "%s%s", rows[k].label, rows[k].below_reference ? " (<ref)" : "");
+            draw_text(img, x + 6, y - 12, label, 0, c);
+            px = x;
+            py = y;
+            any = 1;
+        }
+        if (any) draw_text(img, 640, 45 + 14 * legend++, cdl_method_name(methods[m]), 0, c);
+    }
+    cdl_status st = cdl_png_write_rgb(path, img, PLOT_WIDTH, PLOT_HEIGHT,
+                                      "candela bench: RMS relative error of E (%) against wall seconds, log-log", err);
+    free(img);
+    return st;
 }

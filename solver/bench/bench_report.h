@@ -8,7 +8,7 @@
  * seconds with 3 decimals. A rung below what the reference resolves keeps
  * its figure here (the command's table flags it).
  *
- * bench.svg: RMS relative error (%) against wall seconds, both axes
+ * bench.svg (and bench.png): RMS relative error (%) against wall seconds, both axes
  * logarithmic with decade ticks, one polyline per method through its
  * rungs (each labelled), and the reference's own stated RMS as a dashed
  * horizontal floor. Both files are written atomically (atomic_file.h).
@@ -25,6 +25,11 @@ cdl_status cdl_bench_report_write_csv(const char *path, const cdl_bench_row *row
 
 /* reference_rms: the reference's stated RMS (fraction), drawn as the floor. */
 cdl_status cdl_bench_report_write_svg(const char *path, const cdl_bench_row *rows, size_t count,
+                                      double reference_rms, cdl_error *err);
+
+/* The same plot as bench.png (760 x 500, drawn with bitmap_font.h: the
+ * y axis's title stands above the axis, in lower case). */
+cdl_status cdl_bench_report_write_png(const char *path, const cdl_bench_row *rows, size_t count,
                                       double reference_rms, cdl_error *err);
 
 #endif

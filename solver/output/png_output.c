@@ -10,6 +10,7 @@
 
 #include "solver/output/bitmap_font.h"
 #include "solver/output/display_transform.h"
+#include "solver/output/png_write.h"
 
 /* Layout, in image pixels. */
 enum {
@@ -187,7 +188,8 @@ static void png_ignore_warning(png_structp png, png_const_charp msg)
     (void)msg;
 }
 
-static cdl_status encode_png(FILE *fp, const uint8_t *img, const cdl_png_layout *L, const char *path, cdl_error *err)
+static cdl_status encode_png(FILE *fp, const uint8_t *img, int width, int height, const char *description,
+                             const char *path, cdl_error *err)
 {
     png_failure failure = {"unknown error"};
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &failure, png_error_to_message, png_ignore_warning);
@@ -197,11 +199,6 @@ static cdl_status encode_png(FILE *fp, const uint8_t *img, const cdl_png_layout 
         png_destroy_write_struct(&png, NULL);
         return cdl_error_set(err, CDL_ERR_INTERNAL, "%s: cannot start the PNG encoder (out of memory)", path);
     }
-    char lo[64], hi[64], description[200];
-    cdl_lux_scale_step_label(L->scale.lo_step, lo, sizeof lo);
-    cdl_lux_scale_step_label(L->scale.hi_step, hi, sizeof hi);
-    snprintf(description, sizeof description,
-             "Illuminance in lux, false colour on a logarithmic scale from %s to %s", lo, hi);
     png_text text[2];
     memset(text, 0, sizeof text);
     text[0].compression = PNG_TEXT_COMPRESSION_NONE;
@@ -209,20 +206,20 @@ static cdl_status encode_png(FILE *fp, const uint8_t *img, const cdl_png_layout 
     text[0].text = "Candela " CANDELA_VERSION;
     text[1].compression = PNG_TEXT_COMPRESSION_NONE;
     text[1].key = "Description";
-    text[1].text = description;
+    text[1].text = (char *)description;
 
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
         return cdl_error_set(err, CDL_ERR_INTERNAL, "%s: PNG encoding failed: %s", path, failure.message);
     }
     png_init_io(png, fp);
-    png_set_IHDR(png, info, (png_uint_32)L->width, (png_uint_32)L->height, 8, PNG_COLOR_TYPE_RGB,
+    png_set_IHDR(png, info, (png_uint_32)width, (png_uint_32)height, 8, PNG_COLOR_TYPE_RGB,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    /* The pixels are sRGB-encoded by the OCIO display transform: say so. */
+    /* The pixels are sRGB-encoded (the maps by the OCIO display transform): say so. */
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_set_text(png, info, text, 2);
     png_write_info(png, info);
-    for (int y = 0; y < L->height; ++y) png_write_row(png, img + (size_t)y * (size_t)L->width * 3);
+    for (int y = 0; y < height; ++y) png_write_row(png, img + (size_t)y * (size_t)width * 3);
     png_write_end(png, NULL);
     png_destroy_write_struct(&png, &info);
     return CDL_OK;
@@ -257,15 +254,24 @@ cdl_status cdl_grid_result_write_png(const cdl_grid_result *result, const char *
         return cdl_error_prefix(err, "%s: ", path);
     }
 
-    cdl_atomic_file file;
-    st = cdl_atomic_file_open(&file, path, err);
-    if (st == CDL_OK) {
-        st = encode_png(file.fp, img, &L, path, err);
-        if (st == CDL_OK)
-            st = cdl_atomic_file_commit(&file, err);
-        else
-            cdl_atomic_file_abort(&file);
-    }
+    char lo[64], hi[64], description[200];
+    cdl_lux_scale_step_label(L.scale.lo_step, lo, sizeof lo);
+    cdl_lux_scale_step_label(L.scale.hi_step, hi, sizeof hi);
+    snprintf(description, sizeof description,
+             "Illuminance in lux, false colour on a logarithmic scale from %s to %s", lo, hi);
+    st = cdl_png_write_rgb(path, img, L.width, L.height, description, err);
     free(img);
+    return st;
+}
+
+cdl_status cdl_png_write_rgb(const char *path, const uint8_t *rgb, int width, int height, const char *description,
+                             cdl_error *err)
+{
+    cdl_atomic_file file;
+    cdl_status st = cdl_atomic_file_open(&file, path, err);
+    if (st != CDL_OK) return st;
+    st = encode_png(file.fp, rgb, width, height, description, path, err);
+    if (st == CDL_OK) return cdl_atomic_file_commit(&file, err);
+    cdl_atomic_file_abort(&file);
     return st;
 }

@@ -75,6 +75,9 @@ check "bench.svg: y axis labelled in percent" 'grep -q "RMS relative error of E 
 check "bench.svg: one polyline per method and the reference floor" \
   '[ "$(grep -c "<polyline" B/bench.svg)" -eq 2 ] && grep -q "reference.s own error" B/bench.svg'
 
+check "bench.png: a 760 x 500 PNG" \
+  '[ "$(head -c 8 B/bench.png | od -An -tx1 | tr -d " \n")" = 89504e470d0a1a0a ] && [ "$(od -An -tu1 -j16 -N8 B/bench.png | tr -s " ")" = " 0 0 2 248 0 0 1 244" ]'
+
 # A second run reuses the reference and gives the same CSV but for seconds.
 "$CANDELA" bench sphere.json -o B --quiet > out2.txt 2> err2.txt; st=$?
 check "second run: exit 0" '[ $st -eq 0 ]'
