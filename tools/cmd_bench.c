@@ -32,7 +32,8 @@ static void print_help(FILE *out)
           "  ladder     icache and pathtrace: draft (2 %), 1 %, normal (0.5 %), 0.25 %,\n"
           "             high (0.1 %); direct: draft, normal, high. Each a whole solve with\n"
           "             the scene's seed, its files in DIR/runs/LABEL/ as `candela solve`\n"
-          "             writes them.\n"
+          "             writes them. direct leaves out interreflected light: on a scene\n"
+          "             that reflects, its error is mostly that.\n"
           "\n"
           "For each rung: seconds (wall, whole solve), rays, cache records, the RMS and\n"
           "largest relative error of E against the reference over every point of every\n"
@@ -364,6 +365,10 @@ static int bench(const bench_args *a, cdl_scene *scene)
         methods[0] = 1;
         methods[1] = methods[2] = 0;
     }
+    if (reflector && methods[0])
+        printf("note: method direct leaves out interreflected light (%s reflects %g %%): its error against the "
+               "reference is mostly that light\n",
+               reflector, 100.0 * rho);
     cdl_error err;
     cdl_error_clear(&err);
     char path[4200];

@@ -5,7 +5,8 @@
  * overridden (same seed); its error is measured against a reference solve
  * (path tracing to a small target) over every point of every grid.
  *
- * Errors are relative to the reference's E and given as fractions:
+ * Errors are relative to the reference's E and given as fractions (points
+ * where the reference's E is 0 have no relative error and are left out):
  *   rms       RMS of (E - E_ref)/E_ref with the reference's own noise taken
  *             out in quadrature (never below zero);
  *   worst     the largest |E - E_ref|/E_ref (noise of both included);
