@@ -301,7 +301,8 @@ static int run_ladder(const cdl_scene *scene, const bench_args *a, int m, const 
         }
         cdl_bench_rung_measure(&sol, ref, &row->rung);
         cdl_solution_release(&sol);
-        row->below_reference = row->rung.rms <= CDL_BENCH_RESOLVABLE * ref_rms;
+        /* an exact reference (no stated error) resolves everything */
+        row->below_reference = ref_rms > 0.0 && row->rung.rms <= CDL_BENCH_RESOLVABLE * ref_rms;
         prev = row;
     }
     return CDL_EXIT_OK;

@@ -98,6 +98,8 @@ scene 0 > black.json
 "$CANDELA" bench black.json -o D --quiet > out4.txt 2> err4.txt; st=$?
 check "no reflection: exit 0" '[ $st -eq 0 ]'
 check "no reflection: says why only direct" 'grep -q "no surface reflects light" out4.txt && grep -q "only the direct method is benched" out4.txt'
+check "no reflection: direct light exact, no rung flagged below the (exact) reference" \
+  'awk -F, "NR > 1 && \$8 != 0 { bad++ } END { exit bad > 0 }" D/bench.csv && ! grep -q "<ref" out4.txt'
 check "no reflection: only direct rungs" \
   '[ "$(awk -F, "NR > 1 { print \$2 }" D/bench.csv | sort -u)" = direct ] && [ "$(wc -l < D/bench.csv)" -eq 4 ]'
 
