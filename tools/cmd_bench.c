@@ -7,6 +7,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "cli_args.h"
 #include "command.h"
@@ -374,6 +375,7 @@ static int bench(const bench_args *a, cdl_scene *scene)
     cdl_error_clear(&err);
     char path[4200];
     snprintf(path, sizeof path, "%s/runs", a->dir);
+    int dir_existed = access(a->dir, F_OK) == 0;
     cdl_status st = cdl_solution_prepare_folder(a->dir, &err);
     if (st == CDL_OK) st = make_folder(path, &err);
     if (st != CDL_OK) {
@@ -383,7 +385,14 @@ static int bench(const bench_args *a, cdl_scene *scene)
     double ref_target = cdl_quality_target_error(CDL_QUALITY_REFERENCE);
     cdl_solution ref;
     int rc = get_reference(scene, a, ref_target, t0, &ref);
-    if (rc != CDL_EXIT_OK) return rc;
+    if (rc != CDL_EXIT_OK) {
+        /* folders this run made and left empty go (rmdir refuses others) */
+        rmdir(path);
+        snprintf(path, sizeof path, "%s/reference", a->dir);
+        rmdir(path);
+        if (!dir_existed) rmdir(a->dir);
+        return rc;
+    }
     double ref_rms = cdl_bench_stated_rms(&ref);
     printf("reference's own stated RMS error: %.4f %%\n", 100.0 * ref_rms);
 

@@ -106,6 +106,7 @@ check "no reflection: only direct rungs" \
 # A budget too small for the reference.
 "$CANDELA" bench sphere.json -o E --budget 0.001 --quiet > /dev/null 2> err5.txt; st=$?
 check "tiny budget: exit 1" '[ $st -eq 1 ]'
+check "tiny budget: no folder left behind" '[ ! -e E ]'
 check "tiny budget: says how long the reference needs" \
   'grep -Eq "budget 0.001 s is too small: the reference \(path tracing to 0.02 %\) needs about [0-9.e+]+ s" err5.txt'
 # A budget the reused reference leaves nothing of: every rung skipped and listed.
