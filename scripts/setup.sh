@@ -9,6 +9,7 @@ packages=(
   libgmp-dev libmpfr-dev libboost-dev
   libcjson-dev libpng-dev zlib1g-dev
   clang libclang-rt-14-dev
+  libxml2-utils
 )
 
 missing=()
