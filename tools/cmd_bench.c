@@ -241,11 +241,14 @@ static int get_reference(const cdl_scene *scene, const bench_args *a, double tar
                 fprintf(stderr, "candela bench: %s\n", err.message);
                 return (int)st;
             }
-            if (now_seconds() - t0 + need > a->budget) {
+            double spent = now_seconds() - t0;
+            if (spent + need > a->budget) {
                 fprintf(stderr,
                         "candela bench: --budget %g s is too small: the reference (path tracing to %g %%) needs about "
-                        "%.3g s (a pilot to %g %% took %.3g s of computing, scaled by (%g/%g)^2)\n",
-                        a->budget, 100.0 * target, need, 100.0 * pilot_target, pilot_compute, pilot_target, target);
+                        "%.3g s (a pilot to %g %% took %.3g s of computing, scaled by (%g/%g)^2), after the %.3g s "
+                        "the pilots took\n",
+                        a->budget, 100.0 * target, need, 100.0 * pilot_target, pilot_compute, pilot_target, target,
+                        spent);
                 return CDL_EXIT_INPUT;
             }
         }
