@@ -82,6 +82,44 @@ static inline size_t fixture_capped_points(const char *plan_json)
     return total;
 }
 
+/* ---- closed forms both GI methods are held to --------------------------------- */
+
+/* n well-spread unit vectors (a Fibonacci sphere). */
+static inline cdl_vec3 fixture_spread(int i, int n)
+{
+    double z = 1.0 - (2.0 * i + 1.0) / n;
+    double r = sqrt(fmax(0.0, 1.0 - z * z));
+    double phi = i * 3.14159265358979323846 * (3.0 - sqrt(5.0));
+    return cdl_vec3_make(r * cos(phi), r * sin(phi), z);
+}
+
+/* Append point p with normal n to a JSON points list; the new length. */
+static inline int fixture_append_point(char *buf, size_t size, int at, int first, cdl_vec3 p, cdl_vec3 n)
+{
+    int k = snprintf(buf + at, size - (size_t)at, "%s{\"p\": [%.17g, %.17g, %.17g], \"n\": [%.17g, %.17g, %.17g]}",
+                     first ? "" : ", ", p.x, p.y, p.z, n.x, n.y, n.z);
+    return k > 0 ? at + k : at;
+}
+
+/* The integrating sphere: radius 1 about the origin, inward, reflectance
+ * rho, lit by `luminaire` (JSON); n points on the wall facing the centre;
+ * solved by `method` to `target`. */
+static inline void fixture_sphere_scene(char *json, size_t size, double rho, const char *luminaire, int n,
+                                        const char *method, double target)
+{
+    int at = snprintf(json, size,
+                      "{\"version\": 1, \"surfaces\": [{\"type\": \"sphere\", \"center\": [0,0,0], \"radius\": 1, "
+                      "\"inward\": true, \"reflectance\": %.17g}], \"luminaires\": [%s], \"grids\": [{\"name\": "
+                      "\"wall\", \"type\": \"points\", \"points\": [",
+                      rho, luminaire);
+    for (int i = 0; i < n; ++i) {
+        cdl_vec3 u = fixture_spread(i, n);
+        at = fixture_append_point(json, size, at, i == 0, u, cdl_vec3_scale(u, -1.0));
+    }
+    snprintf(json + at, size - (size_t)at, "]}], \"solver\": {\"method\": \"%s\", \"target_error\": %.17g}}", method,
+             target);
+}
+
 typedef struct calibration {
     size_t count, within1, within2;
     double worst;             /* largest |error| / sigma */
@@ -130,6 +168,23 @@ static inline void calibration_check(const calibration *c, const char *what)
      * normal errors it has standard deviation 1 / sqrt n. */
     CHECK_MSG(fabs(c->zsum / n) <= 4.0 / sqrt(n), "%s: mean error %+.3f sigma, expected 0 +- %.3f", what, c->zsum / n,
               4.0 / sqrt(n));
+}
+
+/* Every point of every grid against an expected value (`indirect`: its
+ * E_indirect, else E) within 5 stated sigma (and 1e-9 relative, for exact
+ * points), each sampled point tallied. */
+static inline void fixture_check_all(const cdl_solution *sol, double expected, int indirect, calibration *tally,
+                                     double target, const char *what)
+{
+    for (size_t g = 0; g < sol->grid_count; ++g) {
+        const cdl_grid_solution *gs = &sol->grids[g];
+        for (size_t i = 0; i < gs->grid.count; ++i) {
+            double v = indirect ? gs->E_indirect[i] : gs->E[i];
+            CHECK_MSG(fabs(v - expected) <= 5.0 * gs->E_stderr[i] + 1e-9 * expected,
+                      "%s: grid %zu point %zu: %.6g +- %.3g, expected %.6g", what, g, i, v, gs->E_stderr[i], expected);
+            if (gs->E_stderr[i] > 0.0) calibration_add(tally, v, expected, gs->E_stderr[i], target);
+        }
+    }
 }
 
 #endif

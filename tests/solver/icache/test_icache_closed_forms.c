@@ -60,43 +60,18 @@ static void test_furnace(double rho, double target)
     fixture_release(scene, &sol);
 }
 
-/* n well-spread unit vectors (a Fibonacci sphere). */
-static cdl_vec3 spread(int i, int n)
-{
-    double z = 1.0 - (2.0 * i + 1.0) / n;
-    double r = sqrt(fmax(0.0, 1.0 - z * z));
-    double phi = i * CDL_PI * (3.0 - sqrt(5.0));
-    return cdl_vec3_make(r * cos(phi), r * sin(phi), z);
-}
-
 /* A sphere of radius 1, inward, lit by `luminaire` (JSON) of flux `flux`
  * inside it; n points on the wall facing the centre. */
 static void test_sphere(double rho, const char *luminaire, double flux, int n, double target, const char *what)
 {
     static char json[32768];
-    int at = snprintf(json, sizeof json,
-                      "{\"version\": 1, \"surfaces\": [{\"type\": \"sphere\", \"center\": [0,0,0], \"radius\": 1, "
-                      "\"inward\": true, \"reflectance\": %.17g}], \"luminaires\": [%s], \"grids\": [{\"name\": \"wall\", "
-                      "\"type\": \"points\", \"points\": [",
-                      rho, luminaire);
-    for (int i = 0; i < n; ++i) {
-        cdl_vec3 u = spread(i, n);
-        at += snprintf(json + at, sizeof json - (size_t)at, "%s{\"p\": [%.17g, %.17g, %.17g], \"n\": [%.17g, %.17g, %.17g]}",
-                       i ? ", " : "", u.x, u.y, u.z, -u.x, -u.y, -u.z);
-    }
-    snprintf(json + at, sizeof json - (size_t)at,
-             "]}], \"solver\": {\"method\": \"icache\", \"target_error\": %.17g}}", target);
+    fixture_sphere_scene(json, sizeof json, rho, luminaire, n, "icache", target);
     cdl_scene *scene;
     cdl_solution sol;
     if (!fixture_solve(json, &scene, &sol, 2)) return;
-    double expected = rho * flux / (4.0 * CDL_PI * (1.0 - rho));
-    const cdl_grid_solution *g = &sol.grids[0];
-    for (size_t i = 0; i < g->grid.count; ++i) {
-        CHECK_MSG(fabs(g->E_indirect[i] - expected) <= 5.0 * g->E_stderr[i],
-                  "icache sphere (%s) rho %g point %zu: indirect %.6g +- %.3g, expected %.6g", what, rho, i,
-                  g->E_indirect[i], g->E_stderr[i], expected);
-        calibration_add(&tally, g->E_indirect[i], expected, g->E_stderr[i], 0.0);
-    }
+    char label[128];
+    snprintf(label, sizeof label, "icache sphere (%s) rho %g, indirect", what, rho);
+    fixture_check_all(&sol, rho * flux / (4.0 * CDL_PI * (1.0 - rho)), 1, &tally, 0.0, label);
     fixture_release(scene, &sol);
 }
 
@@ -119,15 +94,7 @@ static void test_white_furnace(void)
     cdl_solution sol;
     if (!fixture_solve(json, &scene, &sol, 2)) return;
     CHECK(sol.records > 0);
-    for (size_t g = 0; g < sol.grid_count; ++g) {
-        const cdl_grid_solution *gs = &sol.grids[g];
-        for (size_t i = 0; i < gs->grid.count; ++i) {
-            CHECK_MSG(fabs(gs->E[i] - CDL_PI * L) <= 5.0 * gs->E_stderr[i] + 1e-9 * CDL_PI * L,
-                      "icache white furnace grid %zu point %zu: %.6g +- %.3g, expected %.6g", g, i, gs->E[i],
-                      gs->E_stderr[i], CDL_PI * L);
-            if (gs->E_stderr[i] > 0.0) calibration_add(&tally, gs->E[i], CDL_PI * L, gs->E_stderr[i], 0.01);
-        }
-    }
+    fixture_check_all(&sol, CDL_PI * L, 0, &tally, 0.01, "icache white furnace");
     fixture_release(scene, &sol);
 }
 

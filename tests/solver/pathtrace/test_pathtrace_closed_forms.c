@@ -22,23 +22,6 @@
 #include "radiometry/constants.h"
 #include "solver/solve_fixture.h"
 
-/* n well-spread unit vectors (a Fibonacci sphere). */
-static cdl_vec3 spread(int i, int n)
-{
-    double z = 1.0 - (2.0 * i + 1.0) / n;
-    double r = sqrt(fmax(0.0, 1.0 - z * z));
-    double phi = i * CDL_PI * (3.0 - sqrt(5.0));
-    return cdl_vec3_make(r * cos(phi), r * sin(phi), z);
-}
-
-/* Append point p with normal n to a JSON points list. */
-static int append_point(char *buf, size_t size, int at, int first, cdl_vec3 p, cdl_vec3 n)
-{
-    int k = snprintf(buf + at, size - (size_t)at, "%s{\"p\": [%.17g, %.17g, %.17g], \"n\": [%.17g, %.17g, %.17g]}",
-                     first ? "" : ", ", p.x, p.y, p.z, n.x, n.y, n.z);
-    return k > 0 ? at + k : at;
-}
-
 static calibration tally = CALIBRATION_INIT;
 
 static void test_furnace(double rho, double target)
@@ -52,8 +35,8 @@ static void test_furnace(double rho, double target)
                       rho, L);
     const int n = 40;
     for (int i = 0; i < n; ++i) {
-        cdl_vec3 p = cdl_vec3_add(cdl_vec3_make(2, 2, 2), cdl_vec3_scale(spread(i, n), 1.7 * ((i % 7) + 1) / 7.0));
-        at = append_point(json, sizeof json, at, i == 0, p, spread((i * 17) % n, n));
+        cdl_vec3 p = cdl_vec3_add(cdl_vec3_make(2, 2, 2), cdl_vec3_scale(fixture_spread(i, n), 1.7 * ((i % 7) + 1) / 7.0));
+        at = fixture_append_point(json, sizeof json, at, i == 0, p, fixture_spread((i * 17) % n, n));
     }
     snprintf(json + at, sizeof json - (size_t)at,
              "]}], \"solver\": {\"method\": \"pathtrace\", \"target_error\": %.17g}}", target);
@@ -88,31 +71,15 @@ static void test_furnace(double rho, double target)
 static void test_sphere(double rho, const char *luminaire, double flux, double target, const char *what)
 {
     char json[16384];
-    int at = snprintf(json, sizeof json,
-                      "{\"version\": 1, \"surfaces\": [{\"type\": \"sphere\", \"center\": [0,0,0], \"radius\": 1, "
-                      "\"inward\": true, \"reflectance\": %.17g}], \"luminaires\": [%s], \"grids\": [{\"name\": "
-                      "\"wall\", \"type\": \"points\", \"points\": [",
-                      rho, luminaire);
-    const int n = 30;
-    for (int i = 0; i < n; ++i) {
-        cdl_vec3 u = spread(i, n);
-        at = append_point(json, sizeof json, at, i == 0, u, cdl_vec3_neg(u));
-    }
-    snprintf(json + at, sizeof json - (size_t)at,
-             "]}], \"solver\": {\"method\": \"pathtrace\", \"target_error\": %.17g}}", target);
+    fixture_sphere_scene(json, sizeof json, rho, luminaire, 30, "pathtrace", target);
     cdl_scene *scene;
     cdl_solution sol;
     if (!fixture_solve(json, &scene, &sol, 2)) return;
-    double expected = rho * flux / (4.0 * CDL_PI * (1.0 - rho));
-    const cdl_grid_solution *g = &sol.grids[0];
-    for (size_t i = 0; i < g->grid.count; ++i) {
-        /* The direct part of a delta light is exact (sigma 0): the stated
-         * error is the interreflected part's alone. */
-        CHECK_MSG(fabs(g->E_indirect[i] - expected) <= 5.0 * g->E_stderr[i],
-                  "sphere %s rho %g point %zu: indirect %.6g +- %.3g, expected %.6g", what, rho, i, g->E_indirect[i],
-                  g->E_stderr[i], expected);
-        calibration_add(&tally, g->E_indirect[i], expected, g->E_stderr[i], 0.0);
-    }
+    /* The direct part of a delta light is exact (sigma 0): the stated
+     * error is the interreflected part's alone. */
+    char label[128];
+    snprintf(label, sizeof label, "sphere %s rho %g, indirect", what, rho);
+    fixture_check_all(&sol, rho * flux / (4.0 * CDL_PI * (1.0 - rho)), 1, &tally, 0.0, label);
     fixture_release(scene, &sol);
 }
 
@@ -132,12 +99,7 @@ static void test_white_furnace(void)
     cdl_scene *scene;
     cdl_solution sol;
     if (!fixture_solve(json, &scene, &sol, 2)) return;
-    const cdl_grid_solution *g = &sol.grids[0];
-    for (size_t i = 0; i < g->grid.count; ++i) {
-        CHECK_MSG(fabs(g->E[i] - CDL_PI * L) <= 5.0 * g->E_stderr[i] + 1e-9 * CDL_PI * L,
-                  "white furnace point %zu: %.6g +- %.3g, expected %.6g", i, g->E[i], g->E_stderr[i], CDL_PI * L);
-        if (g->E_stderr[i] > 0.0) calibration_add(&tally, g->E[i], CDL_PI * L, g->E_stderr[i], 0.01);
-    }
+    fixture_check_all(&sol, CDL_PI * L, 0, &tally, 0.01, "white furnace");
     fixture_release(scene, &sol);
 }
 
