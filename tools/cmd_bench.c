@@ -1,12 +1,9 @@
 /* cmd_bench.c - `candela bench SCENE.json -o DIR`: the speed/accuracy trade
  * of each method on the user's scene, measured against a converged reference. */
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "cli_args.h"
@@ -66,13 +63,6 @@ static void print_help(FILE *out)
           "exit status: 0 success, 1 bad scene, stale reference or too small a budget,\n"
           "2 usage error, 3 internal failure\n",
           out);
-}
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 /* The run's settings from the command line. */
@@ -151,13 +141,6 @@ static int parse_args(int argc, char **argv, bench_args *a)
         a->methods[1] = a->methods[2] = 1;
     }
     return CDL_EXIT_OK;
-}
-
-/* A folder under DIR, created when missing. */
-static cdl_status make_folder(const char *path, cdl_error *err)
-{
-    if (mkdir(path, 0777) == 0 || errno == EEXIST) return CDL_OK;
-    return cdl_error_set(err, CDL_ERR_INPUT, "%s: cannot create the folder: %s", path, strerror(errno));
 }
 
 /* Solve one rung and write its files into `dir`. */
@@ -241,7 +224,7 @@ static int get_reference(const cdl_scene *scene, const bench_args *a, double tar
                 fprintf(stderr, "candela bench: %s\n", err.message);
                 return (int)st;
             }
-            double spent = now_seconds() - t0;
+            double spent = cdl_pool_now_seconds() - t0;
             if (spent + need > a->budget) {
                 fprintf(stderr,
                         "candela bench: --budget %g s is too small: the reference (path tracing to %g %%) needs about "
@@ -307,7 +290,7 @@ static int run_ladder(const cdl_scene *scene, const bench_args *a, int m, const 
              * method's first rung is run when any budget is left. */
             double ratio = prev ? prev->rung.target / specs[k].target : 0.0;
             double need = prev ? prev->rung.seconds * ratio * ratio : 0.0;
-            if (now_seconds() - t0 + need >= a->budget) {
+            if (cdl_pool_now_seconds() - t0 + need >= a->budget) {
                 row->skipped = 1;
                 continue;
             }
@@ -380,7 +363,7 @@ static void print_table(const cdl_bench_row *rows, size_t count, double ref_rms)
 
 static int bench(const bench_args *a, cdl_scene *scene)
 {
-    double t0 = now_seconds();
+    double t0 = cdl_pool_now_seconds();
     int methods[3] = {a->methods[0], a->methods[1], a->methods[2]};
     double rho = 0.0;
     const char *reflector = cdl_solve_first_reflector(scene, &rho);
@@ -400,7 +383,7 @@ static int bench(const bench_args *a, cdl_scene *scene)
     snprintf(path, sizeof path, "%s/runs", a->dir);
     int dir_existed = access(a->dir, F_OK) == 0;
     cdl_status st = cdl_solution_prepare_folder(a->dir, &err);
-    if (st == CDL_OK) st = make_folder(path, &err);
+    if (st == CDL_OK) st = cdl_solution_prepare_folder(path, &err);
     if (st != CDL_OK) {
         fprintf(stderr, "candela bench: %s\n", err.message);
         return (int)st;
@@ -437,7 +420,7 @@ static int bench(const bench_args *a, cdl_scene *scene)
         return (int)st;
     }
     print_table(rows, count, ref_rms);
-    printf("\nresults in %s (bench.csv, bench.svg, bench.png, reference/, runs/); %.1f s in all\n", a->dir, now_seconds() - t0);
+    printf("\nresults in %s (bench.csv, bench.svg, bench.png, reference/, runs/); %.1f s in all\n", a->dir, cdl_pool_now_seconds() - t0);
     return CDL_EXIT_OK;
 }
 
