@@ -189,7 +189,9 @@ void cdl_visible_face_clip(cdl_visible_face *f, double a, double b, double c)
     f->count = kept;
 }
 
-/* Subtract the convex polygon q (counter-clockwise, n vertices). */
+/* Subtract the convex polygon q (counter-clockwise, n vertices, no two
+ * consecutive ones alike: an edge of no length has no direction, and its
+ * line would cut the rest anywhere). */
 static void subtract_convex(cdl_visible_face *f, const double (*q)[2], int n)
 {
     double qlo[2] = {INFINITY, INFINITY}, qhi[2] = {-INFINITY, -INFINITY};
@@ -293,6 +295,19 @@ void cdl_visible_face_subtract_triangle(cdl_visible_face *f, const double *tri)
         q[i][0] = h * cdl_vec3_dot(w, e1) / s;
         q[i][1] = h * cdl_vec3_dot(w, e2) / s;
     }
+    /* Drop vertices that repeat the one before within 1e-12 of the face's
+     * size (a corner on a side of the pyramid comes out of two clips). */
+    double dx = f->hi[0] - f->lo[0], dy = f->hi[1] - f->lo[1], same = 1e-12 * sqrt(dx * dx + dy * dy);
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+        if (m > 0 && fabs(q[i][0] - q[m - 1][0]) <= same && fabs(q[i][1] - q[m - 1][1]) <= same) continue;
+        q[m][0] = q[i][0];
+        q[m][1] = q[i][1];
+        m++;
+    }
+    while (m > 1 && fabs(q[m - 1][0] - q[0][0]) <= same && fabs(q[m - 1][1] - q[0][1]) <= same) m--;
+    n = m;
+    if (n < 3) return;
     double area = signed_area((const double(*)[2])q, n);
     if (fabs(area) <= sliver_area(f)) return; /* seen edge-on: hides nothing */
     if (area < 0.0)

@@ -20,7 +20,9 @@
  * a standard error >= 0, E_indirect = 0 and AO in [0, 1]. And E must lie
  * between bounds found without the solver's shortcuts (plans, culling,
  * visibility regions): at least the sum of the delta lights (point, spot,
- * goniometric, directional) that a plain shadow ray finds unoccluded, at
+ * goniometric, directional) that a plain shadow ray finds unoccluded (for
+ * a point the solver may value as an edge point, from the point and from
+ * six points around it: robust_delta_sum), at
  * most the sum of those not clearly blocked (a hit well inside the
  * segment) plus the unoccluded closed forms of the other lights (plus ten
  * standard errors where the solver sampled). A violated
@@ -274,6 +276,34 @@ static double edge_move_slack(const cdl_scene_geometry *geometry, const cdl_scen
     return 2.0 * slack;
 }
 
+/* The lower bound for a point that may be an edge point: the delta lights
+ * unoccluded from p and from p moved 16 float resolutions (twice the
+ * solver's edge move) either way along each axis. A surface through p (a
+ * wall whose plane holds the point) has one of those six moves on each of
+ * its sides, so a light it hides from either side is not counted: the
+ * solver values such a point as the limit from the grid's side, which the
+ * plain shadow ray from p, grazing the surface, cannot tell. */
+static double robust_delta_sum(const cdl_scene_geometry *geometry, const cdl_scene_lights *lights, cdl_vec3 p,
+                               cdl_vec3 n)
+{
+    double delta = 16.0 * cdl_scene_geometry_resolution(geometry, p), sum = 0.0;
+    for (size_t l = 0; l < lights->count; ++l) {
+        const cdl_emitter *e = lights->emitters[l];
+        cdl_delta_light d;
+        if (!cdl_emitter_is_delta(e) || !cdl_emitter_eval_delta(e, p, n, &d) || !(d.E.lx > 0.0)) continue;
+        int seen = !cdl_scene_geometry_ray_occluded(geometry, p, n, d.to_light, d.distance);
+        for (int k = 0; seen && k < 6; ++k) {
+            double s = (k & 1) ? -delta : delta;
+            cdl_vec3 q = cdl_vec3_add(p, cdl_vec3_make(k / 2 == 0 ? s : 0.0, k / 2 == 1 ? s : 0.0, k / 2 == 2 ? s : 0.0));
+            cdl_delta_light dq;
+            if (!cdl_emitter_eval_delta(e, q, n, &dq) || !(dq.E.lx > 0.0)) continue;
+            seen = !cdl_scene_geometry_ray_occluded(geometry, q, n, dq.to_light, dq.distance);
+        }
+        if (seen) sum += d.E.lx;
+    }
+    return sum;
+}
+
 /* Bounds on E at every point from the emitters and plain ray queries (see
  * the top of this file). */
 static void check_against_rays(const cdl_scene *scene, const cdl_solution *sol)
@@ -330,6 +360,7 @@ static void check_against_rays(const cdl_scene *scene, const cdl_solution *sol)
             int high = bounded && !(gs->E[i] <= hi * (1.0 + 1e-9) + 10.0 * gs->E_stderr[i] + 1e-300);
             if ((low || high) && has_surfaces) {
                 slack = edge_move_slack(geometry, &lights, p, n);
+                if (low) lo = robust_delta_sum(geometry, &lights, p, n);
                 snprintf(where, sizeof where, "%s point %zu: E %.17g, bounds [%.17g, %.17g], edge slack %.3g",
                          scene->grids[g].name, i, gs->E[i], lo, hi, slack);
             }

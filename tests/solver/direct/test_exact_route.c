@@ -101,6 +101,34 @@ static void test_black_well(void)
     }
 }
 
+/* Shallow and deep 2 x 2 m wells under a uniform sky, 25 x 25 floor points
+ * each: every cell centre, so that many points lie on a diagonal through a
+ * corner of the well ((1.08, 0.92) sees the corner (0, 2) at 45 degrees).
+ * There a wall's corner projects onto a side of the pyramid through a face
+ * of the sky's cube and came out of the clip twice; the repeated vertex made
+ * an edge of no direction that dropped the whole face (E 10 % low, stated
+ * exact). Each point against pi L F of the opening. */
+static void test_well_diagonals(void)
+{
+    static const double depths[] = {0.4, 1.0, 3.0};
+    for (int d = 0; d < 3; ++d) {
+        char json[1024], what[64];
+        snprintf(json, sizeof json,
+                 "{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [0, 0, 0], \"max\": [2, 2, %g],"
+                 " \"inward\": true, \"open\": [\"+z\"], \"reflectance\": 0}],"
+                 " \"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 2000, \"hemisphere\": \"upper\"}],"
+                 " \"grids\": [{\"name\": \"floor\", \"type\": \"rect\", \"origin\": [0, 0, 0], \"u\": [2, 0, 0],"
+                 " \"v\": [0, 2, 0], \"nu\": 25, \"nv\": 25}], \"solver\": {\"method\": \"direct\"}}",
+                 depths[d]);
+        snprintf(what, sizeof what, "well %g m deep", depths[d]);
+        cdl_scene *scene;
+        cdl_solution sol;
+        if (!solve(json, &scene, &sol, 0)) return;
+        check_opening(&sol.grids[0], 2000.0, 0.0, 2.0, 0.0, 2.0, depths[d], what);
+        done(scene, &sol);
+    }
+}
+
 /* A 20 x 20 x 4 m room whose roof (a polygon at z = 4) has a 2 x 2 m opening:
  * a work-plane point at 0.8 m sees the sky through it alone, E = pi L F of
  * the opening, also for points whose foot lies outside the opening (signed
@@ -268,6 +296,7 @@ int main(void)
 {
     test_black_well();
     test_roof_opening();
+    test_well_diagonals();
     test_window_room();
     test_sampler_agrees();
     test_wall_behind_partition();
