@@ -241,6 +241,15 @@ int cdl_emitter_emission_cone(const cdl_emitter *emitter, cdl_vec3 *position, cd
 cdl_status cdl_emitter_exact_illuminance(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n, cdl_illuminance *E,
                                          cdl_error *err);
 
+/* Bounds on an environment's luminance over a convex spherical polygon of
+ * directions: unit world vertex directions dirs[0 .. count), edges the
+ * shorter great-circle arcs, either orientation. *lo <= L(w) <= *hi for
+ * every direction w in it (conservative: pixels just outside the region
+ * may count; lights/environment_bounds.h). Returns 0 (and sets nothing)
+ * for an emitter that is not an environment. Thread-safe. */
+int cdl_emitter_luminance_bounds(const cdl_emitter *emitter, const cdl_vec3 *dirs, int count, cdl_luminance *lo,
+                                 cdl_luminance *hi);
+
 /* 1 when cdl_emitter_exact_illuminance has a closed form for this emitter
  * (every kind). */
 int cdl_emitter_has_exact_illuminance(const cdl_emitter *emitter);

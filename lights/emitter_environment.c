@@ -50,6 +50,7 @@
 #include "lights/distribution2d.h"
 #include "lights/emitter.h"
 #include "lights/emitter_internal.h"
+#include "lights/environment_bounds.h"
 #include "lights/environment_pixels.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
@@ -67,6 +68,7 @@ typedef struct environment_emitter {
     double scale;
     cdl_env_pixels px;            /* the pixels as cells of the sphere (rows clipped at the horizon if upper_only) */
     cdl_distribution2d *dist;     /* weights image x pixel solid angle */
+    cdl_env_range range;          /* block minima and maxima, for luminance bounds over a region */
     double flux;
 } environment_emitter;
 
@@ -220,6 +222,7 @@ static void environment_destroy(cdl_emitter *e)
     environment_emitter *env = (environment_emitter *)e;
     free(env->image);
     cdl_env_pixels_free(&env->px);
+    cdl_env_range_free(&env->range);
     cdl_distribution2d_release(env->dist);
 }
 
@@ -258,6 +261,7 @@ static cdl_status build_image(environment_emitter *env, const cdl_environment_pa
     if (st == CDL_OK)
         st = cdl_distribution2d_create(p->image, omega, (size_t)p->width, (size_t)p->height, &env->dist, err);
     free(omega);
+    if (st == CDL_OK) st = cdl_env_range_build(&env->range, &env->px, err);
     if (st != CDL_OK) return st;
     env->flux = cdl_env_pixels_illuminance(&env->px, env->frame.n, NULL);
     return CDL_OK;
@@ -304,4 +308,31 @@ const cdl_env_pixels *cdl_emitter_environment_pixels(const cdl_emitter *emitter)
     if (!emitter || emitter->ops != &environment_ops) return NULL;
     const environment_emitter *env = as_env(emitter);
     return env->image ? &env->px : NULL;
+}
+
+/* Bounds over a region (environment_bounds.h): an image's least and
+ * greatest pixel over the rows and columns the region touches; a sky
+ * model's from the region's range of cos(theta) (uniform: L; overcast:
+ * L_z (1 + 2 cos theta) / 3, rising towards the zenith); 0 included where
+ * the region reaches below an upper-only sky's horizon. */
+int cdl_emitter_luminance_bounds(const cdl_emitter *emitter, const cdl_vec3 *dirs, int count, cdl_luminance *lo,
+                                 cdl_luminance *hi)
+{
+    if (!emitter || emitter->ops != &environment_ops) return 0;
+    const environment_emitter *env = as_env(emitter);
+    cdl_env_extent e;
+    cdl_env_extent_of_polygon(&env->frame, dirs, count, &e);
+    double L_lo, L_hi;
+    if (env->image) {
+        cdl_env_range_query(&env->range, &env->px, &e, &L_lo, &L_hi);
+    } else if (env->sky == CDL_SKY_CIE_OVERCAST) {
+        L_lo = e.cos_lo > 0.0 ? env->L * (1.0 + 2.0 * e.cos_lo) / 3.0 : 0.0;
+        L_hi = e.cos_hi > 0.0 ? env->L * (1.0 + 2.0 * e.cos_hi) / 3.0 : 0.0;
+    } else {
+        L_hi = env->upper_only && !(e.cos_hi > 0.0) ? 0.0 : env->L;
+        L_lo = env->upper_only && !(e.cos_lo > 0.0) ? 0.0 : env->L;
+    }
+    *lo = cdl_nits(L_lo);
+    *hi = cdl_nits(L_hi);
+    return 1;
 }

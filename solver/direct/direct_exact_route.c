@@ -29,7 +29,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "radiometry/constants.h"
 #include "radiometry/frame.h"
+#include "solver/direct/sky_region.h"
 #include "solver/geometry/visible_polygon.h"
 
 /* Occluder parts closer to the point than this fraction of its ray epsilon
@@ -39,28 +41,36 @@
 #define STRINGIFY_(x) #x
 #define STRINGIFY(x) STRINGIFY_(x)
 
+/* Subtract every occluder from a face; 0 if the face overflowed its
+ * limits (then released). */
+static int face_subtract(cdl_visible_face *face, const cdl_occluder_triangle *occ, size_t count)
+{
+    for (size_t i = 0; i < count && !face->overflow; ++i) cdl_visible_face_subtract_triangle(face, occ[i].v);
+    if (face->overflow) cdl_visible_face_release(face);
+    return !face->overflow;
+}
+
 /* Subtract every occluder from a face and add the visible part's Omega_p;
  * returns 0 if the face overflowed its limits. */
 static int face_visible(cdl_visible_face *face, const cdl_occluder_triangle *occ, size_t count, cdl_vec3 n,
                         double *omega)
 {
-    for (size_t i = 0; i < count && !face->overflow; ++i) cdl_visible_face_subtract_triangle(face, occ[i].v);
-    int ok = !face->overflow;
-    if (ok) *omega += cdl_visible_face_projected_solid_angle(face, n);
+    if (!face_subtract(face, occ, count)) return 0;
+    *omega += cdl_visible_face_projected_solid_angle(face, n);
     cdl_visible_face_release(face);
-    return ok;
+    return 1;
 }
 
-/* Omega_p of the sky visible past the occluders: the five faces of the unit
- * cube over p's tangent plane. */
-static int sky_visible(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n, double near,
-                       const cdl_occluder_triangle *occ, size_t count, double *omega)
+/* The sky visible past the occluders: the five faces of the unit cube over
+ * p's tangent plane, each left with its visible pieces (the caller releases
+ * them); 0 (all released) when a face overflowed. */
+static int sky_faces(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n, double near,
+                     const cdl_occluder_triangle *occ, size_t count, cdl_visible_face faces[5])
 {
     cdl_frame f = cdl_frame_from_normal(n);
     const cdl_vec3 sides[4] = {f.s, f.t, cdl_vec3_neg(f.s), cdl_vec3_neg(f.t)};
-    *omega = 0.0;
     for (int k = 0; k < 5; ++k) {
-        cdl_visible_face face;
+        cdl_visible_face *face = &faces[k];
         cdl_vec3 corner[4];
         if (k == 4) {
             /* the top: the square p + n + [-1, 1] s + [-1, 1] t */
@@ -69,7 +79,7 @@ static int sky_visible(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n, dou
             corner[1] = cdl_vec3_sub(cdl_vec3_add(c, f.s), f.t);
             corner[2] = cdl_vec3_add(cdl_vec3_add(c, f.s), f.t);
             corner[3] = cdl_vec3_add(cdl_vec3_sub(c, f.s), f.t);
-            cdl_visible_face_init(&face, p, cdl_vec3_neg(n), c, 0, near);
+            cdl_visible_face_init(face, p, cdl_vec3_neg(n), c, 0, near);
         } else {
             /* a half side: p + a + [-1, 1] b + [0, 1] n, b the next axis round */
             cdl_vec3 a = sides[k], b = sides[(k + 1) % 4];
@@ -78,18 +88,78 @@ static int sky_visible(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n, dou
             corner[1] = cdl_vec3_add(c, b);
             corner[2] = cdl_vec3_add(corner[1], n);
             corner[3] = cdl_vec3_add(corner[0], n);
-            cdl_visible_face_init(&face, p, cdl_vec3_neg(a), c, 0, near);
+            cdl_visible_face_init(face, p, cdl_vec3_neg(a), c, 0, near);
         }
-        cdl_visible_face_add_polygon(&face, corner, 4);
+        cdl_visible_face_add_polygon(face, corner, 4);
         if (light->upper_only) {
             /* up . w >= 0 with w = -height toward + x e1 + y e2 */
             cdl_vec3 up = light->up;
-            cdl_visible_face_clip(&face, cdl_vec3_dot(up, face.e1), cdl_vec3_dot(up, face.e2),
-                                  -face.height * cdl_vec3_dot(up, face.toward));
+            cdl_visible_face_clip(face, cdl_vec3_dot(up, face->e1), cdl_vec3_dot(up, face->e2),
+                                  -face->height * cdl_vec3_dot(up, face->toward));
         }
-        if (!face_visible(&face, occ, count, n, omega)) return 0;
+        if (!face_subtract(face, occ, count)) {
+            for (int j = 0; j < k; ++j) cdl_visible_face_release(&faces[j]);
+            return 0;
+        }
     }
     return 1;
+}
+
+static void faces_release(cdl_visible_face faces[5])
+{
+    for (int k = 0; k < 5; ++k) cdl_visible_face_release(&faces[k]);
+}
+
+/* A sky whose luminance over the visible part spans more than this many
+ * times its typical value (the larger of L_ref and E_0 / pi, the mean over
+ * the hemisphere) is sampled the other way, with shadow rays. Why: the
+ * visible part is sampled uniformly in projected solid angle, and the
+ * spread stands for what a missed feature could change a sample by
+ * (direct_extended.c), so a small sun of 1e6 cd/m^2 in a 4000 cd/m^2 sky
+ * holds every point to the cap of samples: on bench_environment's well
+ * (a 2 x 2 pixel sun, 250 times the sky) stated sigma / target averaged
+ * 3.9 that way, 1.45 with shadow rays and the sampler that draws pixels by
+ * luminance. A smooth sky, or the cap sky's edge (spread 2 E_0 / pi),
+ * stays well within 16. */
+#define SKY_SPREAD_MAX 16.0
+
+/* A sky past the occluders: a uniform one exact, E = L Omega_p of the
+ * visible faces; an image or overcast sky as the region to integrate over
+ * (sky_region.h), exact too where its luminance bounds over the region
+ * meet (one luminance there). */
+static cdl_direct_route sky_route(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n, double near,
+                                  const cdl_occluder_triangle *occ, size_t count, double unoccluded, double *E,
+                                  cdl_sky_region **region)
+{
+    cdl_visible_face faces[5];
+    if (!sky_faces(light, p, n, near, occ, count, faces)) return CDL_ROUTE_TOO_COMPLEX;
+    if (!light->is_image && !light->is_overcast) {
+        double omega = 0.0;
+        for (int k = 0; k < 5; ++k) omega += cdl_visible_face_projected_solid_angle(&faces[k], n);
+        faces_release(faces);
+        /* uniform: the luminance of any direction above the horizon */
+        double L = cdl_emitter_radiance(light->emitter, p, n, light->upper_only ? light->up : n, NULL).cd_m2;
+        /* E = L Omega_p of the visible part (Lambert); never below 0 by rounding */
+        *E = omega > 0.0 ? L * omega : 0.0;
+        return CDL_ROUTE_VISIBLE_POLYGON;
+    }
+    cdl_sky_region *r = NULL;
+    cdl_status st = cdl_sky_region_create(faces, 5, p, n, light->emitter, &r, NULL);
+    faces_release(faces);
+    if (st != CDL_OK) return CDL_ROUTE_TOO_COMPLEX;
+    double lo, hi, omega = cdl_sky_region_projected_solid_angle(r);
+    cdl_sky_region_luminance_bounds(r, &lo, &hi);
+    if (!(omega > 0.0) || lo == hi) {
+        *E = omega > 0.0 ? lo * omega : 0.0;
+        cdl_sky_region_release(r);
+        return CDL_ROUTE_VISIBLE_POLYGON;
+    }
+    if (hi - lo > SKY_SPREAD_MAX * fmax(cdl_sky_region_reference_luminance(r), unoccluded / CDL_PI)) {
+        cdl_sky_region_release(r);
+        return CDL_ROUTE_SKY_PEAK;
+    }
+    *region = r;
+    return CDL_ROUTE_SKY_REGION;
 }
 
 /* The corners of triangle t of a triangle-set shape. */
@@ -150,16 +220,13 @@ static int emitter_visible(const cdl_geometry_piece *piece, const cdl_scene_ligh
 
 /* The exact route for one light at p, or why not. */
 static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p,
-                                    cdl_vec3 n, double *E, uint32_t *occluders)
+                                    cdl_vec3 n, double unoccluded, double *E, uint32_t *occluders,
+                                    cdl_sky_region **sky)
 {
     *E = 0.0;
     *occluders = 0;
     if (ctx->no_exact_route || !ctx->geometry || !ctx->occluders) return CDL_ROUTE_DISABLED;
     const cdl_geometry_piece *piece = NULL;
-    /* An image or overcast sky varies over the visible polygon: L Omega
-     * does not hold. */
-    if (light->is_image) return CDL_ROUTE_IMAGE_SKY;
-    if (light->is_overcast) return CDL_ROUTE_OVERCAST_SKY;
     if (!light->is_environment) {
         if (light->owner == UINT32_MAX || light->outline_is_sphere) return CDL_ROUTE_CURVED_EMITTER;
         piece = cdl_scene_geometry_piece(ctx->geometry, light->owner);
@@ -181,36 +248,34 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
             return CDL_ROUTE_CURVED_OCCLUDER;
     *occluders = (uint32_t)count;
     double near = NEAR_FRACTION * cdl_ray_offsets_epsilon(&ctx->offsets, p);
-    double omega = 0.0, L;
+    if (light->is_environment) return sky_route(light, p, n, near, occ, count, unoccluded, E, sky);
+    double omega = 0.0;
     cdl_direct_route route = CDL_ROUTE_VISIBLE_POLYGON;
-    if (light->is_environment) {
-        /* uniform: the luminance of any direction above the horizon */
-        L = cdl_emitter_radiance(light->emitter, p, n, light->upper_only ? light->up : n, NULL).cd_m2;
-        if (!sky_visible(light, p, n, near, occ, count, &omega)) return CDL_ROUTE_TOO_COMPLEX;
-    } else {
-        L = piece->luminance_cd_m2;
-        if (!emitter_visible(piece, light, p, n, near, occ, count, &omega, &route)) return route;
-    }
+    if (!emitter_visible(piece, light, p, n, near, occ, count, &omega, &route)) return route;
     /* E = L Omega_p of the visible part (Lambert); never below 0 by rounding */
-    *E = omega > 0.0 ? L * omega : 0.0;
+    *E = omega > 0.0 ? piece->luminance_cd_m2 * omega : 0.0;
     return CDL_ROUTE_VISIBLE_POLYGON;
 }
 
 int cdl_direct_exact_term(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy st,
-                          cdl_vec3 p, cdl_vec3 n, double *E, cdl_direct_sample_stats *stats)
+                          cdl_vec3 p, cdl_vec3 n, double unoccluded, double *E, cdl_sky_region **region,
+                          cdl_direct_sample_stats *stats)
 {
+    *region = NULL;
     cdl_direct_route_tally *tally = stats->routes ? &stats->routes[light - ctx->lights] : NULL;
     if (st == CDL_STRATEGY_EXTENDED_TESTED && cdl_direct_light_fully_visible(ctx, light, p, n)) {
         if (tally) tally->points[CDL_ROUTE_FULL_VIEW]++;
         return 0; /* the caller's closed form stands */
     }
     uint32_t occluders = 0;
-    cdl_direct_route route = exact_route(ctx, light, p, n, E, &occluders);
+    cdl_direct_route route = exact_route(ctx, light, p, n, unoccluded, E, &occluders, region);
     if (tally) {
         tally->points[route]++;
-        if (route == CDL_ROUTE_VISIBLE_POLYGON && occluders > tally->most_occluders) tally->most_occluders = occluders;
+        if ((route == CDL_ROUTE_VISIBLE_POLYGON || route == CDL_ROUTE_SKY_REGION) &&
+            occluders > tally->most_occluders)
+            tally->most_occluders = occluders;
     }
-    return route == CDL_ROUTE_VISIBLE_POLYGON ? 1 : -1;
+    return route == CDL_ROUTE_VISIBLE_POLYGON ? 1 : route == CDL_ROUTE_SKY_REGION ? 2 : -1;
 }
 
 void cdl_direct_stats_add(cdl_direct_sample_stats *a, const cdl_direct_sample_stats *b, size_t light_count)
@@ -233,9 +298,8 @@ void cdl_direct_route_describe(const cdl_direct_route_tally *t, char *out, size_
         [CDL_ROUTE_TOO_MANY] = "more than " STRINGIFY(CDL_EXACT_ROUTE_MAX_OCCLUDERS) " occluders",
         [CDL_ROUTE_CURVED_OCCLUDER] = "curved occluder (sphere or disk)",
         [CDL_ROUTE_CURVED_EMITTER] = "curved or non-planar emitter",
-        [CDL_ROUTE_IMAGE_SKY] = "an image sky (its radiance varies over the visible part)",
-        [CDL_ROUTE_OVERCAST_SKY] = "a CIE overcast sky (its luminance varies with height over the visible part)",
         [CDL_ROUTE_TOO_COMPLEX] = "visible part in too many pieces",
+        [CDL_ROUTE_SKY_PEAK] = "the sky over the visible part far brighter in spots (a sun)",
         [CDL_ROUTE_DISABLED] = "exact route turned off",
     };
     size_t used = 0;
@@ -255,6 +319,12 @@ void cdl_direct_route_describe(const cdl_direct_route_tally *t, char *out, size_
     if (t->points[CDL_ROUTE_VISIBLE_POLYGON]) {
         APPEND("%sexact: visible polygon past up to %" PRIu32 " occluders at %" PRIu64 " points", sep,
                t->most_occluders, t->points[CDL_ROUTE_VISIBLE_POLYGON]);
+        sep = "; ";
+    }
+    if (t->points[CDL_ROUTE_SKY_REGION]) {
+        APPEND("%ssampled within the visible sky (no shadow rays: the sky's luminance varies over it) past up to "
+               "%" PRIu32 " occluders at %" PRIu64 " points",
+               sep, t->most_occluders, t->points[CDL_ROUTE_SKY_REGION]);
         sep = "; ";
     }
     for (int r = CDL_ROUTE_TOO_MANY; r < CDL_ROUTE_COUNT; ++r)

@@ -111,8 +111,11 @@
 #define ALPHA_STEP 1.5
 #define ALPHA_IMAGE 1.2
 
-/* How a light's contribution is formed at a point. */
-enum { TERM_EXACT, TERM_HIDDEN, TERM_PLAIN };
+/* How a light's contribution is formed at a point: exact, E_0 less a
+ * sampled hidden part, sampled plainly, or (an image or overcast sky whose
+ * visible part the exact route found) L_ref Omega_p(R) plus the sampled
+ * integral of (L - L_ref) cos over that part (sky_region.h). */
+enum { TERM_EXACT, TERM_HIDDEN, TERM_PLAIN, TERM_REGION };
 
 typedef struct term {
     const cdl_scene_light *light;
@@ -127,6 +130,9 @@ typedef struct term {
     int side;                /* strata per side of the latest round */
     double pairs;            /* differing pairs of the latest round in effect: (sum d^2)^2 / sum d^4 */
     cdl_environment_sampler *sky; /* image environments: sampled for this normal (NULL: the emitter's sampler) */
+    cdl_sky_region *region;  /* TERM_REGION: the visible sky */
+    double L_ref;            /* TERM_REGION: the control variate's luminance */
+    double L_spread;         /* TERM_REGION: greatest less least luminance over the region */
 } term;
 
 /* A sample of the light: an image sky by luminance x each pixel's projected
@@ -162,6 +168,17 @@ static double stratum_sample(const cdl_direct_context *ctx, term *t, const doubl
     double u[2];
     cdl_rng_uniform2(key, index, u);
     *unoccluded = 0.0;
+    if (t->mode == TERM_REGION) {
+        /* (L - L_ref) cos / pdf; what a feature the samples missed could
+         * change a sample by, (L_hi - L_lo) cos / pdf, stands as the jump. */
+        cdl_vec3 w;
+        double weight, pdf;
+        if (!cdl_sky_region_sample(t->region, lo[0] + u[0] * (hi[0] - lo[0]), lo[1] + u[1] * (hi[1] - lo[1]), &w,
+                                   &weight))
+            return 0.0;
+        *unoccluded = t->L_spread * weight;
+        return (cdl_emitter_radiance(t->light->emitter, p, n, w, &pdf).cd_m2 - t->L_ref) * weight;
+    }
     cdl_light_sample ls;
     if (!term_sample(t, p, n, lo[0] + u[0] * (hi[0] - lo[0]), lo[1] + u[1] * (hi[1] - lo[1]), &ls) ||
         !(ls.pdf > 0.0))
@@ -248,6 +265,7 @@ static double term_value(const term *t)
     switch (t->mode) {
     case TERM_EXACT: return t->exact;
     case TERM_HIDDEN: return fmax(0.0, t->exact - cdl_estimate_mean(&t->est));
+    case TERM_REGION: return fmax(0.0, t->exact + cdl_estimate_mean(&t->est));
     default: return cdl_estimate_mean(&t->est);
     }
 }
@@ -257,6 +275,8 @@ static double term_variance(const term *t)
     if (t->mode == TERM_EXACT) return 0.0;
     /* The pairs' variance plus one phantom differing pair (estimate.h). */
     double v = cdl_estimate_bound_variance(&t->est, t->jump);
+    /* Every sample is a direction the point sees: nothing is hidden. */
+    if (t->mode == TERM_REGION) return v;
     /* Every sample hidden, or none (or, sampled plainly, none lit): the
      * samples could have missed the other kind. */
     int one_sided = t->mode == TERM_HIDDEN ? t->est.nonzero == 0 || (double)t->est.nonzero >= t->carrying
@@ -280,6 +300,8 @@ static void term_start(const cdl_direct_context *ctx, term *t, cdl_light_strateg
     t->pairs = 0.0;
     t->est = (cdl_estimate){0.0, 0.0, 0.0, 0};
     t->sky = NULL;
+    t->region = NULL;
+    t->L_ref = t->L_spread = 0.0;
     if (st != CDL_STRATEGY_SAMPLED || cdl_emitter_has_exact_illuminance(t->light->emitter)) {
         if (cdl_emitter_exact_illuminance(t->light->emitter, p, n, &exact, NULL) == CDL_OK) {
             t->exact = t->potential = exact.lx > 0.0 ? exact.lx : 0.0;
@@ -291,13 +313,21 @@ static void term_start(const cdl_direct_context *ctx, term *t, cdl_light_strateg
             }
             /* In full view, or few planar occluders: exact (direct_exact_route.c). */
             double visible;
-            int route = cdl_direct_exact_term(ctx, t->light, st, p, n, &visible, stats);
-            if (route >= 0) {
+            int route = cdl_direct_exact_term(ctx, t->light, st, p, n, t->potential, &visible, &t->region, stats);
+            if (route == 2) {
+                double lo, hi;
+                cdl_sky_region_luminance_bounds(t->region, &lo, &hi);
+                t->mode = TERM_REGION;
+                t->L_ref = cdl_sky_region_reference_luminance(t->region);
+                t->L_spread = hi - lo;
+                t->exact = t->L_ref * cdl_sky_region_projected_solid_angle(t->region);
+            } else if (route >= 0) {
                 if (route == 1) t->exact = visible;
                 stats->exact_evaluations++;
                 return;
+            } else {
+                t->mode = TERM_HIDDEN;
             }
-            t->mode = TERM_HIDDEN;
         } else {
             t->mode = TERM_PLAIN;
         }
@@ -357,7 +387,7 @@ static void plan_stage(const cdl_direct_context *ctx, term *terms, size_t count,
             v[j] = term_variance(st[j]);
             V += v[j];
             pilot[j] = st[j]->est.samples;
-            alpha[j] = st[j]->sky ? ALPHA_IMAGE : ALPHA_STEP;
+            alpha[j] = st[j]->sky && st[j]->mode != TERM_REGION ? ALPHA_IMAGE : ALPHA_STEP;
             room[j] = stage_room(st[j]);
         }
         /* The pilot's E may be well off (a point that sees the light through
@@ -426,6 +456,7 @@ void cdl_direct_extended_point(const cdl_direct_context *ctx, const cdl_light_st
         contribution[j] = term_value(&terms[j]);
         var_sum += term_variance(&terms[j]);
         cdl_environment_sampler_release(terms[j].sky);
+        cdl_sky_region_release(terms[j].region);
     }
     *variance = var_sum;
     if (terms != local) free(terms);

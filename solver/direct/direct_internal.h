@@ -3,6 +3,7 @@
 #define CANDELA_SOLVER_DIRECT_INTERNAL_H
 
 #include "solver/direct/direct.h"
+#include "solver/direct/sky_region.h"
 
 /* Most samples per light and point when sampling to a target, pilots and
  * stage together (an explicit direct_samples may ask for more). 2^18
@@ -35,9 +36,13 @@ int cdl_direct_light_fully_visible(const cdl_direct_context *ctx, const cdl_scen
  * (direct_exact_route.c): 0 when the light is in full view (strategy
  * EXTENDED_TESTED and the region clear: its closed form stands); 1 when few
  * planar occluders hide part of it and *E is the exact illuminance of its
- * visible part; -1 when it must be sampled. Counts the route in stats. */
+ * visible part; 2 for an image or overcast sky whose visible part is known
+ * but not of one luminance: *region is that part, to integrate over (the
+ * caller releases it); -1 when it must be sampled. `unoccluded` is the
+ * light's E with nothing in the way. Counts the route in stats. */
 int cdl_direct_exact_term(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy st,
-                          cdl_vec3 p, cdl_vec3 n, double *E, cdl_direct_sample_stats *stats);
+                          cdl_vec3 p, cdl_vec3 n, double unoccluded, double *E, cdl_sky_region **region,
+                          cdl_direct_sample_stats *stats);
 
 /* The extended lights (area emitters, skies) of one point (direct_extended.c):
  * lights[0 .. count) are their indices, in light order; `known` is the
