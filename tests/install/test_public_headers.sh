@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Each installed public header compiles on its own from the install tree
 # (C11, warnings as errors), so none includes a header that is not
-# installed; the umbrella also compiles as C++; and every public function
-# has a comment and every header says what is thread-safe (cdl_apidoc
-# check). Negative controls: an internal header does not compile against
-# the install tree, and the documentation check fails on an undocumented
-# function.
+# installed; the umbrella also compiles as C++; every public function has a
+# comment and every header says what is thread-safe (cdl_apidoc check);
+# the API reference lists every public function. Negative controls: an
+# internal header does not compile against the install tree, and the
+# documentation check fails on an undocumented function.
 # ctest-timeout: 120
 set -u
 : "${CANDELA_TEST_PREFIX:?}" "${CC:?}" "${CXX:?}" "${CANDELA_APIDOC:?}" "${CANDELA_SOURCE_DIR:?}"
@@ -43,6 +43,16 @@ check "an internal header does not compile against the install tree" '[ $st -ne 
 
 "$CANDELA_APIDOC" check --root "$inc/candela" "$inc/candela/candela.h"; st=$?
 check "every public function documented, every header says what is thread-safe" '[ $st -eq 0 ]'
+# The API reference (the doc target's program) has an entry for every public function.
+"$CANDELA_APIDOC" html --root "$inc/candela" --out "$tmp/api" "$inc/candela/candela.h"; st=$?
+check "the API reference is made" '[ $st -eq 0 ] && [ -s "$tmp/api/index.html" ]'
+unlisted=""
+for f in $("$CANDELA_APIDOC" symbols --root "$inc/candela" "$inc/candela/candela.h"); do
+  grep -q "id=\"$f\"" "$tmp"/api/*.html || unlisted="$unlisted $f"
+done
+check "every public function has its entry in the API reference" '[ -z "$unlisted" ]'
+[ -z "$unlisted" ] || echo "missing:$unlisted"
+
 # Negative control: the same check on a copy with one comment removed.
 cp -r "$inc" "$tmp/copy"
 sed -i 's|^/\* Total flux: the exact integral.*\*/$|int cdl_undocumented_probe(void);|' "$tmp/copy/candela/lights/photometry.h"

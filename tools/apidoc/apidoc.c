@@ -741,9 +741,25 @@ static void put_items(FILE *out, const header *h, const anchor *anchors, size_t 
     }
 }
 
+/* mkdir -p */
+static void make_folders(const char *dir)
+{
+    char *path = strdup(dir);
+    if (path == NULL) die("out of memory");
+    for (char *p = path + 1;; ++p) {
+        if (*p != '/' && *p != '\0') continue;
+        char c = *p;
+        *p = '\0';
+        if (mkdir(path, 0777) != 0 && errno != EEXIST) die("%s: %s", path, strerror(errno));
+        *p = c;
+        if (c == '\0') break;
+    }
+    free(path);
+}
+
 static int run_html(const api *a, const char *dir)
 {
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST) die("%s: %s", dir, strerror(errno));
+    make_folders(dir);
     size_t n = 0;
     for (size_t i = 0; i < a->count; ++i) n += a->headers[i].count;
     anchor *anchors = malloc((n ? n : 1) * sizeof *anchors);
