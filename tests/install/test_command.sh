@@ -3,11 +3,11 @@
 # still runs `candela solve` with its PNG maps (the OCIO config is found
 # relative to the command, and relative to libcandela.so for a program
 # using the library), and the library's cdl_version() is what
-# `candela --version` prints. Negative control: with the moved copy's
+# `candela --version` prints, from C and from C++. Negative control: with the moved copy's
 # config taken away, the PNG maps cannot be made.
 # ctest-timeout: 120
 set -u
-: "${CANDELA_TEST_PREFIX:?}" "${CANDELA_INSTALL_LIBDIR:?}" "${CC:?}" "${CANDELA_ABI_VERSION:?}"
+: "${CANDELA_TEST_PREFIX:?}" "${CANDELA_INSTALL_LIBDIR:?}" "${CC:?}" "${CXX:?}" "${CANDELA_ABI_VERSION:?}"
 : "${CANDELA_PROJECT_VERSION:?}"
 san=${CANDELA_SANITIZE_FLAGS:-}
 fail=0
@@ -38,6 +38,12 @@ check "candela --version prints cdl_version() (got '$cli')" '[ "$cli" = "candela
 check "cdl_abi_version() = $CANDELA_ABI_VERSION, the SONAME's (got '${got[1]:-}')" '[ "${got[1]:-}" = "$CANDELA_ABI_VERSION" ]'
 check "libcandela.so finds the OCIO config in the moved prefix (got '${got[2]:-}')" \
   '[ "$(realpath -m "${got[2]:-x}")" = "$(realpath "$M/share/candela/ocio/config.ocio")" ]'
+
+# The same program as C++: the umbrella gives the declarations C linkage.
+cp "$tmp/version.c" "$tmp/version.cpp"
+"$CXX" $san "$tmp/version.cpp" $(PKG_CONFIG_PATH="$L/pkgconfig" pkg-config --cflags --libs candela) -o "$tmp/version_cpp"; st=$?
+check "a C++ program links against libcandela" '[ $st -eq 0 ]'
+check "the C++ program reads the same version" '[ "$(LD_LIBRARY_PATH="$L" "$tmp/version_cpp" | head -n 1)" = "${got[0]:-}" ]'
 
 # A point light 2 m above a 2 x 2 rect grid: at each of its points
 # (+-0.5, +-0.5, 0), E = I cos(theta) / d^2 = 1000 x 2 / 4.5^1.5 lx.
