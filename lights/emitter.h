@@ -35,6 +35,14 @@
  * Constructors validate every parameter and fail with CDL_ERR_INPUT and
  * "<kind> emitter: <parameter>: expected ..., found ..." (the caller
  * prefixes the scene file and JSON path).
+ *
+ * Ownership: an emitter from cdl_emitter_create_* belongs to the caller,
+ * who frees it with cdl_emitter_release (NULL is fine). Parameters are
+ * copied, except the photometry of a goniometric emitter, which is
+ * borrowed and must outlive it. Thread safety: an emitter is immutable
+ * once created; every query may run on any number of threads at once.
+ * Errors: the constructors fail with CDL_ERR_INPUT (message above) or
+ * CDL_ERR_INTERNAL (memory), leaving *out NULL; the queries do not fail.
  */
 #ifndef CANDELA_LIGHTS_EMITTER_H
 #define CANDELA_LIGHTS_EMITTER_H
@@ -158,6 +166,8 @@ typedef struct cdl_environment_params {
 } cdl_environment_params;
 #define CDL_ENVIRONMENT_PARAMS_DEFAULT {{0.0, 0.0, 1.0}, 0, {0.0}, NULL, 0, 0, 1.0, CDL_SKY_UNIFORM}
 
+/* Create an emitter of each kind from its parameters (validated, copied;
+ * see the ownership note above for the photometry). */
 cdl_status cdl_emitter_create_point(const cdl_point_params *p, cdl_emitter **out, cdl_error *err);
 cdl_status cdl_emitter_create_spot(const cdl_spot_params *p, cdl_emitter **out, cdl_error *err);
 cdl_status cdl_emitter_create_goniometric(const cdl_goniometric_params *p, cdl_emitter **out, cdl_error *err);
@@ -166,6 +176,7 @@ cdl_status cdl_emitter_create_directional(const cdl_directional_params *p, cdl_e
 cdl_status cdl_emitter_create_environment(const cdl_environment_params *p, cdl_emitter **out, cdl_error *err);
 void cdl_emitter_release(cdl_emitter *emitter);
 
+/* The kind the emitter was created as. */
 cdl_emitter_kind cdl_emitter_get_kind(const cdl_emitter *emitter);
 /* 1 for point, spot, goniometric, directional: light from one direction. */
 int cdl_emitter_is_delta(const cdl_emitter *emitter);

@@ -49,7 +49,19 @@
  * render time (see cdl_photometry_output_factor and cdl_photometry_tilt_factor).
  *
  * Thread-safety: a finished cdl_photometry is immutable; every query is
- * thread-safe.
+ * thread-safe. Releasing one must not overlap other calls on it.
+ *
+ * Units: candela, lumen, degrees (angles), metres (luminous opening),
+ * watts; factors dimensionless. Ownership: a cdl_photometry made by
+ * cdl_photometry_read_*, _create*, _remap_c or _resample_type_c belongs to
+ * the caller, who frees it with cdl_photometry_release (NULL is fine).
+ * Pointers a query returns (metadata, table arrays, keywords, warnings)
+ * point into the photometry and live as long as it does. Text from
+ * cdl_photometry_format_* is malloc'd: the caller frees it with free();
+ * notes are freed with cdl_photometry_notes_free. Inputs are copied.
+ * Errors: CDL_ERR_INPUT names the file and line ("FILE:LINE: expected ...,
+ * found ...") or the bad argument; CDL_ERR_INTERNAL for memory and I/O.
+ * On failure *out is NULL.
  */
 #ifndef CANDELA_LIGHTS_PHOTOMETRY_H
 #define CANDELA_LIGHTS_PHOTOMETRY_H
@@ -120,6 +132,7 @@ cdl_status cdl_photometry_create_type_c(const double *c_deg, size_t nc, const do
 cdl_status cdl_photometry_create(cdl_photometric_type type, const double *h_deg, size_t nh, const double *v_deg,
                                  size_t nv, const double *candela, cdl_photometry **out, cdl_error *err);
 
+/* Free a photometry (NULL is fine); nothing may use it afterwards. */
 void cdl_photometry_release(cdl_photometry *photometry);
 
 /* I(direction) in candela, direction in the photometric frame (need not be
@@ -174,6 +187,8 @@ typedef struct cdl_photometry_table {
     const double *candela;
 } cdl_photometry_table;
 
+/* Fill *table (caller's) with a view of the stored table; its arrays
+ * belong to the photometry and live as long as it does. Never fails. */
 void cdl_photometry_get_table(const cdl_photometry *photometry, cdl_photometry_table *table);
 
 /* Frame direction of the table's angle pair (h, v) (types A/B/C as above). */
@@ -208,6 +223,8 @@ typedef enum cdl_luminous_shape {
     CDL_LUMINOUS_SHAPE_UNKNOWN
 } cdl_luminous_shape;
 
+/* A short stable name of a shape ("point", "rectangle", "circle", ...);
+ * static storage. */
 const char *cdl_luminous_shape_name(cdl_luminous_shape shape);
 
 typedef struct cdl_luminous_opening {
@@ -325,6 +342,9 @@ typedef struct cdl_photometry_summary {
     cdl_luminous_efficacy efficacy;          /* flux x output factor / input watts */
 } cdl_photometry_summary;
 
+/* Fill *summary (caller's) with the figures above, all from the table
+ * (flux: the exact integral; efficacy from the stated input watts).
+ * Never fails. */
 void cdl_photometry_summarize(const cdl_photometry *photometry, cdl_photometry_summary *summary);
 
 /* ---- transforming -------------------------------------------------------- */
@@ -352,6 +372,7 @@ typedef struct cdl_photometry_notes {
     char **items;
 } cdl_photometry_notes;
 #define CDL_PHOTOMETRY_NOTES_INIT {0, NULL}
+/* Free the notes' lines and leave them empty (NULL and empty notes are fine). */
 void cdl_photometry_notes_free(cdl_photometry_notes *notes);
 
 typedef struct cdl_photometry_write_options {

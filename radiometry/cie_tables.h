@@ -4,6 +4,10 @@
  *   V'(lambda)  CIE 1951 scotopic, 380-780 nm, 5 nm steps (zero outside)
  * Between tabulated wavelengths the functions are linear; outside their
  * range they are zero. Sources are cited in cie_tables.c.
+ *
+ * Units: wavelengths in nanometres; efficiencies dimensionless.
+ * Ownership: the tables are static and read-only, never freed. Thread
+ * safety: thread-safe. Errors: none; outside a table's range the value is 0.
  */
 #ifndef CANDELA_RADIOMETRY_CIE_TABLES_H
 #define CANDELA_RADIOMETRY_CIE_TABLES_H
@@ -25,6 +29,8 @@ typedef struct cdl_cie_table {
     const double *values;
 } cdl_cie_table;
 
+/* The table of a vision (V'(lambda) for CDL_VISION_SCOTOPIC, V(lambda)
+ * otherwise): static storage, never NULL. */
 const cdl_cie_table *cdl_cie_luminous_efficiency_table(cdl_vision vision);
 
 /* The table's piecewise-linear value at lambda_nm (0 outside its range). */

@@ -2,6 +2,9 @@
  *
  * Every constant that turns one kind of quantity into another lives here,
  * named; no other file writes 683, 179 or 4*pi-with-a-meaning inline.
+ *
+ * Macros only, each with its unit beside it: nothing to own, no state
+ * (thread-safe), no errors.
  */
 #ifndef CANDELA_RADIOMETRY_CONSTANTS_H
 #define CANDELA_RADIOMETRY_CONSTANTS_H

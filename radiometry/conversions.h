@@ -3,6 +3,12 @@
  * Radiometric <-> photometric conversion exists only through an explicit
  * luminous efficacy (here) or an explicit spectrum (spectrum.h): there is no
  * hidden 683, 179 or 177.83 anywhere in Candela.
+ *
+ * Units: in the types (units.h) and, for plain doubles, in the names.
+ * Ownership: values only. Thread safety: pure functions, thread-safe.
+ * Errors: none reported; inputs outside a formula's domain (a distance
+ * <= 0, a zero efficacy) are not checked and give what the formula gives
+ * (an infinity or NaN).
  */
 #ifndef CANDELA_RADIOMETRY_CONVERSIONS_H
 #define CANDELA_RADIOMETRY_CONVERSIONS_H

@@ -4,6 +4,13 @@
  * when it fails, writes a message into the caller's cdl_error that names the
  * input (file and line, or JSON path) and what was expected. The numeric
  * values of the statuses are the exit statuses of the `candela` command.
+ *
+ * Units: none. Ownership: a cdl_error is a plain struct the caller owns
+ * (usually on its stack); the library only writes into it, and every
+ * function that takes one accepts NULL (the message is then dropped).
+ * Thread safety: these functions touch only the cdl_error they are given,
+ * so they are thread-safe as long as threads do not share one. Errors:
+ * none of them can fail.
  */
 #ifndef CANDELA_RADIOMETRY_ERROR_H
 #define CANDELA_RADIOMETRY_ERROR_H

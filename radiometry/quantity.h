@@ -22,6 +22,11 @@
  *   solid angle            sr          sr
  *   temperature            K           K
  *   wavelength             nm          nm um µm
+ *
+ * Ownership: the text is borrowed for the call; results go to the
+ * caller's variables; dimension names are static. Thread safety: no state:
+ * thread-safe. Errors: CDL_ERR_INPUT with a message saying what was found
+ * and which units fit (below); *value and *out are unchanged on failure.
  */
 #ifndef CANDELA_RADIOMETRY_QUANTITY_H
 #define CANDELA_RADIOMETRY_QUANTITY_H

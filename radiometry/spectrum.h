@@ -8,6 +8,14 @@
  *
  * This is the only road from radiometric to photometric quantities besides
  * a stated efficacy: K = Km * integral(V S) / integral(S).
+ *
+ * Units: nanometres; values per nanometre as each function says; efficacy
+ * in lm/W. Ownership: a cdl_spectrum borrows its arrays, which the caller
+ * keeps alive while it is used; cdl_spectrum_sample_planck fills arrays
+ * the caller provides. Thread safety: no state, thread-safe. Errors: only
+ * cdl_spectrum_validate and cdl_spectrum_sample_planck report them
+ * (CDL_ERR_INPUT); the other functions expect a valid spectrum (validate
+ * it first) and do not check.
  */
 #ifndef CANDELA_RADIOMETRY_SPECTRUM_H
 #define CANDELA_RADIOMETRY_SPECTRUM_H

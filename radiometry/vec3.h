@@ -1,6 +1,9 @@
 /* vec3.h - small 3-vector maths in double precision.
  * Positions are in metres in world space (right-handed, z up) unless a
- * function says otherwise; directions are unit vectors where documented. */
+ * function says otherwise; directions are unit vectors where documented.
+ * Ownership: values only. Thread safety: pure static inline functions,
+ * thread-safe. Errors: none (a zero vector normalises to itself). They use
+ * <math.h>: a program calling them links the maths library (-lm). */
 #ifndef CANDELA_RADIOMETRY_VEC3_H
 #define CANDELA_RADIOMETRY_VEC3_H
 

@@ -1,4 +1,4 @@
-/* pool.h - worker threads over a range of items, and the progress of long work.
+/* pool.h - worker threads over a range of items (their progress: progress.h).
  *
  * cdl_pool_run hands out items [0, count) in chunks to `threads` workers
  * (the calling thread is one of them). Which thread takes which chunk varies
@@ -18,27 +18,7 @@
 #include <stddef.h>
 
 #include "radiometry/error.h"
-
-/* What a long call reports. `stage` names the work ("grid workplane",
- * "cache records"); items are points, records or rungs as the stage says. */
-typedef struct cdl_progress {
-    const char *stage;
-    size_t done, total;       /* items of this stage */
-    size_t records;           /* irradiance-cache records so far (0 when there is no cache) */
-    double elapsed_seconds;   /* since the stage began */
-} cdl_progress;
-
-/* Returns 0 to go on, non-zero to cancel. */
-typedef int (*cdl_progress_fn)(void *user, const cdl_progress *progress);
-
-typedef struct cdl_progress_sink {
-    cdl_progress_fn fn;       /* NULL: no reports, no cancelling */
-    void *user;
-} cdl_progress_sink;
-
-/* Report through a sink (nothing when it has no function); returns the
- * callback's answer (0: go on). */
-int cdl_progress_report(const cdl_progress_sink *sink, const cdl_progress *progress);
+#include "solver/progress.h"
 
 /* Items begin .. end - 1 of a task, on a worker whose own scratch space is
  * `local` (NULL when the task has none). A failure stops the whole run. */

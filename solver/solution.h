@@ -4,6 +4,11 @@
  * point's normal; E_stderr is the one-sigma error of E (0 only where every
  * term is exact). A cdl_solution owns all its arrays; release it with
  * cdl_solution_release. Writing it to files is output/solution_write.h.
+ *
+ * Units: lux (E, E_direct, E_indirect, E_stderr), seconds, counts.
+ * Thread safety: a finished solution is only read, from any number of
+ * threads; release it once, when nothing reads it. Errors: only
+ * cdl_grid_solution_alloc fails (CDL_ERR_INTERNAL, out of memory).
  */
 #ifndef CANDELA_SOLVER_SOLUTION_H
 #define CANDELA_SOLVER_SOLUTION_H
@@ -49,6 +54,7 @@ typedef struct cdl_solution {
  * E_indirect, E_stderr, and ao when want_ao. */
 cdl_status cdl_grid_solution_alloc(cdl_grid_solution *gs, int want_ao, cdl_error *err);
 
+/* Free what the solution holds and zero it (NULL and a zeroed solution are fine). */
 void cdl_solution_release(cdl_solution *solution);
 
 #endif

@@ -9,6 +9,14 @@
  * irradiance cache; "auto" picks, per grid, the cheapest method that gives
  * the whole answer for the target asked, which is "direct" when nothing in
  * the scene reflects light.
+ *
+ * Units: lux in the solution, seconds, threads. Ownership: the scene and
+ * options are borrowed for the call; the solution is the caller's.
+ * Thread safety: cdl_solve_scene itself runs on `threads` worker threads
+ * (the calling thread among them) and returns when they are done; the
+ * progress callback is only called on the calling thread. It keeps no
+ * global state, so solves may run at once on different threads, each with
+ * its own cdl_solution.
  */
 #ifndef CANDELA_SOLVER_SOLVE_H
 #define CANDELA_SOLVER_SOLVE_H
@@ -17,7 +25,7 @@
 #include <stdint.h>
 
 #include "radiometry/error.h"
-#include "solver/pool.h"
+#include "solver/progress.h"
 #include "solver/scene/scene.h"
 #include "solver/solution.h"
 
@@ -47,6 +55,13 @@ typedef struct cdl_solve_options {
     {.threads = -1, .progress = {.fn = NULL, .user = NULL}, .ray_log = NULL, .no_exact_route = 0,                    \
      .no_cache_gradients = 0, .cache_path = NULL}
 
+/* Solve every grid of `scene`; `options` may be NULL (the defaults). On
+ * success the caller releases *out with cdl_solution_release; on failure
+ * *out is left empty (releasing it is harmless). Errors: CDL_ERR_INPUT for
+ * a scene that cannot be solved as asked (an unreadable photometric file
+ * or image, a method not built yet, a cache file made for something else),
+ * the message naming the JSON path or file; CDL_ERR_CANCELLED when the
+ * progress callback asked to stop; CDL_ERR_INTERNAL for resources. */
 cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *options, cdl_solution *out,
                            cdl_error *err);
 

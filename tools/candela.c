@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "candela/candela.h"
 #include "command.h"
 
 static const cdl_command *const commands[] = {
@@ -15,7 +16,7 @@ static void print_usage(FILE *out)
             "candela %s - radiometry, luminaires and illuminance for lighting design\n\n"
             "usage: candela <command> [options]\n\n"
             "commands:\n",
-            CANDELA_VERSION);
+            cdl_version());
     for (size_t i = 0; i < COMMAND_COUNT; ++i)
         fprintf(out, "  %-9s %s\n", commands[i]->name, commands[i]->summary);
     fprintf(out,
@@ -31,7 +32,7 @@ int main(int argc, char **argv)
     }
     const char *name = argv[1];
     if (strcmp(name, "--version") == 0 || strcmp(name, "version") == 0) {
-        printf("candela %s\n", CANDELA_VERSION);
+        printf("candela %s\n", cdl_version());
         return CDL_EXIT_OK;
     }
     if (strcmp(name, "--help") == 0 || strcmp(name, "-h") == 0 || strcmp(name, "help") == 0) {

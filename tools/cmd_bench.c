@@ -12,6 +12,7 @@
 #include "solver/bench/bench_ladder.h"
 #include "solver/bench/bench_report.h"
 #include "solver/output/solution_write.h"
+#include "solver/pool.h"
 #include "solver/solve.h"
 
 static void print_help(FILE *out)

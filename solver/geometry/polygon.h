@@ -19,12 +19,7 @@
 #include "radiometry/error.h"
 #include "radiometry/vec3.h"
 #include "solver/geometry/mesh2d.h"
-
-/* A ring of points (a polygon's outline or one of its holes), in order. */
-typedef struct cdl_ring3 {
-    cdl_vec3 *points;
-    size_t count;
-} cdl_ring3;
+#include "solver/geometry/ring3.h"
 
 typedef struct cdl_polygon_plane {
     cdl_vec3 origin;   /* the outer ring's first vertex */

@@ -18,6 +18,14 @@
  * outer ring) at p/4 per pixel (coarser when that would exceed 4096 pixels
  * on a side), each pixel taking the point of the triangle containing its
  * centre.
+ *
+ * Units: metres (points, pixel size, spacing), square metres (weights).
+ * Ownership: cdl_grid_build fills the caller's cdl_grid with arrays it
+ * allocates; cdl_grid_release frees them (a grid inside a cdl_solution is
+ * freed by cdl_solution_release). Thread safety: no state; a built grid is
+ * only read. Errors: cdl_grid_build fails with CDL_ERR_INPUT for a polygon
+ * that cannot be meshed or too many points (message with the JSON path),
+ * CDL_ERR_INTERNAL for memory; the grid is then empty.
  */
 #ifndef CANDELA_SOLVER_GRID_H
 #define CANDELA_SOLVER_GRID_H
@@ -44,6 +52,8 @@ typedef struct cdl_grid {
 /* EN 12464-1 grid spacing for a longest dimension d (m): 0.2 x 5^log10(d), capped at 10 m. */
 double cdl_grid_auto_spacing(double longest_dimension_m);
 
+/* Place the points of a grid as its spec says (above) into *out; free them
+ * with cdl_grid_release (NULL and an empty grid are fine). */
 cdl_status cdl_grid_build(const cdl_grid_spec *spec, cdl_grid *out, cdl_error *err);
 void cdl_grid_release(cdl_grid *grid);
 

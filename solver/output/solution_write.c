@@ -12,11 +12,6 @@
 #include "radiometry/atomic_file.h"
 #include "solver/output/grid_result.h"
 
-const char *cdl_default_ocio_config(void)
-{
-    return CANDELA_DEFAULT_OCIO_CONFIG;
-}
-
 /* Errors of the file system that are the machine's, not the path's. */
 static cdl_status folder_failure_status(int code)
 {

@@ -2,7 +2,12 @@
  *
  * Per grid NAME.csv, NAME.exr and NAME.png (EXR and PNG for rect and
  * polygon grids), and summary.json; each written atomically (to a
- * temporary name in the same folder, renamed when complete). */
+ * temporary name in the same folder, renamed when complete).
+ *
+ * Ownership: the scene and solution are borrowed for the call. Thread
+ * safety: no state; different folders may be written at once (two writes
+ * into one folder race for its files). Errors: as each function says; a
+ * failed write leaves no partial file under its final name. */
 #ifndef CANDELA_SOLVER_SOLUTION_WRITE_H
 #define CANDELA_SOLVER_SOLUTION_WRITE_H
 
@@ -23,7 +28,12 @@ cdl_status cdl_solution_prepare_folder(const char *out_dir, cdl_error *err);
 cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *solution, const char *out_dir,
                               const char *ocio_config, cdl_error *err);
 
-/* The OCIO config shipped with Candela (data/ocio/config.ocio). */
+/* The OCIO config shipped with Candela (data/ocio/config.ocio), installed
+ * as DATADIR/candela/ocio/config.ocio and found relative to libcandela.so
+ * or to the program linking libcandela.a (output/ocio_config_path.c).
+ * Static storage, found once; thread-safe; never NULL. When the
+ * installation lacks it, the path where it was expected is returned and
+ * writing the PNG maps fails with a message naming it. */
 const char *cdl_default_ocio_config(void);
 
 #endif

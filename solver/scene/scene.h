@@ -10,6 +10,14 @@
  * Errors: CDL_ERR_INPUT, message "SCENE.json: luminaires[2].position:
  * expected ..., found ..." (JSON syntax errors give line and column).
  * Unknown keys are errors: a typo must not silently change a result.
+ *
+ * Units: metres, degrees, cd, lm, lx, cd/m^2 as the field names say.
+ * Ownership: a scene from cdl_scene_load or cdl_scene_load_string belongs
+ * to the caller, who frees it with cdl_scene_release (NULL is fine); every
+ * string and array in it belongs to the scene. Thread safety: the library
+ * keeps no global state and never modifies a loaded scene (every other
+ * call takes it const), so scenes may be loaded, read and solved on
+ * several threads at once; release one only when no call uses it.
  */
 #ifndef CANDELA_SOLVER_SCENE_H
 #define CANDELA_SOLVER_SCENE_H
@@ -19,7 +27,7 @@
 
 #include "radiometry/error.h"
 #include "radiometry/vec3.h"
-#include "solver/geometry/polygon.h"
+#include "solver/geometry/ring3.h"
 
 #define CDL_JSON_PATH_SIZE 96
 
@@ -181,6 +189,8 @@ double cdl_solver_settings_target(const cdl_solver_settings *settings);
  * k x k of samples then stays far inside an int. */
 #define CDL_SCENE_MAX_SAMPLES 16777216
 
+/* Short stable names, as in the scene file ("auto", "direct", "icache",
+ * "pathtrace"; "draft", "normal", "high", "reference"); static storage. */
 const char *cdl_method_name(cdl_method method);
 const char *cdl_quality_name(cdl_quality quality);
 
@@ -198,6 +208,9 @@ typedef struct cdl_scene {
     cdl_solver_settings settings;
 } cdl_scene;
 
+/* Load the scene file at `path` (relative paths in it resolve against its
+ * folder). On success *out is the caller's; on failure it is NULL and err
+ * says where (above). CDL_ERR_INTERNAL for memory. */
 cdl_status cdl_scene_load(const char *path, cdl_scene **out, cdl_error *err);
 /* Parse from a string (path used for messages and relative paths). */
 cdl_status cdl_scene_load_string(const char *json, const char *path, cdl_scene **out, cdl_error *err);
