@@ -45,6 +45,15 @@ typedef struct cdl_grid {
 double cdl_grid_auto_spacing(double longest_dimension_m);
 
 cdl_status cdl_grid_build(const cdl_grid_spec *spec, cdl_grid *out, cdl_error *err);
+
+/* The reflectance of the surface each point of the grid lies on
+ * (grid_surface.c), into rho[0 .. count). CDL_ERR_INPUT, with *missing the
+ * first point on no reflecting side of any surface, when there is none
+ * (the caller names the grid and the point); no message is set. */
+struct cdl_scene_geometry;
+struct cdl_occluder_index;
+cdl_status cdl_grid_surface_reflectance(const cdl_grid *grid, const struct cdl_scene_geometry *geometry,
+                                        const struct cdl_occluder_index *occluders, double *rho, size_t *missing);
 void cdl_grid_release(cdl_grid *grid);
 
 #endif

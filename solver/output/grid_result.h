@@ -37,6 +37,11 @@ typedef struct cdl_grid_result {
     const double *E_indirect; /* lux */
     const double *E_stderr;   /* standard error of E, lux (0 where exact) */
     const double *ao;         /* NULL unless the grid asked for "ao"; [0, 1] */
+    /* Optional columns after the fixed ten, in this order when present: */
+    const double *area_m2;    /* the area each point stands for (polygon grids), m^2 */
+    const double *Ez;         /* cylindrical illuminance, lux ("cylindrical") */
+    const double *Esz;        /* semicylindrical illuminance, lux ("semicylindrical") */
+    const double *L;          /* luminance rho E / pi, cd/m^2 ("luminance") */
 } cdl_grid_result;
 
 /* Check a result before it is written to `path` (used in messages): grid and
@@ -47,8 +52,16 @@ cdl_status cdl_grid_result_check(const cdl_grid_result *result, const char *path
 /* The same, and the grid must have a raster (rect and polygon grids): for images. */
 cdl_status cdl_grid_result_check_with_raster(const cdl_grid_result *result, const char *path, cdl_error *err);
 
+/* Mean (area-weighted as Em), minimum, maximum and Min / mean of one
+ * quantity over a grid. */
+typedef struct cdl_value_stats {
+    double avg, min, max, U0;
+} cdl_value_stats;
+
 typedef struct cdl_grid_stats {
     size_t count;
+    double area_m2;           /* sum of the points' area weights (0 for points grids) */
+    cdl_value_stats Ez, Esz, L; /* of the optional columns given (zeros otherwise) */
     double E_avg_lx;          /* area-weighted mean (Em) */
     double E_min_lx;
     double E_max_lx;
@@ -68,7 +81,7 @@ typedef struct cdl_grid_stats {
 void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats);
 
 /* NAME.csv: header x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx
- * (plus ",AO" when ao is given), one row per point in grid order, "\n" line
+ * then, for those given, AO, area_m2, Ez_lx, Esz_lx, L_cd_m2; one row per point in grid order, "\n" line
  * ends. Each number is the shortest of "%.15g", "%.16g", "%.17g" that reads
  * back (strtod) as exactly the same double, so a closed-form result
  * survives the trip to text. Expects the "C" numeric locale (the library
@@ -82,6 +95,9 @@ cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *
  *   E_direct    lux
  *   E_indirect  lux
  *   E_stderr    lux
+ *   Ez          cylindrical illuminance, lux (when given)
+ *   Esz         semicylindrical illuminance, lux (when given)
+ *   L           luminance, cd/m^2 (when given)
  *   mask        1 inside the grid, 0 outside (outside pixels hold 0 in every channel)
  * String attributes units=lx, quantity=illuminance and each key/value given
  * (the solver's settings); a key may not repeat "units" or "quantity". A

@@ -23,6 +23,11 @@ cdl_status cdl_solution_prepare_folder(const char *out_dir, cdl_error *err);
 cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *solution, const char *out_dir,
                               const char *ocio_config, cdl_error *err);
 
+/* The grid's results as the writers take them (grid_result.h): E and its
+ * parts, ao, area_m2 (polygon grids' weights, else NULL), Ez, Esz, L. */
+struct cdl_grid_result;
+void cdl_grid_solution_result(const cdl_grid_solution *gs, const cdl_grid_spec *spec, struct cdl_grid_result *out);
+
 /* The OCIO config shipped with Candela (data/ocio/config.ocio). */
 const char *cdl_default_ocio_config(void);
 
