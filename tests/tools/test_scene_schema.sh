@@ -6,12 +6,7 @@
 # schema with its unit, and `--schema` prints the file itself. Needs
 # python3-jsonschema (scripts/setup.sh installs it).
 # ctest-timeout: 120
-set -u
-: "${CANDELA:?}" "${CANDELA_SOURCE_DIR:?}"
-fail=0
-check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/harness.sh"
 schema="$CANDELA_SOURCE_DIR/data/scene.schema.json"
 python3 -c 'import jsonschema' 2>/dev/null || { echo "python3-jsonschema missing: run scripts/setup.sh"; exit 1; }
 

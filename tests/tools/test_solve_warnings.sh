@@ -5,12 +5,7 @@
 # "warnings"; --strict refuses them (exit 1, no results). Installed power
 # and W/m2 from the luminaire files' input watts, times the copies placed.
 # ctest-timeout: 300
-set -u
-: "${CANDELA:?}" "${CANDELA_SOURCE_DIR:?}"
-fail=0
-check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/harness.sh"
 cp "$CANDELA_SOURCE_DIR/data/office/downlight.ies" "$tmp/"
 json() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))" "$@"; }
 
