@@ -21,7 +21,9 @@ static void print_help(FILE *out)
           "             the outputs the grid asks for: AO, Ez_lx, Esz_lx, L_cd_m2\n"
           "  NAME.exr   rect and polygon grids: float lux maps (E, E_direct,\n"
           "             E_indirect, E_stderr, mask) with the solver settings\n"
-          "  NAME.png   rect and polygon grids: false-colour map with a lux legend\n"
+          "  NAME.png   rect and polygon grids: false-colour map titled with the grid's\n"
+          "             name, Em, Emin, Emax and U0, axes in metres (+x/+y where the\n"
+          "             grid runs along them) and a lux legend (linear; --map-scale log)\n"
           "and summary.json (Em, Emin, Emax, U0, Ud per grid, and of each extra\n"
           "output; installed power and W/m2 when the luminaire files give their\n"
           "input watts; method, settings, time, rays, the plan: what was modelled\n"
@@ -65,6 +67,9 @@ static void print_help(FILE *out)
           "                        away, above the ceiling, outside the room, millimetres\n"
           "                        typed as metres), a grid at 0 lx everywhere, a scene\n"
           "                        without light, points where two surfaces meet\n"
+          "  --map-scale linear|log  the PNG maps' lux scale (default linear: from 0, or\n"
+          "                        from the grid's 2nd percentile where nearly all of it\n"
+          "                        is bright, to the maximum; log: 1-2-5 decades)\n"
           "  --quiet               no progress on stderr\n"
           "\n"
           "exit status: 0 success, 1 bad scene, input file or output folder (not a\n"
@@ -112,6 +117,7 @@ static int run(int argc, char **argv)
         {"quiet", 'q', 0, 0, NULL},
         {"cache", 0, 1, 0, NULL},
         {"strict", 0, 0, 0, NULL},
+        {"map-scale", 0, 1, 0, NULL},
     };
     const size_t nopts = sizeof opts / sizeof opts[0];
     cdl_cli_result args;
@@ -142,6 +148,16 @@ static int run(int argc, char **argv)
             return CDL_EXIT_USAGE;
         }
         so.cache_path = cache->value;
+    }
+    int log_scale = 0;
+    cdl_cli_option *scale = cdl_cli_find(opts, nopts, "map-scale");
+    if (scale->present) {
+        if (strcmp(scale->value, "log") != 0 && strcmp(scale->value, "linear") != 0) {
+            fprintf(stderr, "candela solve: --map-scale: expected linear or log, found '%s'\n"
+                            "(see 'candela solve --help')\n", scale->value);
+            return CDL_EXIT_USAGE;
+        }
+        log_scale = strcmp(scale->value, "log") == 0;
     }
     progress_state shown = {-1.0, NULL};
     if (!cdl_cli_find(opts, nopts, "quiet")->present && isatty(STDERR_FILENO)) {
@@ -183,7 +199,10 @@ static int run(int argc, char **argv)
         }
     }
     if (st == CDL_OK) {
-        st = cdl_solution_write(scene, &sol, out_opt->value, ocio, &err);
+        cdl_solution_write_options wo = CDL_SOLUTION_WRITE_OPTIONS_DEFAULT;
+        wo.ocio_config = ocio;
+        wo.map_log_scale = log_scale;
+        st = cdl_solution_write(scene, &sol, out_opt->value, &wo, &err);
         if (st == CDL_OK) {
             for (size_t g = 0; g < sol.grid_count; ++g) {
                 cdl_grid_result r;

@@ -38,6 +38,13 @@ typedef struct cdl_grid {
     int raster_width, raster_height;
     int32_t *raster_index;    /* width x height, row-major, top row first; -1 outside */
     double pixel_size_m;      /* size of a raster pixel along the grid's first axis */
+    /* Where the raster lies in the world (for axes in metres on maps):
+     * raster_corner is the lower-left corner of the image (left edge of
+     * column 0, bottom edge of the last row); raster_right and raster_up
+     * the unit directions of increasing column and of decreasing row;
+     * each pixel pixel_width_m x pixel_height_m. */
+    cdl_vec3 raster_corner, raster_right, raster_up;
+    double pixel_width_m, pixel_height_m;
     double spacing_m;         /* polygon: spacing used; rect: |u|/nu */
 } cdl_grid;
 

@@ -42,6 +42,7 @@ typedef struct cdl_grid_result {
     const double *Ez;         /* cylindrical illuminance, lux ("cylindrical") */
     const double *Esz;        /* semicylindrical illuminance, lux ("semicylindrical") */
     const double *L;          /* luminance rho E / pi, cd/m^2 ("luminance") */
+    int map_log_scale;        /* NAME.png: 1 a logarithmic lux scale, 0 (default) linear (lux_scale.h) */
 } cdl_grid_result;
 
 /* Check a result before it is written to `path` (used in messages): grid and
@@ -110,16 +111,22 @@ cdl_status cdl_grid_result_write_exr(const cdl_grid_result *result, const char *
                                      size_t attribute_count, cdl_error *err);
 
 /* NAME.png (rect and polygon grids; a grid without a raster is refused): an
- * 8-bit sRGB image on a white background. Left, the false-colour map of E:
+ * 8-bit sRGB image on a white background, readable on its own. At the top
+ * the grid's name and "Em ... lx  Emin ... lx  Emax ... lx  U0 ..." (the
+ * statistics of cdl_grid_result_stats). Below, the false-colour map of E:
  * each raster pixel drawn as a square of `cell` image pixels (nearest
  * neighbour, the long side at least 400 pixels), pixels outside the grid
- * left white. Right, the legend: a colour bar (top = scale.hi, bottom =
- * scale.lo) in a black frame with ticks labelled in lux ("500 lx", "0.2 lx",
- * "20k lx") at 1-2-5 values, as many as fit without overlapping.
- * Colours: E maps to t = cdl_lux_scale_position (log scale between round
- * values bracketing the data, lux_scale.h), and (t, t, t) goes through the
- * OpenColorIO config `ocio_config` from colour space "linear" to display
- * "sRGB", view "False colour"; the result is rounded to 8 bits.
+ * left white, with axes in metres along its bottom and left edges (world
+ * coordinates where the edge runs along a world axis, then named "+x (m)",
+ * "-y (m)", ...; else distances from the corner, "u (m)" and "v (m)").
+ * Right, the legend: a colour bar (top = scale.hi, bottom = scale.lo) in a
+ * black frame with ticks labelled in lux, as many as fit without
+ * overlapping: on the linear scale (the default) at multiples of its tick,
+ * the bottom one "<=" when values lie below it; on the logarithmic scale
+ * (result->map_log_scale) at 1-2-5 values ("500 lx", "0.2 lx", "20k lx").
+ * Colours: E maps to t = cdl_lux_scale_position, and (t, t, t) goes through
+ * the OpenColorIO config `ocio_config` from colour space "linear" to
+ * display "sRGB", view "False colour"; the result is rounded to 8 bits.
  * A bad config is CDL_ERR_INPUT, prefixed with the PNG's path. */
 cdl_status cdl_grid_result_write_png(const cdl_grid_result *result, const char *path, const char *ocio_config,
                                      cdl_error *err);
@@ -127,6 +134,8 @@ cdl_status cdl_grid_result_write_png(const cdl_grid_result *result, const char *
 /* Where things sit in NAME.png, in image pixels (x right, y down). */
 typedef struct cdl_png_layout {
     cdl_lux_scale scale;      /* the lux range of the colours */
+    int title_y, stats_y;     /* top of the name's line and of the statistics' line (x = map_x) */
+    int axis_label_width;     /* room left of the map for the vertical axis' labels */
     int width, height;        /* the whole image */
     int map_x, map_y;         /* top-left corner of the map */
     int cell;                 /* raster pixel (c, r) covers x in [map_x + c cell, map_x + (c+1) cell) */

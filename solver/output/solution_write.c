@@ -198,8 +198,11 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
 }
 
 cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, const char *out_dir,
-                              const char *ocio_config, cdl_error *err)
+                              const cdl_solution_write_options *options, cdl_error *err)
 {
+    cdl_solution_write_options opts = CDL_SOLUTION_WRITE_OPTIONS_DEFAULT;
+    if (options) opts = *options;
+    const char *ocio_config = opts.ocio_config ? opts.ocio_config : cdl_default_ocio_config();
     cdl_status st = cdl_solution_prepare_folder(out_dir, err);
     if (st != CDL_OK) return st;
     cdl_grid_stats *stats = calloc(sol->grid_count ? sol->grid_count : 1, sizeof *stats);
@@ -227,6 +230,7 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
         const cdl_grid_solution *gs = &sol->grids[g];
         cdl_grid_result r;
         cdl_grid_solution_result(gs, &scene->grids[g], &r);
+        r.map_log_scale = opts.map_log_scale;
         cdl_grid_result_stats(&r, &stats[g]);
         char *csv = join_path(out_dir, r.name, ".csv");
         char *exr = join_path(out_dir, r.name, ".exr");

@@ -65,4 +65,10 @@ check "power: printed" 'grep -q "installed power $((12 * ${watts%.*})) W (12 lum
 # A point light has no wattage: no total, and the reason.
 check "power unknown: null with why" '[ "$(json "$tmp/shade/summary.json" "d[\"power\"][\"installed_w\"]")" = None ] && grep -q "not every luminaire" "$tmp/shade/summary.json"'
 
+# The map's scale: linear by default, logarithmic on request, said in the PNG's description.
+check "map: linear by default" 'grep -aq "floor: illuminance in lux, false colour on a linear scale" "$tmp/power/floor.png"'
+"$CANDELA" solve "$tmp/power.json" -o "$tmp/powerlog" --quiet --map-scale log > /dev/null 2>&1; st=$?
+check "map: --map-scale log" '[ $st -eq 0 ] && grep -aq "on a logarithmic scale" "$tmp/powerlog/floor.png"'
+"$CANDELA" solve "$tmp/power.json" -o "$tmp/powerbad" --quiet --map-scale cubic > /dev/null 2> "$tmp/bad.err"; st=$?
+check "map: an unknown scale is a usage error" '[ $st -eq 2 ] && grep -q "expected linear or log" "$tmp/bad.err"'
 exit $fail
