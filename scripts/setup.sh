@@ -10,6 +10,7 @@ packages=(
   libcjson-dev libpng-dev zlib1g-dev
   clang libclang-rt-14-dev
   libxml2-utils
+  python3-jsonschema
 )
 
 missing=()

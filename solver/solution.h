@@ -24,6 +24,10 @@ typedef struct cdl_grid_solution {
     cdl_grid grid;
     double *E, *E_direct, *E_indirect, *E_stderr;
     double *ao;                       /* NULL unless asked for */
+    double *Ez, *Esz;                 /* cylindrical, semicylindrical illuminance (lux); NULL unless asked for */
+    double *L;                        /* luminance rho E / pi of the surface under each point (cd/m^2); NULL
+                                         unless asked for */
+    double *rho;                      /* with L: the reflectance of that surface at each point */
     /* Points lying where two surfaces meet (on the one they face and within
      * Embree's float resolution of another whose plane holds their normal,
      * as at the foot of a wall): their normal cannot say which side of that
@@ -33,6 +37,14 @@ typedef struct cdl_grid_solution {
     size_t edge_point_count;
     size_t first_edge_point;          /* index of the first, when any */
 } cdl_grid_solution;
+
+/* Installed power (DESIGN.md summary.json "power"): the luminaire files'
+ * input watts, one per luminaire placed (copies of an array each count). */
+typedef struct cdl_power_summary {
+    double installed_w;               /* sum over the luminaires whose files give their input watts */
+    size_t luminaires_counted;        /* luminaires with a wattage */
+    size_t luminaires_without_watts;  /* point, spot and area luminaires, files without one */
+} cdl_power_summary;
 
 typedef struct cdl_solution {
     cdl_method method;                /* the method actually used */
@@ -48,11 +60,26 @@ typedef struct cdl_solution {
     uint64_t records_gathered;        /* of those, gathered by this solve (the others read from a cache file) */
     int cache_reused;                 /* 1: the records came from options->cache_path; 0: none asked for, or
                                          gathered and written to it */
+    cdl_power_summary power;
+    /* What a user must hear about (solve_checks.c): a luminaire that lights
+     * no grid point, a dark grid, a scene without light, points where two
+     * surfaces meet. Each a sentence naming the luminaire or grid. */
+    char **warnings;
+    size_t warning_count;
 } cdl_solution;
 
 /* Zeroed arrays for the grid's points (gs->grid built): E, E_direct,
  * E_indirect, E_stderr, and ao when want_ao. */
 cdl_status cdl_grid_solution_alloc(cdl_grid_solution *gs, int want_ao, cdl_error *err);
+
+/* Zeroed arrays for the outputs `spec` asks for beyond E and ao:
+ * Ez, Esz, and L with rho. Ownership: the grid solution's (released with
+ * the solution). Errors: CDL_ERR_OUT_OF_MEMORY. */
+cdl_status cdl_grid_solution_alloc_outputs(cdl_grid_solution *gs, const cdl_grid_spec *spec, cdl_error *err);
+
+/* Append a warning (printf-style) to the solution's list; CDL_ERR_INTERNAL
+ * when out of memory. Not thread-safe for one solution. */
+cdl_status cdl_solution_add_warning(cdl_solution *solution, cdl_error *err, const char *fmt, ...) CDL_PRINTF(3, 4);
 
 /* Free what the solution holds and zero it (NULL and a zeroed solution are fine). */
 void cdl_solution_release(cdl_solution *solution);

@@ -21,6 +21,7 @@
 #include "solver/scene/scene_hash.h"
 #include "solver/scene/scene_lights.h"
 #include "solver/scene/scene_occluders.h"
+#include "solver/solve_checks.h"
 
 /* Ambient-occlusion samples per point implied by the quality level (an
  * explicit ao_samples overrides). Direct light samples to the target. */
@@ -166,6 +167,67 @@ static cdl_status check_finite(const cdl_scene *scene, const cdl_scene_lights *l
                              scene->path, spec->json_path, spec->name, i, p.x, p.y, p.z, what);
     }
     return CDL_OK;
+}
+
+/* ---- outputs beyond E ------------------------------------------------------------ */
+
+/* Cylindrical and semicylindrical illuminance are computed for delta lights
+ * (direct_vertical.c); a grid asking for them where other light would
+ * reach it is refused, naming what is missing, rather than given a part. */
+static cdl_status check_vertical_outputs(const cdl_scene *scene, const cdl_scene_lights *lights, int indirect,
+                                         size_t g, const cdl_grid *grid, cdl_error *err)
+{
+    const cdl_grid_spec *spec = &scene->grids[g];
+    if (!spec->want_cylindrical && !spec->want_semicylindrical) return CDL_OK;
+    const char *what = spec->want_cylindrical ? "cylindrical" : "semicylindrical";
+    for (size_t l = 0; l < lights->count; ++l)
+        if (!cdl_emitter_is_delta(lights->emitters[l]))
+            return cdl_error_set(err, CDL_ERR_INPUT,
+                                 "%s: %s.outputs: expected lights Candela can give %s illuminance for (point, spot, "
+                                 "goniometric, directional), found %s, a%s %s emitter: %s illuminance from area "
+                                 "emitters, skies and emitting surfaces is not built yet",
+                                 scene->path, spec->json_path, what, lights->lights[l].label,
+                                 lights->kinds[l][0] == 'a' || lights->kinds[l][0] == 'e' ? "n" : "",
+                                 lights->kinds[l], what);
+    if (indirect) {
+        double rho = 0.0;
+        const char *reflector = cdl_solve_first_reflector(scene, &rho);
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "%s: %s.outputs: expected a scene without interreflection for %s illuminance, found %s "
+                             "reflecting %g %%: interreflected %s illuminance is not built yet (\"method\": "
+                             "\"direct\" gives its direct part)",
+                             scene->path, spec->json_path, what, reflector ? reflector : "a surface", rho * 100.0, what);
+    }
+    if (spec->want_semicylindrical)
+        for (size_t i = 0; i < grid->count; ++i) {
+            cdl_vec3 facing;
+            if (!cdl_direct_facing_direction(grid->normals[i], &facing))
+                return cdl_error_set(err, CDL_ERR_INPUT,
+                                     "%s: %s.outputs: expected points facing a horizontal direction for "
+                                     "semicylindrical illuminance (it faces the horizontal part of each point's "
+                                     "normal), found point %zu with the vertical normal [%.6g, %.6g, %.6g]: give the "
+                                     "grid a \"normal\" with a horizontal part",
+                                     scene->path, spec->json_path, i, grid->normals[i].x, grid->normals[i].y,
+                                     grid->normals[i].z);
+        }
+    return CDL_OK;
+}
+
+/* The reflectance under each point of a grid asking for "luminance". */
+static cdl_status find_reflectances(const cdl_scene *scene, const cdl_scene_geometry *geometry,
+                                    const cdl_occluder_index *occluders, size_t g, cdl_grid_solution *gs,
+                                    cdl_error *err)
+{
+    const cdl_grid_spec *spec = &scene->grids[g];
+    if (!spec->want_luminance) return CDL_OK;
+    size_t missing = 0;
+    if (cdl_grid_surface_reflectance(&gs->grid, geometry, occluders, gs->rho, &missing) == CDL_OK) return CDL_OK;
+    cdl_vec3 p = gs->grid.points[missing];
+    return cdl_error_set(err, CDL_ERR_INPUT,
+                         "%s: %s.outputs: expected a grid lying on a surface for \"luminance\" (rho E / pi of that "
+                         "surface), found point %zu at [%.10g, %.10g, %.10g] on no surface that reflects towards its "
+                         "normal",
+                         scene->path, spec->json_path, missing, p.x, p.y, p.z);
 }
 
 /* ---- the solve ------------------------------------------------------------------ */
@@ -430,6 +492,9 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
             goto fail;
         }
         st = cdl_grid_solution_alloc(&out->grids[g], scene->grids[g].want_ao, err);
+        if (st == CDL_OK) st = cdl_grid_solution_alloc_outputs(&out->grids[g], &scene->grids[g], err);
+        if (st == CDL_OK) st = check_vertical_outputs(scene, &lights, indirect, g, &out->grids[g].grid, err);
+        if (st == CDL_OK) st = find_reflectances(scene, geometry, occluders, g, &out->grids[g], err);
         if (st != CDL_OK) goto fail;
     }
     if (opts.cache_path) {
@@ -454,9 +519,10 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                                     &score);
         int ao_from_records = indirect && gm == CDL_METHOD_ICACHE;
         /* E_stderr holds the variance until the grid is done. */
+        cdl_direct_vertical_out vertical = {gs->Ez, gs->Esz};
         st = cdl_direct_solve_grid(&ctx, strategies, &gs->grid, (size_t)grid_key(spec->name), gs->E_direct, gs->E_stderr,
                                    ao_from_records ? NULL : gs->ao, threads,
-                                   &opts.progress, stage_name, &total, err);
+                                   &opts.progress, &vertical, stage_name, &total, err);
         out->compute_seconds += cdl_pool_now_seconds() - tc;
         if (st != CDL_OK) goto fail;
         /* Each light's strategy, and the routes its points took (exact
@@ -506,6 +572,9 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
             if (!indirect) gs->E_indirect[i] = 0.0;
             gs->E[i] = gs->E_direct[i] + gs->E_indirect[i];
             gs->E_stderr[i] = sqrt(var);
+            /* Luminance of a Lambertian surface under illuminance E: L = rho E / pi
+             * (its exitance rho E spread as pi L over the hemisphere). */
+            if (gs->L) gs->L[i] = gs->rho[i] * gs->E[i] / CDL_PI;
         }
         st = check_finite(scene, &lights, g, gs, err);
         if (st != CDL_OK) goto fail;
@@ -539,6 +608,23 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         out->records = ic_stats.records;
     }
     out->rays = total.rays;
+    for (size_t g = 0; g < scene->grid_count; ++g) {
+        const cdl_grid_solution *gs = &out->grids[g];
+        if (gs->edge_point_count == 0) continue;
+        cdl_vec3 q = gs->grid.points[gs->first_edge_point];
+        st = cdl_solution_add_warning(
+            out, err,
+            "grid '%s': %zu point%s lie%s where two surfaces meet (the first is point %zu at (%.9g, %.9g, %.9g)); a "
+            "surface through a point does not say which side the point is on: each reports the limit from the side "
+            "its grid is meant for (the inside of a box, the side a surface's front faces); move such points off the "
+            "edge if another side is meant (summary.json: edge_points)",
+            scene->grids[g].name, gs->edge_point_count, gs->edge_point_count == 1 ? "" : "s",
+            gs->edge_point_count == 1 ? "s" : "", gs->first_edge_point, q.x, q.y, q.z);
+        if (st != CDL_OK) goto fail;
+    }
+    st = cdl_solve_check_lights(scene, &ctx, out, err);
+    if (st != CDL_OK) goto fail;
+    cdl_solve_sum_power(scene, &lights, &out->power);
     if (opts.cache_path) {
         if (!cache.reused) {
             st = cache_save(&cache, scene, out, records, err);

@@ -151,7 +151,7 @@ static cdl_status solve_into(const cdl_scene *scene, cdl_method method, double t
     cdl_status st = cdl_solution_prepare_folder(dir, err);
     if (st == CDL_OK) st = cdl_bench_solve_rung(scene, method, target, threads, sol, err);
     if (st != CDL_OK) return st;
-    st = cdl_solution_write(scene, sol, dir, cdl_default_ocio_config(), err);
+    st = cdl_solution_write(scene, sol, dir, NULL, err);
     if (st != CDL_OK) cdl_solution_release(sol);
     return st;
 }

@@ -17,12 +17,17 @@ static void print_help(FILE *out)
           "Computes illuminance in lux on every calculation grid of the scene and\n"
           "writes, into OUTDIR (created when missing), for each grid NAME:\n"
           "  NAME.csv   one row per point: x,y,z,nx,ny,nz,E_lx,E_direct_lx,\n"
-          "             E_indirect_lx,E_stderr_lx (and AO when the grid asks for it)\n"
+          "             E_indirect_lx,E_stderr_lx, then area_m2 (polygon grids) and\n"
+          "             the outputs the grid asks for: AO, Ez_lx, Esz_lx, L_cd_m2\n"
           "  NAME.exr   rect and polygon grids: float lux maps (E, E_direct,\n"
           "             E_indirect, E_stderr, mask) with the solver settings\n"
-          "  NAME.png   rect and polygon grids: false-colour map with a lux legend\n"
-          "and summary.json (Em, Emin, Emax, U0, Ud per grid; method, settings,\n"
-          "time, rays, and the plan: what was modelled and why).\n"
+          "  NAME.png   rect and polygon grids: false-colour map titled with the grid's\n"
+          "             name, Em, Emin, Emax and U0, axes in metres (+x/+y where the\n"
+          "             grid runs along them) and a lux legend (linear; --map-scale log)\n"
+          "and summary.json (Em, Emin, Emax, U0, Ud per grid, and of each extra\n"
+          "output; installed power and W/m2 when the luminaire files give their\n"
+          "input watts; method, settings, time, rays, the plan: what was modelled\n"
+          "and why; warnings: whatever lit nothing, each also on stderr).\n"
           "Every file is written to a temporary name and renamed when complete.\n"
           "\n"
           "Methods (scene \"solver\".\"method\"): direct computes direct light only,\n"
@@ -57,6 +62,14 @@ static void print_help(FILE *out)
           "                        does not exist, gather the records and write them to\n"
           "                        FILE (atomically) after the solve. --threads, -o and\n"
           "                        --ocio do not matter. summary.json: plan.cache.reused\n"
+          "  --strict              refuse, with exit status 1 and no results, a solve that\n"
+          "                        warns: a luminaire that adds nothing to any grid (facing\n"
+          "                        away, above the ceiling, outside the room, millimetres\n"
+          "                        typed as metres), a grid at 0 lx everywhere, a scene\n"
+          "                        without light, points where two surfaces meet\n"
+          "  --map-scale linear|log  the PNG maps' lux scale (default linear: from 0, or\n"
+          "                        from the grid's 2nd percentile where nearly all of it\n"
+          "                        is bright, to the maximum; log: 1-2-5 decades)\n"
           "  --quiet               no progress on stderr\n"
           "\n"
           "exit status: 0 success, 1 bad scene, input file or output folder (not a\n"
@@ -103,6 +116,8 @@ static int run(int argc, char **argv)
         {"ocio", 0, 1, 0, NULL},
         {"quiet", 'q', 0, 0, NULL},
         {"cache", 0, 1, 0, NULL},
+        {"strict", 0, 0, 0, NULL},
+        {"map-scale", 0, 1, 0, NULL},
     };
     const size_t nopts = sizeof opts / sizeof opts[0];
     cdl_cli_result args;
@@ -134,6 +149,16 @@ static int run(int argc, char **argv)
         }
         so.cache_path = cache->value;
     }
+    int log_scale = 0;
+    cdl_cli_option *scale = cdl_cli_find(opts, nopts, "map-scale");
+    if (scale->present) {
+        if (strcmp(scale->value, "log") != 0 && strcmp(scale->value, "linear") != 0) {
+            fprintf(stderr, "candela solve: --map-scale: expected linear or log, found '%s'\n"
+                            "(see 'candela solve --help')\n", scale->value);
+            return CDL_EXIT_USAGE;
+        }
+        log_scale = strcmp(scale->value, "log") == 0;
+    }
     progress_state shown = {-1.0, NULL};
     if (!cdl_cli_find(opts, nopts, "quiet")->present && isatty(STDERR_FILENO)) {
         so.progress.fn = progress;
@@ -161,35 +186,48 @@ static int run(int argc, char **argv)
     }
     cdl_solution sol;
     st = cdl_solve_scene(scene, &so, &sol, &err);
+    int strict = cdl_cli_find(opts, nopts, "strict")->present;
     if (st == CDL_OK) {
-        st = cdl_solution_write(scene, &sol, out_opt->value, ocio, &err);
+        /* No silent zeros: every warning on stderr; --strict refuses them
+         * before any result is written. */
+        for (size_t w = 0; w < sol.warning_count; ++w)
+            fprintf(stderr, "candela solve: %s: %s\n", strict ? "error" : "warning", sol.warnings[w]);
+        if (strict && sol.warning_count > 0) {
+            st = cdl_error_set(&err, CDL_ERR_INPUT,
+                               "%s: %zu warning%s, refused under --strict (see above); no results written",
+                               scene->path, sol.warning_count, sol.warning_count == 1 ? "" : "s");
+        }
+    }
+    if (st == CDL_OK) {
+        cdl_solution_write_options wo = CDL_SOLUTION_WRITE_OPTIONS_DEFAULT;
+        wo.ocio_config = ocio;
+        wo.map_log_scale = log_scale;
+        st = cdl_solution_write(scene, &sol, out_opt->value, &wo, &err);
         if (st == CDL_OK) {
             for (size_t g = 0; g < sol.grid_count; ++g) {
-                const cdl_grid_solution *gs = &sol.grids[g];
-                cdl_grid_result r = {scene->grids[g].name, &gs->grid, gs->E, gs->E_direct, gs->E_indirect,
-                                     gs->E_stderr, gs->ao};
+                cdl_grid_result r;
+                cdl_grid_solution_result(&sol.grids[g], &scene->grids[g], &r);
                 cdl_grid_stats s;
                 cdl_grid_result_stats(&r, &s);
-                printf("%-16s %6zu points  Em %10.4g lx  Emin %10.4g lx  Emax %10.4g lx  U0 %.3f  Ud %.3f\n",
-                       r.name, s.count, s.E_avg_lx, s.E_min_lx, s.E_max_lx, s.U0, s.Ud);
-                if (gs->edge_point_count > 0) {
-                    cdl_vec3 q = gs->grid.points[gs->first_edge_point];
-                    fprintf(stderr,
-                            "candela solve: warning: grid '%s': %zu point%s lie%s where two surfaces meet (the first "
-                            "is point %zu at (%.9g, %.9g, %.9g)); a surface through a point does not say which side "
-                            "the point is on: each reports the limit from the side its grid is meant for (the "
-                            "inside of a box, the side a surface's front faces); move such points off the edge if "
-                            "another side is meant (summary.json: edge_points)\n",
-                            r.name, gs->edge_point_count, gs->edge_point_count == 1 ? "" : "s",
-                            gs->edge_point_count == 1 ? "s" : "", gs->first_edge_point, q.x, q.y, q.z);
-                }
+                printf("%-16s %6zu points  Em %10.4g lx  Emin %10.4g lx  Emax %10.4g lx  U0 %.3f  Ud %.3f", r.name,
+                       s.count, s.E_avg_lx, s.E_min_lx, s.E_max_lx, s.U0, s.Ud);
+                if (r.Ez) printf("  Ez %.4g lx", s.Ez.avg);
+                if (r.Esz) printf("  Esz %.4g lx", s.Esz.avg);
+                if (r.L) printf("  L %.4g cd/m2", s.L.avg);
+                printf("\n");
             }
             printf("method %s, %.3f s, %llu rays; results in %s\n", cdl_method_name(sol.method), sol.seconds,
                    (unsigned long long)sol.rays, out_opt->value);
+            if (sol.power.luminaires_counted > 0)
+                printf("installed power %.6g W (%zu luminaire%s%s)\n", sol.power.installed_w,
+                       sol.power.luminaires_counted, sol.power.luminaires_counted == 1 ? "" : "s",
+                       sol.power.luminaires_without_watts ? ", others without a wattage" : "");
             if (so.cache_path)
                 printf("irradiance cache %s: %s\n", so.cache_path,
                        sol.cache_reused ? "records read from it, none gathered" : "records gathered and written to it");
         }
+        cdl_solution_release(&sol);
+    } else if (sol.grids || sol.warnings) {
         cdl_solution_release(&sol);
     }
     if (st != CDL_OK) {

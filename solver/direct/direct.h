@@ -177,6 +177,33 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
                                         double *variance, cdl_direct_sample_stats *stats,
                                         cdl_direct_scratch *scratch, cdl_error *err);
 
+/* ---- vertical illuminance (direct_vertical.c) ----------------------------- */
+
+/* A facing direction needs a horizontal part of the normal at least this long. */
+#define CDL_DIRECT_FACING_MIN 1e-6
+
+/* One light's cylindrical E_z = E_n sin(theta) / pi and semicylindrical
+ * E_sz = E_n sin(theta) (1 + cos alpha) / pi, in lux, from its illuminance
+ * E_normal on the plane facing it and the unit direction towards it
+ * (theta from the vertical +z; alpha between its horizontal part and the
+ * unit horizontal `facing`). */
+void cdl_vertical_illuminance_from_light(double E_normal, cdl_vec3 to_light, cdl_vec3 facing, double *Ez,
+                                         double *Esz);
+
+/* The horizontal direction a semicylinder at a point of normal n faces:
+ * n's horizontal part, made unit. 0 when n is (within
+ * CDL_DIRECT_FACING_MIN) vertical and so faces no horizontal direction. */
+int cdl_direct_facing_direction(cdl_vec3 n, cdl_vec3 *facing);
+
+/* Cylindrical and semicylindrical illuminance (lux) at p from the delta
+ * lights among `active` (NULL: all), each shadowed as for E (n: the
+ * point's normal, for its rays). Lights of other strategies are skipped:
+ * the caller refuses these outputs when such lights are present. Either
+ * output may be NULL. */
+void cdl_direct_vertical_point(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
+                               const uint32_t *active, size_t active_count, cdl_vec3 p, cdl_vec3 n, cdl_vec3 facing,
+                               double *Ez, double *Esz, cdl_direct_sample_stats *stats);
+
 /* Cosine-weighted unoccluded fraction of the hemisphere about n at p. */
 double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
                                     cdl_direct_sample_stats *stats);

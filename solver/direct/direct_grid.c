@@ -21,6 +21,7 @@ typedef struct grid_job {
     const cdl_grid *grid;
     size_t grid_index;
     double *E, *variance, *ao;
+    const cdl_direct_vertical_out *vertical;
 } grid_job;
 
 typedef struct grid_worker {
@@ -64,13 +65,21 @@ static cdl_status solve_chunk(void *shared, void *local, size_t start, size_t en
         for (size_t i = start; i < end; ++i)
             job->ao[i] = cdl_direct_ambient_occlusion(job->ctx, streams[i - start], at[i - start], grid->normals[i],
                                                       &w->stats);
+    const cdl_direct_vertical_out *v = job->vertical;
+    if (v && (v->Ez || v->Esz))
+        for (size_t i = start; i < end; ++i) {
+            cdl_vec3 facing = cdl_vec3_make(1, 0, 0);
+            cdl_direct_facing_direction(grid->normals[i], &facing);
+            cdl_direct_vertical_point(job->ctx, job->strategies, w->active, active, at[i - start], grid->normals[i],
+                                      facing, v->Ez ? &v->Ez[i] : NULL, v->Esz ? &v->Esz[i] : NULL, &w->stats);
+        }
     return CDL_OK;
 }
 
 cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
                                  const cdl_grid *grid, size_t grid_index, double *E, double *variance, double *ao,
-                                 int threads, const cdl_progress_sink *progress, const char *stage,
-                                 cdl_direct_sample_stats *stats, cdl_error *err)
+                                 int threads, const cdl_progress_sink *progress, const cdl_direct_vertical_out *vertical,
+                                 const char *stage, cdl_direct_sample_stats *stats, cdl_error *err)
 {
     if (threads < 1) threads = 1;
     grid_worker *workers = calloc((size_t)threads, sizeof *workers);
@@ -92,7 +101,7 @@ cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_
         workers[i].active = active + (size_t)i * (ctx->light_count + 1);
         workers[i].stats.routes = routes ? routes + (size_t)i * (ctx->light_count + 1) : NULL;
     }
-    grid_job job = {ctx, strategies, grid, grid_index, E, variance, ao};
+    grid_job job = {ctx, strategies, grid, grid_index, E, variance, ao, vertical};
     cdl_pool_task task = {.count = grid->count,
                           .chunk = CHUNK,
                           .run = solve_chunk,

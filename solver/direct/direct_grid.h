@@ -19,13 +19,21 @@
  * per-point random number derives from). */
 uint64_t cdl_direct_point_stream(size_t grid_index, size_t index);
 
+/* Where cylindrical and semicylindrical illuminance go (each NULL when not
+ * asked for); NULL for none. Semicylinders face each point's normal's
+ * horizontal part (cdl_direct_facing_direction; the caller checks there is one). */
+typedef struct cdl_direct_vertical_out {
+    double *Ez, *Esz;
+} cdl_direct_vertical_out;
+
 /* Direct illuminance (lux) at every point of `grid`, the variance of each
- * value (0 where exact) and, when `ao` is not NULL, the ambient occlusion.
+ * value (0 where exact), when `ao` is not NULL the ambient occlusion, and
+ * the vertical illuminances `vertical` asks for.
  * Sample counts are added to *stats. */
 cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
                                  const cdl_grid *grid, size_t grid_index, double *E, double *variance, double *ao,
-                                 int threads, const cdl_progress_sink *progress, const char *stage,
-                                 cdl_direct_sample_stats *stats, cdl_error *err);
+                                 int threads, const cdl_progress_sink *progress, const cdl_direct_vertical_out *vertical,
+                                 const char *stage, cdl_direct_sample_stats *stats, cdl_error *err);
 
 /* Where p (receiving normal n) is evaluated: itself, or, where a surface
  * passes through it at an angle to its receiving plane, the point just off

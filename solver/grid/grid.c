@@ -70,6 +70,11 @@ static cdl_status build_rect(const cdl_grid_spec *spec, cdl_grid *g, cdl_error *
     g->raster_height = spec->nv;
     g->spacing_m = cdl_vec3_length(spec->u) / (double)nu;
     g->pixel_size_m = g->spacing_m;
+    g->raster_corner = spec->origin;
+    g->raster_right = cdl_vec3_normalize(spec->u);
+    g->raster_up = cdl_vec3_normalize(spec->v);
+    g->pixel_width_m = g->spacing_m;
+    g->pixel_height_m = cdl_vec3_length(spec->v) / (double)nv;
     return CDL_OK;
 }
 
@@ -172,6 +177,11 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
     cdl_mesh2d_release(&mesh);
     g->spacing_m = p;
     g->pixel_size_m = pixel;
+    double bottom = y1 - g->raster_height * pixel;
+    g->raster_corner = cdl_polygon_lift(&plane, x0, bottom);
+    g->raster_right = cdl_vec3_normalize(cdl_vec3_sub(cdl_polygon_lift(&plane, x0 + 1.0, bottom), g->raster_corner));
+    g->raster_up = cdl_vec3_normalize(cdl_vec3_sub(cdl_polygon_lift(&plane, x0, bottom + 1.0), g->raster_corner));
+    g->pixel_width_m = g->pixel_height_m = pixel;
     return CDL_OK;
 }
 

@@ -46,6 +46,13 @@ typedef struct cdl_grid {
     int raster_width, raster_height;
     int32_t *raster_index;    /* width x height, row-major, top row first; -1 outside */
     double pixel_size_m;      /* size of a raster pixel along the grid's first axis */
+    /* Where the raster lies in the world (for axes in metres on maps):
+     * raster_corner is the lower-left corner of the image (left edge of
+     * column 0, bottom edge of the last row); raster_right and raster_up
+     * the unit directions of increasing column and of decreasing row;
+     * each pixel pixel_width_m x pixel_height_m. */
+    cdl_vec3 raster_corner, raster_right, raster_up;
+    double pixel_width_m, pixel_height_m;
     double spacing_m;         /* polygon: spacing used; rect: |u|/nu */
 } cdl_grid;
 
@@ -55,6 +62,16 @@ double cdl_grid_auto_spacing(double longest_dimension_m);
 /* Place the points of a grid as its spec says (above) into *out; free them
  * with cdl_grid_release (NULL and an empty grid are fine). */
 cdl_status cdl_grid_build(const cdl_grid_spec *spec, cdl_grid *out, cdl_error *err);
+
+struct cdl_scene_geometry;
+struct cdl_occluder_index;
+/* The reflectance of the surface each point of the grid lies on
+ * (grid_surface.c), into rho[0 .. count) (owned by the caller).
+ * CDL_ERR_INPUT, with *missing the first point on no reflecting side of any
+ * surface, when there is none (the caller names the grid and the point);
+ * no message is set. Thread-safe for distinct outputs. */
+cdl_status cdl_grid_surface_reflectance(const cdl_grid *grid, const struct cdl_scene_geometry *geometry,
+                                        const struct cdl_occluder_index *occluders, double *rho, size_t *missing);
 void cdl_grid_release(cdl_grid *grid);
 
 #endif

@@ -1,8 +1,10 @@
 /* bitmap_font.h - a tiny 5 x 7 pixel font for legend labels in PNG maps.
  *
- * Glyphs for the digits, the lower-case letters, '.', '-', '_', '(', ')',
- * '%', '/', '<' and ' ': enough for legend labels such as "0.05 lx", "500 lx"
- * or "20k lx" and for the bench's plot ("wall time (s)"). Text is drawn into packed 8-bit
+ * Glyphs for the digits, the lower- and upper-case letters, '.', '-', '_',
+ * '(', ')', '%', '/', '<', '>', '=', '+', ':', ',', '[', ']' and ' ':
+ * enough for legend labels such as "0.05 lx", "500 lx" or "20k lx", map
+ * titles ("Em 500 lx  U0 0.61") and axes ("+x (m)"), and the bench's plot
+ * ("wall time (s)"). Text is drawn into packed 8-bit
  * RGB images (row-major, top row first), each font pixel as a scale x scale
  * square, clipped to the image. A character without a glyph is drawn as a
  * hollow box so that it shows rather than vanishes.

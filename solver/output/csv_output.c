@@ -38,24 +38,27 @@ cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *
     st = cdl_atomic_file_open(&file, path, err);
     if (st != CDL_OK) return st;
 
+    /* The fixed ten, then the extra columns present (DESIGN.md: area_m2
+     * for polygon grids, then the outputs the grid asked for). */
     const cdl_grid *grid = result->grid;
-    int with_ao = result->ao != NULL;
+    const struct {
+        const char *name;
+        const double *values;
+    } extra[] = {{"area_m2", result->area_m2}, {"AO", result->ao},    {"Ez_lx", result->Ez},
+                 {"Esz_lx", result->Esz},       {"L_cd_m2", result->L}};
+    enum { EXTRA = sizeof extra / sizeof extra[0] };
     fputs("x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx", file.fp);
-    fputs(with_ao ? ",AO\n" : "\n", file.fp);
+    for (int c = 0; c < EXTRA; ++c)
+        if (extra[c].values) fprintf(file.fp, ",%s", extra[c].name);
+    fputc('\n', file.fp);
     for (size_t i = 0; i < grid->count; ++i) {
         const cdl_vec3 p = grid->points[i], nrm = grid->normals[i];
-        double row[11] = {p.x,
-                          p.y,
-                          p.z,
-                          nrm.x,
-                          nrm.y,
-                          nrm.z,
-                          result->E[i],
-                          result->E_direct[i],
-                          result->E_indirect[i],
-                          result->E_stderr[i],
-                          with_ao ? result->ao[i] : 0.0};
-        write_row(file.fp, row, with_ao ? 11 : 10);
+        double row[10 + EXTRA] = {p.x,  p.y,         p.z,          nrm.x,        nrm.y,
+                                  nrm.z, result->E[i], result->E_direct[i], result->E_indirect[i], result->E_stderr[i]};
+        size_t n = 10;
+        for (int c = 0; c < EXTRA; ++c)
+            if (extra[c].values) row[n++] = extra[c].values[i];
+        write_row(file.fp, row, n);
     }
     /* commit checks the stream's error flag: a failed write above is reported there. */
     return cdl_atomic_file_commit(&file, err);

@@ -8,8 +8,11 @@
 
 #include "solver/scene/exr_image.h"
 
-enum { CH_E, CH_Y, CH_DIRECT, CH_INDIRECT, CH_STDERR, CH_MASK, CHANNELS };
-static const char *const channel_name[CHANNELS] = {"E", "Y", "E_direct", "E_indirect", "E_stderr", "mask"};
+/* The channels a result may have; the optional ones (Ez, Esz, L) are
+ * written only when given. */
+enum { CH_E, CH_Y, CH_DIRECT, CH_INDIRECT, CH_STDERR, CH_EZ, CH_ESZ, CH_L, CH_MASK, CHANNELS };
+static const char *const channel_name[CHANNELS] = {"E", "Y", "E_direct", "E_indirect", "E_stderr",
+                                                   "Ez", "Esz", "L", "mask"};
 
 /* A value that float cannot hold would become inf in the file. */
 static cdl_status check_float_range(const double *values, size_t n, const char *column, const char *path,
@@ -42,9 +45,10 @@ cdl_status cdl_grid_result_write_exr(const cdl_grid_result *result, const char *
     cdl_status st = cdl_grid_result_check_with_raster(result, path, err);
     if (st != CDL_OK) return st;
     const cdl_grid *grid = result->grid;
-    const double *source[CHANNELS] = {result->E, result->E, result->E_direct, result->E_indirect, result->E_stderr, NULL};
+    const double *source[CHANNELS] = {result->E,  result->E,   result->E_direct, result->E_indirect, result->E_stderr,
+                                      result->Ez, result->Esz, result->L,        NULL};
     for (int c = CH_E; c < CH_MASK && st == CDL_OK; ++c)
-        st = check_float_range(source[c], grid->count, channel_name[c], path, err);
+        if (source[c]) st = check_float_range(source[c], grid->count, channel_name[c], path, err);
     if (st == CDL_OK) st = check_attributes(attributes, attribute_count, path, err);
     if (st != CDL_OK) return st;
 
@@ -59,13 +63,17 @@ cdl_status cdl_grid_result_write_exr(const cdl_grid_result *result, const char *
     for (size_t p = 0; p < pixels; ++p) {
         int32_t idx = grid->raster_index[p];
         if (idx < 0) continue; /* outside: 0 in every channel, mask included */
-        for (int c = CH_E; c < CH_MASK; ++c) planes[(size_t)c * pixels + p] = (float)source[c][idx];
+        for (int c = CH_E; c < CH_MASK; ++c)
+            if (source[c]) planes[(size_t)c * pixels + p] = (float)source[c][idx];
         planes[(size_t)CH_MASK * pixels + p] = 1.0f;
     }
     cdl_exr_channel channels[CHANNELS];
+    int used = 0;
     for (int c = 0; c < CHANNELS; ++c) {
-        channels[c].name = channel_name[c];
-        channels[c].pixels = planes + (size_t)c * pixels;
+        if (c != CH_MASK && !source[c]) continue;
+        channels[used].name = channel_name[c];
+        channels[used].pixels = planes + (size_t)c * pixels;
+        ++used;
     }
     attrs[0].name = "units";
     attrs[0].value = "lx";
@@ -77,8 +85,8 @@ cdl_status cdl_grid_result_write_exr(const cdl_grid_result *result, const char *
     }
     /* cdl_exr_write goes through OpenEXR's temporary-file mode: the file
      * appears under its name only when complete. Its errors name the path. */
-    st = cdl_exr_write(path, grid->raster_width, grid->raster_height, channels, CHANNELS, attrs, attribute_count + 2,
-                       err);
+    st = cdl_exr_write(path, grid->raster_width, grid->raster_height, channels, (size_t)used, attrs,
+                       attribute_count + 2, err);
     free(planes);
     free(attrs);
     return st;

@@ -37,6 +37,12 @@ typedef struct cdl_grid_result {
     const double *E_indirect; /* lux */
     const double *E_stderr;   /* standard error of E, lux (0 where exact) */
     const double *ao;         /* NULL unless the grid asked for "ao"; [0, 1] */
+    /* Optional columns after the fixed ten, in this order when present: */
+    const double *area_m2;    /* the area each point stands for (polygon grids), m^2 */
+    const double *Ez;         /* cylindrical illuminance, lux ("cylindrical") */
+    const double *Esz;        /* semicylindrical illuminance, lux ("semicylindrical") */
+    const double *L;          /* luminance rho E / pi, cd/m^2 ("luminance") */
+    int map_log_scale;        /* NAME.png: 1 a logarithmic lux scale, 0 (default) linear (lux_scale.h) */
 } cdl_grid_result;
 
 /* Check a result before it is written to `path` (used in messages): grid and
@@ -47,8 +53,16 @@ cdl_status cdl_grid_result_check(const cdl_grid_result *result, const char *path
 /* The same, and the grid must have a raster (rect and polygon grids): for images. */
 cdl_status cdl_grid_result_check_with_raster(const cdl_grid_result *result, const char *path, cdl_error *err);
 
+/* Mean (area-weighted as Em), minimum, maximum and Min / mean of one
+ * quantity over a grid. */
+typedef struct cdl_value_stats {
+    double avg, min, max, U0;
+} cdl_value_stats;
+
 typedef struct cdl_grid_stats {
     size_t count;
+    double area_m2;           /* sum of the points' area weights (0 for points grids) */
+    cdl_value_stats Ez, Esz, L; /* of the optional columns given (zeros otherwise) */
     double E_avg_lx;          /* area-weighted mean (Em) */
     double E_min_lx;
     double E_max_lx;
@@ -68,7 +82,7 @@ typedef struct cdl_grid_stats {
 void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats);
 
 /* NAME.csv: header x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx
- * (plus ",AO" when ao is given), one row per point in grid order, "\n" line
+ * then, for those given, AO, area_m2, Ez_lx, Esz_lx, L_cd_m2; one row per point in grid order, "\n" line
  * ends. Each number is the shortest of "%.15g", "%.16g", "%.17g" that reads
  * back (strtod) as exactly the same double, so a closed-form result
  * survives the trip to text. Expects the "C" numeric locale (the library
@@ -82,6 +96,9 @@ cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *
  *   E_direct    lux
  *   E_indirect  lux
  *   E_stderr    lux
+ *   Ez          cylindrical illuminance, lux (when given)
+ *   Esz         semicylindrical illuminance, lux (when given)
+ *   L           luminance, cd/m^2 (when given)
  *   mask        1 inside the grid, 0 outside (outside pixels hold 0 in every channel)
  * String attributes units=lx, quantity=illuminance and each key/value given
  * (the solver's settings); a key may not repeat "units" or "quantity". A
@@ -94,16 +111,22 @@ cdl_status cdl_grid_result_write_exr(const cdl_grid_result *result, const char *
                                      size_t attribute_count, cdl_error *err);
 
 /* NAME.png (rect and polygon grids; a grid without a raster is refused): an
- * 8-bit sRGB image on a white background. Left, the false-colour map of E:
+ * 8-bit sRGB image on a white background, readable on its own. At the top
+ * the grid's name and "Em ... lx  Emin ... lx  Emax ... lx  U0 ..." (the
+ * statistics of cdl_grid_result_stats). Below, the false-colour map of E:
  * each raster pixel drawn as a square of `cell` image pixels (nearest
  * neighbour, the long side at least 400 pixels), pixels outside the grid
- * left white. Right, the legend: a colour bar (top = scale.hi, bottom =
- * scale.lo) in a black frame with ticks labelled in lux ("500 lx", "0.2 lx",
- * "20k lx") at 1-2-5 values, as many as fit without overlapping.
- * Colours: E maps to t = cdl_lux_scale_position (log scale between round
- * values bracketing the data, lux_scale.h), and (t, t, t) goes through the
- * OpenColorIO config `ocio_config` from colour space "linear" to display
- * "sRGB", view "False colour"; the result is rounded to 8 bits.
+ * left white, with axes in metres along its bottom and left edges (world
+ * coordinates where the edge runs along a world axis, then named "+x (m)",
+ * "-y (m)", ...; else distances from the corner, "u (m)" and "v (m)").
+ * Right, the legend: a colour bar (top = scale.hi, bottom = scale.lo) in a
+ * black frame with ticks labelled in lux, as many as fit without
+ * overlapping: on the linear scale (the default) at multiples of its tick,
+ * the bottom one "<=" when values lie below it; on the logarithmic scale
+ * (result->map_log_scale) at 1-2-5 values ("500 lx", "0.2 lx", "20k lx").
+ * Colours: E maps to t = cdl_lux_scale_position, and (t, t, t) goes through
+ * the OpenColorIO config `ocio_config` from colour space "linear" to
+ * display "sRGB", view "False colour"; the result is rounded to 8 bits.
  * A bad config is CDL_ERR_INPUT, prefixed with the PNG's path. */
 cdl_status cdl_grid_result_write_png(const cdl_grid_result *result, const char *path, const char *ocio_config,
                                      cdl_error *err);
@@ -111,6 +134,8 @@ cdl_status cdl_grid_result_write_png(const cdl_grid_result *result, const char *
 /* Where things sit in NAME.png, in image pixels (x right, y down). */
 typedef struct cdl_png_layout {
     cdl_lux_scale scale;      /* the lux range of the colours */
+    int title_y, stats_y;     /* top of the name's line and of the statistics' line (x = map_x) */
+    int axis_label_width;     /* room left of the map for the vertical axis' labels */
     int width, height;        /* the whole image */
     int map_x, map_y;         /* top-left corner of the map */
     int cell;                 /* raster pixel (c, r) covers x in [map_x + c cell, map_x + (c+1) cell) */

@@ -20,6 +20,28 @@ static void compensated_add(compensated_sum *s, double x)
     s->sum = t;
 }
 
+/* Mean of `values` weighted by the area each point stands for (as Em),
+ * minimum, maximum and min / mean (0 when the mean is 0). */
+static void value_stats(const double *values, const double *w, size_t n, cdl_value_stats *out)
+{
+    memset(out, 0, sizeof *out);
+    if (!values || n == 0) return;
+    compensated_sum weighted = {0.0, 0.0}, weight = {0.0, 0.0}, plain = {0.0, 0.0};
+    out->min = out->max = values[0];
+    for (size_t i = 0; i < n; ++i) {
+        out->min = fmin(out->min, values[i]);
+        out->max = fmax(out->max, values[i]);
+        compensated_add(&plain, values[i]);
+        if (w) {
+            compensated_add(&weighted, w[i] * values[i]);
+            compensated_add(&weight, w[i]);
+        }
+    }
+    double total = weight.sum + weight.carry;
+    out->avg = total > 0.0 ? (weighted.sum + weighted.carry) / total : (plain.sum + plain.carry) / (double)n;
+    out->U0 = out->avg != 0.0 ? out->min / out->avg : 0.0;
+}
+
 void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats)
 {
     memset(stats, 0, sizeof *stats);
@@ -53,6 +75,10 @@ void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats)
      * (DESIGN.md, summary.json); 0 when the denominator is 0. */
     stats->U0 = Em != 0.0 ? lo / Em : 0.0;
     stats->Ud = hi != 0.0 ? lo / hi : 0.0;
+    if (w && grid->raster_width > 0) stats->area_m2 = total_weight;
+    value_stats(result->Ez, total_weight > 0.0 ? w : NULL, n, &stats->Ez);
+    value_stats(result->Esz, total_weight > 0.0 ? w : NULL, n, &stats->Esz);
+    value_stats(result->L, total_weight > 0.0 ? w : NULL, n, &stats->L);
 
     if (!result->E_stderr) return;
     compensated_sum rel = {0.0, 0.0}, rel_weight = {0.0, 0.0};

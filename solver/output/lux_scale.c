@@ -2,6 +2,8 @@
 #include "solver/output/lux_scale.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static const int step_mantissa[3] = {1, 2, 5};
@@ -50,6 +52,8 @@ int cdl_lux_scale_step_at_or_above(cdl_illuminance E)
 static cdl_lux_scale make_scale(int lo_step, int hi_step)
 {
     cdl_lux_scale s;
+    memset(&s, 0, sizeof s);
+    s.kind = CDL_LUX_SCALE_LOG;
     s.lo_step = lo_step;
     s.hi_step = hi_step;
     s.lo = cdl_lux_scale_step_value(lo_step);
@@ -86,10 +90,68 @@ cdl_lux_scale cdl_lux_scale_for_values(const double *E_lx, size_t count)
     return make_scale(lo, hi);
 }
 
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+cdl_lux_scale cdl_lux_scale_linear_for_values(const double *E_lx, size_t count)
+{
+    cdl_lux_scale s;
+    memset(&s, 0, sizeof s);
+    s.kind = CDL_LUX_SCALE_LINEAR;
+    double *sorted = malloc((count ? count : 1) * sizeof *sorted);
+    size_t n = 0;
+    for (size_t i = 0; sorted && i < count; ++i)
+        if (isfinite(E_lx[i])) sorted[n++] = E_lx[i];
+    double max = 0.0, low = 0.0;
+    if (n > 0) {
+        qsort(sorted, n, sizeof *sorted, compare_doubles);
+        max = sorted[n - 1];
+        /* The 2nd percentile, leaving out at least the darkest point of a
+         * grid of ten or more: one dark corner must not set the scale. */
+        size_t k = n >= 10 ? (size_t)fmax(1.0, floor(0.02 * (double)n)) : 0;
+        low = sorted[k];
+    }
+    free(sorted);
+    if (!(max > 0.0)) {
+        s.lo = cdl_lux(0.0);
+        s.hi = cdl_lux(10.0);
+        s.tick_lx = 2.0;
+        return s;
+    }
+    double lo = low >= 0.5 * max ? low : 0.0;
+    /* About six intervals of a 1-2-5 step. */
+    double raw = (max - lo) / 6.0;
+    if (!(raw > 0.0)) raw = max / 6.0;
+    double tick = cdl_lux_scale_step_value(cdl_lux_scale_step_at_or_above(cdl_lux(raw))).lx;
+    s.tick_lx = tick;
+    s.lo = cdl_lux(floor(lo / tick) * tick);
+    double hi = ceil(max / tick) * tick;
+    if (!(hi > s.lo.lx)) hi = s.lo.lx + tick;
+    s.hi = cdl_lux(hi);
+    for (size_t i = 0; i < count; ++i)
+        if (E_lx[i] < s.lo.lx) s.clipped = 1;
+    return s;
+}
+
+size_t cdl_lux_scale_value_label(double lx, char *buf, size_t size)
+{
+    /* Six digits: multiples of a 1-2-5 tick print without binary noise. */
+    int n = fabs(lx) >= 10000.0 ? snprintf(buf, size, "%.6gk lx", lx / 1000.0) : snprintf(buf, size, "%.6g lx", lx);
+    return n > 0 ? (size_t)n : 0;
+}
+
 double cdl_lux_scale_position(const cdl_lux_scale *scale, cdl_illuminance E)
 {
     if (!(E.lx > scale->lo.lx)) return 0.0;
     if (E.lx >= scale->hi.lx) return 1.0;
+    if (scale->kind == CDL_LUX_SCALE_LINEAR) {
+        /* Linear map: equal differences of illuminance take equal distances. */
+        double t = (E.lx - scale->lo.lx) / (scale->hi.lx - scale->lo.lx);
+        return t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+    }
     /* Logarithmic map: equal ratios of illuminance take equal distances. */
     double t = log(E.lx / scale->lo.lx) / log(scale->hi.lx / scale->lo.lx);
     return t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;

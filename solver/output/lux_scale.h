@@ -1,4 +1,13 @@
-/* lux_scale.h - the logarithmic lux scale of false-colour maps.
+/* lux_scale.h - the lux scales of false-colour maps: linear (the default) or logarithmic.
+ *
+ * Linear (cdl_lux_scale_linear_for_values): from 0, or, where nearly all
+ * the grid is bright (its 2nd-percentile value at least half its maximum),
+ * from that value rounded down, so a uniform field shows its variation and
+ * a single dark point (a 0 lx corner) does not flatten the rest; to the
+ * maximum rounded up; ticks at a 1-2-5 step giving about six intervals.
+ * Values below the bottom show in the bottom colour (the legend says "<=").
+ *
+ * Logarithmic, on request:
  *
  * A map shows illuminance on a log scale, because the eye and lighting
  * practice both judge light in ratios: the step from 100 to 200 lx matters as
@@ -26,10 +35,22 @@
  * the bottom of the range show in the bottom colour. */
 #define CDL_LUX_SCALE_MAX_STEPS 12
 
+typedef enum cdl_lux_scale_kind { CDL_LUX_SCALE_LOG, CDL_LUX_SCALE_LINEAR } cdl_lux_scale_kind;
+
 typedef struct cdl_lux_scale {
-    int lo_step, hi_step;     /* lo_step < hi_step */
-    cdl_illuminance lo, hi;   /* value(lo_step), value(hi_step) */
+    cdl_lux_scale_kind kind;
+    int lo_step, hi_step;     /* log: lo_step < hi_step */
+    cdl_illuminance lo, hi;   /* log: value(lo_step), value(hi_step); linear: the ends, multiples of tick */
+    double tick_lx;           /* linear: distance between ticks, a 1-2-5 value */
+    int clipped;              /* linear: some value lies below lo */
 } cdl_lux_scale;
+
+/* The linear scale for `count` illuminances (finite values; see above).
+ * All zero or empty: 0 .. 10 lx. */
+cdl_lux_scale cdl_lux_scale_linear_for_values(const double *E_lx, size_t count);
+
+/* A linear scale's label of `lx`: "480 lx", "0.25 lx", "12.5k lx" (k from 10 000 lx). */
+size_t cdl_lux_scale_value_label(double lx, char *buf, size_t size);
 
 /* The 1-2-5 value of step k (clamped to the step limits). */
 cdl_illuminance cdl_lux_scale_step_value(int step);
@@ -48,8 +69,9 @@ int cdl_lux_scale_step_at_or_above(cdl_illuminance E);
  *   with no positive value (all zero, or empty) it is 1 .. 10 lx. */
 cdl_lux_scale cdl_lux_scale_for_values(const double *E_lx, size_t count);
 
-/* Position of E on the scale in [0, 1]: log(E / lo) / log(hi / lo), clamped;
- * 0 for E <= lo (including zero and negative values). */
+/* Position of E on the scale in [0, 1]: log(E / lo) / log(hi / lo), or
+ * (E - lo) / (hi - lo) on a linear scale, clamped; 0 for E <= lo
+ * (including zero and negative values). */
 double cdl_lux_scale_position(const cdl_lux_scale *scale, cdl_illuminance E);
 
 /* The legend label of step k: "500 lx", "0.05 lx", "20k lx" (k = thousands,

@@ -5,6 +5,7 @@
 #include <png.h>
 #include <setjmp.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -25,6 +26,7 @@ enum {
     FONT_SCALE = 2,
     LABEL_HEIGHT = CDL_BITMAP_FONT_GLYPH_HEIGHT * FONT_SCALE,
     LABEL_SPACING = LABEL_HEIGHT + 10, /* least distance between two labelled ticks */
+    TITLE_GAP = 8,                     /* between the lines of text above and below the map */
     MAX_IMAGE_PIXELS = 1 << 26        /* 64 Mpixel: a larger map is a caller's mistake */
 };
 
@@ -36,10 +38,27 @@ static int clamp_int(int v, int lo, int hi)
     return v < lo ? lo : v > hi ? hi : v;
 }
 
+/* The legend's label of a linear scale's value (the bottom one "<=" when clipped). */
+static void linear_label(const cdl_lux_scale *scale, double lx, int bottom, char *buf, size_t size)
+{
+    char v[48];
+    cdl_lux_scale_value_label(lx, v, sizeof v);
+    snprintf(buf, size, "%s%s", bottom && scale->clipped ? "<=" : "", v);
+}
+
 static int max_label_width(const cdl_lux_scale *scale)
 {
     char label[64];
     int widest = 0;
+    if (scale->kind == CDL_LUX_SCALE_LINEAR) {
+        long ticks = lround((scale->hi.lx - scale->lo.lx) / scale->tick_lx);
+        for (long m = 0; m <= ticks; ++m) {
+            linear_label(scale, scale->lo.lx + (double)m * scale->tick_lx, m == 0, label, sizeof label);
+            int w = cdl_bitmap_font_text_width(label, FONT_SCALE);
+            if (w > widest) widest = w;
+        }
+        return widest;
+    }
     for (int k = scale->lo_step; k <= scale->hi_step; ++k) {
         cdl_lux_scale_step_label(k, label, sizeof label);
         int w = cdl_bitmap_font_text_width(label, FONT_SCALE);
@@ -48,25 +67,118 @@ static int max_label_width(const cdl_lux_scale *scale)
     return widest;
 }
 
+/* ---- axes in metres ------------------------------------------------------------- */
+
+/* One edge of the map as an axis: its world direction's name when it runs
+ * along a world axis ("+x"), and the coordinate its ticks count from. */
+typedef struct map_axis {
+    char name[16];            /* "+x (m)" or "u (m)" */
+    double start;             /* the coordinate at the map's lower-left corner */
+    double sign;              /* +1 or -1: how the coordinate grows along the edge */
+    double length_m;          /* the edge's length */
+    double step_m;            /* between ticks: a 1-2-5 value */
+} map_axis;
+
+static void axis_describe(map_axis *a, cdl_vec3 dir, cdl_vec3 corner, double length_m, const char *fallback,
+                          double min_ticks_apart_m)
+{
+    const double c[3] = {dir.x, dir.y, dir.z}, o[3] = {corner.x, corner.y, corner.z};
+    snprintf(a->name, sizeof a->name, "%s (m)", fallback);
+    a->start = 0.0;
+    a->sign = 1.0;
+    for (int k = 0; k < 3; ++k)
+        if (fabs(c[k]) > 1.0 - 1e-9) {
+            snprintf(a->name, sizeof a->name, "%cx (m)", c[k] > 0.0 ? '+' : '-');
+            a->name[1] = (char)('x' + k);
+            a->start = o[k];
+            a->sign = c[k] > 0.0 ? 1.0 : -1.0;
+        }
+    a->length_m = length_m;
+    double raw = fmax(min_ticks_apart_m, length_m / 8.0);
+    a->step_m = raw > 0.0 ? cdl_lux_scale_step_value(cdl_lux_scale_step_at_or_above(cdl_lux(raw))).lx : 1.0;
+}
+
+/* Tick values along an axis: the multiples of step within the edge, as
+ * coordinates; calls tick(user, distance along the edge, value). */
+static void axis_ticks(const map_axis *a, void (*tick)(void *, double, double), void *user)
+{
+    double first = a->sign > 0 ? ceil(a->start / a->step_m - 1e-9) : floor(a->start / a->step_m + 1e-9);
+    for (int m = 0; m < 1000; ++m) {
+        double value = (first + a->sign * m) * a->step_m;
+        double along = (value - a->start) * a->sign;
+        if (along > a->length_m * (1.0 + 1e-9)) break;
+        /* Print 0 rather than -0 for a coordinate of zero. */
+        tick(user, along, value == 0.0 ? 0.0 : value);
+    }
+}
+
+static void axes_of(const cdl_grid *grid, const cdl_png_layout *L, map_axis *h, map_axis *v)
+{
+    double w_m = grid->raster_width * grid->pixel_width_m, h_m = grid->raster_height * grid->pixel_height_m;
+    /* Labels need about 60 pixels apart across, 30 up. */
+    double mpp_x = grid->pixel_width_m / L->cell, mpp_y = grid->pixel_height_m / L->cell;
+    axis_describe(h, grid->raster_right, grid->raster_corner, w_m, "u", 60.0 * mpp_x);
+    axis_describe(v, grid->raster_up, grid->raster_corner, h_m, "v", 30.0 * mpp_y);
+}
+
+static void tick_label(double value, char *buf, size_t size)
+{
+    snprintf(buf, size, "%.6g", value);
+}
+
+typedef struct widest_tick {
+    int width;
+} widest_tick;
+
+static void measure_tick(void *user, double along, double value)
+{
+    (void)along;
+    widest_tick *w = user;
+    char label[32];
+    tick_label(value, label, sizeof label);
+    int width = cdl_bitmap_font_text_width(label, FONT_SCALE);
+    if (width > w->width) w->width = width;
+}
+
 void cdl_grid_result_png_layout(const cdl_grid_result *result, cdl_png_layout *layout)
 {
     const cdl_grid *grid = result->grid;
     memset(layout, 0, sizeof *layout);
-    layout->scale = cdl_lux_scale_for_values(result->E, grid->count);
+    layout->scale = result->map_log_scale ? cdl_lux_scale_for_values(result->E, grid->count)
+                                          : cdl_lux_scale_linear_for_values(result->E, grid->count);
     int long_side = grid->raster_width > grid->raster_height ? grid->raster_width : grid->raster_height;
     if (long_side <= 0) long_side = 1;
     layout->cell = (MAP_LONG_SIDE + long_side - 1) / long_side;
     if (layout->cell < 1) layout->cell = 1;
     int map_w = grid->raster_width * layout->cell, map_h = grid->raster_height * layout->cell;
-    layout->map_x = MARGIN;
-    layout->map_y = MARGIN;
+    /* Title: the name, then the statistics; then the vertical axis' name. */
+    layout->title_y = MARGIN;
+    layout->stats_y = layout->title_y + LABEL_HEIGHT + TITLE_GAP;
+    int axis_name_y = layout->stats_y + LABEL_HEIGHT + TITLE_GAP;
+    map_axis h, v;
+    axes_of(grid, layout, &h, &v); /* reads the cell size */
+    widest_tick w = {0};
+    axis_ticks(&v, measure_tick, &w);
+    layout->axis_label_width = w.width + TICK_LENGTH + TICK_TO_LABEL;
+    layout->map_x = MARGIN + layout->axis_label_width;
+    layout->map_y = axis_name_y + LABEL_HEIGHT + TITLE_GAP + LABEL_HEIGHT / 2; /* clear of the top tick's label */
     layout->bar_width = BAR_WIDTH;
     layout->bar_height = clamp_int(map_h, BAR_MIN_HEIGHT, BAR_MAX_HEIGHT);
     layout->bar_x = layout->map_x + map_w + MAP_TO_BAR + 1; /* + 1: the frame */
-    layout->bar_y = MARGIN;
+    layout->bar_y = layout->map_y;
     layout->label_x = layout->bar_x + BAR_WIDTH + 1 + TICK_LENGTH + TICK_TO_LABEL;
     layout->width = layout->label_x + max_label_width(&layout->scale) + MARGIN;
-    layout->height = MARGIN + (map_h > layout->bar_height ? map_h : layout->bar_height) + MARGIN;
+    /* Below the map: ticks, their labels, the horizontal axis' name. */
+    int below = map_h + TICK_LENGTH + TICK_TO_LABEL + LABEL_HEIGHT + TITLE_GAP + LABEL_HEIGHT;
+    layout->height = layout->map_y + (below > layout->bar_height ? below : layout->bar_height) + MARGIN;
+    /* The title may be wider than the map and legend. */
+    char title[256];
+    snprintf(title, sizeof title, "%s", result->name ? result->name : "");
+    int title_w = MARGIN + cdl_bitmap_font_text_width(title, FONT_SCALE) + MARGIN;
+    int stats_w = MARGIN + cdl_bitmap_font_text_width("Em 0000000 lx  Emin 0000000 lx  Emax 0000000 lx  U0 0.000",
+                                                      FONT_SCALE) + MARGIN;
+    if (title_w > layout->width) layout->width = title_w;
+    if (stats_w > layout->width) layout->width = stats_w;
 }
 
 static void fill_rect(uint8_t *img, int width, int x0, int y0, int w, int h, const uint8_t colour[3])
@@ -105,8 +217,25 @@ static int bar_row(const cdl_png_layout *L, double t)
 
 /* Ticks at 1-2-5 values, the ends first, then decades, fives and twos, each
  * kept only if its label clears those already placed. */
+static void draw_linear_ticks(uint8_t *img, const cdl_png_layout *L);
+
+/* A tick at row y of the bar with its label, unless the label would come
+ * closer than LABEL_SPACING to one already placed (placed_y[0 .. *placed)). */
+static void place_tick(uint8_t *img, const cdl_png_layout *L, int y, const char *label, int *placed_y, int *placed)
+{
+    for (int j = 0; j < *placed; ++j)
+        if (abs(placed_y[j] - y) < LABEL_SPACING) return;
+    placed_y[(*placed)++] = y;
+    fill_rect(img, L->width, L->bar_x + L->bar_width + 1, y, TICK_LENGTH, 1, black);
+    cdl_bitmap_font_draw_text(img, L->width, L->height, L->label_x, y - LABEL_HEIGHT / 2, label, FONT_SCALE, black);
+}
+
 static void draw_ticks(uint8_t *img, const cdl_png_layout *L)
 {
+    if (L->scale.kind == CDL_LUX_SCALE_LINEAR) {
+        draw_linear_ticks(img, L);
+        return;
+    }
     int rank_count = L->scale.hi_step - L->scale.lo_step + 1;
     int placed_y[CDL_LUX_SCALE_MAX_STEP - CDL_LUX_SCALE_MIN_STEP + 1];
     int placed = 0;
@@ -118,19 +247,92 @@ static void draw_ticks(uint8_t *img, const cdl_png_layout *L)
             int kind = ((k % 3) + 3) % 3;
             if (pass == 0 ? !is_end : (is_end || kind != mantissa_order[pass - 1])) continue;
             double t = cdl_lux_scale_position(&L->scale, cdl_lux_scale_step_value(k));
-            int y = bar_row(L, t);
-            int clear = 1;
-            for (int j = 0; j < placed; ++j)
-                if (abs(placed_y[j] - y) < LABEL_SPACING) clear = 0;
-            if (!clear) continue;
-            placed_y[placed++] = y;
-            fill_rect(img, L->width, L->bar_x + L->bar_width + 1, y, TICK_LENGTH, 1, black);
             char label[64];
             cdl_lux_scale_step_label(k, label, sizeof label);
-            cdl_bitmap_font_draw_text(img, L->width, L->height, L->label_x, y - LABEL_HEIGHT / 2, label, FONT_SCALE,
-                                      black);
+            place_tick(img, L, bar_row(L, t), label, placed_y, &placed);
         }
     }
+}
+
+/* Linear ticks at multiples of the scale's tick: the ends first, then the
+ * others from the bottom, each kept if its label clears those placed. */
+static void draw_linear_ticks(uint8_t *img, const cdl_png_layout *L)
+{
+    long count = lround((L->scale.hi.lx - L->scale.lo.lx) / L->scale.tick_lx);
+    int placed_y[64];
+    int placed = 0;
+    for (int pass = 0; pass < 2; ++pass)
+        for (long m = 0; m <= count && placed < 64; ++m) {
+            int is_end = m == 0 || m == count;
+            if (pass == 0 ? !is_end : is_end) continue;
+            double lx = L->scale.lo.lx + (double)m * L->scale.tick_lx;
+            int y = m == count ? L->bar_y : bar_row(L, cdl_lux_scale_position(&L->scale, cdl_lux(lx)));
+            char label[64];
+            linear_label(&L->scale, lx, m == 0, label, sizeof label);
+            place_tick(img, L, y, label, placed_y, &placed);
+        }
+}
+
+/* ---- title and axes ------------------------------------------------------------- */
+
+typedef struct axis_draw {
+    uint8_t *img;
+    const cdl_png_layout *L;
+    const cdl_grid *grid;
+    int horizontal;
+} axis_draw;
+
+static void draw_tick(void *user, double along, double value)
+{
+    axis_draw *a = user;
+    const cdl_png_layout *L = a->L;
+    char label[32];
+    tick_label(value, label, sizeof label);
+    int w = cdl_bitmap_font_text_width(label, FONT_SCALE);
+    int map_w = a->grid->raster_width * L->cell, map_h = a->grid->raster_height * L->cell;
+    if (a->horizontal) {
+        int x = L->map_x + (int)lround(along / a->grid->pixel_width_m * L->cell);
+        if (x > L->map_x + map_w) x = L->map_x + map_w;
+        fill_rect(a->img, L->width, x, L->map_y + map_h, 1, TICK_LENGTH, black);
+        int lx = clamp_int(x - w / 2, 0, L->width - w);
+        cdl_bitmap_font_draw_text(a->img, L->width, L->height, lx, L->map_y + map_h + TICK_LENGTH + TICK_TO_LABEL,
+                                  label, FONT_SCALE, black);
+    } else {
+        int y = L->map_y + map_h - (int)lround(along / a->grid->pixel_height_m * L->cell);
+        if (y < L->map_y) y = L->map_y;
+        fill_rect(a->img, L->width, L->map_x - TICK_LENGTH, y, TICK_LENGTH, 1, black);
+        cdl_bitmap_font_draw_text(a->img, L->width, L->height, L->map_x - TICK_LENGTH - TICK_TO_LABEL - w,
+                                  clamp_int(y - LABEL_HEIGHT / 2, 0, L->height - LABEL_HEIGHT), label, FONT_SCALE,
+                                  black);
+    }
+}
+
+static void draw_title_and_axes(const cdl_grid_result *result, const cdl_png_layout *L, uint8_t *img)
+{
+    const cdl_grid *grid = result->grid;
+    cdl_grid_stats st;
+    cdl_grid_result_stats(result, &st);
+    char line[256];
+    snprintf(line, sizeof line, "%s", result->name ? result->name : "");
+    cdl_bitmap_font_draw_text(img, L->width, L->height, MARGIN, L->title_y, line, FONT_SCALE, black);
+    snprintf(line, sizeof line, "Em %.4g lx  Emin %.4g lx  Emax %.4g lx  U0 %.3f", st.E_avg_lx, st.E_min_lx,
+             st.E_max_lx, st.U0);
+    cdl_bitmap_font_draw_text(img, L->width, L->height, MARGIN, L->stats_y, line, FONT_SCALE, black);
+    map_axis h, v;
+    axes_of(grid, L, &h, &v);
+    int map_w = grid->raster_width * L->cell, map_h = grid->raster_height * L->cell;
+    /* The axes' lines, then their ticks and names. */
+    fill_rect(img, L->width, L->map_x - 1, L->map_y, 1, map_h + 1, black);
+    fill_rect(img, L->width, L->map_x - 1, L->map_y + map_h, map_w + 1, 1, black);
+    axis_draw hd = {img, L, grid, 1}, vd = {img, L, grid, 0};
+    axis_ticks(&h, draw_tick, &hd);
+    axis_ticks(&v, draw_tick, &vd);
+    int name_w = cdl_bitmap_font_text_width(h.name, FONT_SCALE);
+    cdl_bitmap_font_draw_text(img, L->width, L->height, L->map_x + map_w - name_w,
+                              L->map_y + map_h + TICK_LENGTH + TICK_TO_LABEL + LABEL_HEIGHT + TITLE_GAP, h.name,
+                              FONT_SCALE, black);
+    cdl_bitmap_font_draw_text(img, L->width, L->height, MARGIN, L->map_y - LABEL_HEIGHT / 2 - TITLE_GAP - LABEL_HEIGHT,
+                              v.name, FONT_SCALE, black);
 }
 
 /* Map and legend into img (L->width x L->height, RGB8). */
@@ -163,6 +365,7 @@ static cdl_status render(const cdl_grid_result *result, const cdl_png_layout *L,
         for (size_t r = 0; r < bar_n; ++r)
             fill_rect(img, L->width, L->bar_x, L->bar_y + (int)r, L->bar_width, 1, colour + 3 * (n + r));
         draw_ticks(img, L);
+        draw_title_and_axes(result, L, img);
     }
     free(t);
     free(colour);
@@ -254,11 +457,17 @@ cdl_status cdl_grid_result_write_png(const cdl_grid_result *result, const char *
         return cdl_error_prefix(err, "%s: ", path);
     }
 
-    char lo[64], hi[64], description[200];
-    cdl_lux_scale_step_label(L.scale.lo_step, lo, sizeof lo);
-    cdl_lux_scale_step_label(L.scale.hi_step, hi, sizeof hi);
-    snprintf(description, sizeof description,
-             "Illuminance in lux, false colour on a logarithmic scale from %s to %s", lo, hi);
+    char lo[64], hi[64], description[300];
+    if (L.scale.kind == CDL_LUX_SCALE_LINEAR) {
+        cdl_lux_scale_value_label(L.scale.lo.lx, lo, sizeof lo);
+        cdl_lux_scale_value_label(L.scale.hi.lx, hi, sizeof hi);
+    } else {
+        cdl_lux_scale_step_label(L.scale.lo_step, lo, sizeof lo);
+        cdl_lux_scale_step_label(L.scale.hi_step, hi, sizeof hi);
+    }
+    snprintf(description, sizeof description, "%s: illuminance in lux, false colour on a %s scale from %s to %s",
+             result->name ? result->name : "grid", L.scale.kind == CDL_LUX_SCALE_LINEAR ? "linear" : "logarithmic",
+             lo, hi);
     st = cdl_png_write_rgb(path, img, L.width, L.height, description, err);
     free(img);
     return st;

@@ -63,6 +63,24 @@ cdl_status cdl_solution_prepare_folder(const char *out_dir, cdl_error *err)
     return CDL_OK;
 }
 
+void cdl_grid_solution_result(const cdl_grid_solution *gs, const cdl_grid_spec *spec, cdl_grid_result *out)
+{
+    memset(out, 0, sizeof *out);
+    out->name = spec->name;
+    out->grid = &gs->grid;
+    out->E = gs->E;
+    out->E_direct = gs->E_direct;
+    out->E_indirect = gs->E_indirect;
+    out->E_stderr = gs->E_stderr;
+    out->ao = gs->ao;
+    /* The area each point stands for, for the CSV: polygon grids' points
+     * differ (rect grids' are equal, points grids' have none). */
+    out->area_m2 = spec->kind == CDL_GRID_POLYGON ? gs->grid.weights : NULL;
+    out->Ez = gs->Ez;
+    out->Esz = gs->Esz;
+    out->L = gs->L;
+}
+
 static char *join_path(const char *dir, const char *name, const char *ext)
 {
     size_t n = strlen(dir) + strlen(name) + strlen(ext) + 2;
@@ -93,7 +111,51 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
         cJSON_AddNumberToObject(o, "edge_points", (double)sol->grids[g].edge_point_count);
         if (scene->grids[g].kind == CDL_GRID_POLYGON)
             cJSON_AddNumberToObject(o, "spacing_m", sol->grids[g].grid.spacing_m);
+        const struct {
+            const char *key;
+            const double *values;
+            const cdl_value_stats *stats;
+        } extra[] = {{"Ez", sol->grids[g].Ez, &stats[g].Ez},
+                     {"Esz", sol->grids[g].Esz, &stats[g].Esz},
+                     {"L", sol->grids[g].L, &stats[g].L}};
+        for (size_t k = 0; k < sizeof extra / sizeof extra[0]; ++k) {
+            if (!extra[k].values) continue;
+            /* Ez_avg_lx, Ez_min_lx, ...; L_avg_cd_m2, ... */
+            const char *unit = k == 2 ? "cd_m2" : "lx";
+            char key[32];
+            const double v[3] = {extra[k].stats->avg, extra[k].stats->min, extra[k].stats->max};
+            const char *what[3] = {"avg", "min", "max"};
+            for (int q = 0; q < 3; ++q) {
+                snprintf(key, sizeof key, "%s_%s_%s", extra[k].key, what[q], unit);
+                cJSON_AddNumberToObject(o, key, v[q]);
+            }
+            snprintf(key, sizeof key, "%s_U0", extra[k].key);
+            cJSON_AddNumberToObject(o, key, extra[k].stats->U0);
+        }
+        /* Power density: the installed power over the grid's area, when
+         * every luminaire's file gives its input watts. */
+        if (stats[g].area_m2 > 0.0) {
+            cJSON_AddNumberToObject(o, "area_m2", stats[g].area_m2);
+            if (sol->power.luminaires_counted > 0 && sol->power.luminaires_without_watts == 0)
+                cJSON_AddNumberToObject(o, "power_density_w_m2", sol->power.installed_w / stats[g].area_m2);
+        }
     }
+    cJSON *power = cJSON_AddObjectToObject(root, "power");
+    if (sol->power.luminaires_counted > 0 && sol->power.luminaires_without_watts == 0) {
+        cJSON_AddNumberToObject(power, "installed_w", sol->power.installed_w);
+        cJSON_AddStringToObject(power, "why", "the sum of the luminaire files' input watts, one per luminaire placed");
+    } else {
+        cJSON_AddNullToObject(power, "installed_w");
+        cJSON_AddStringToObject(power, "why",
+                                sol->power.luminaires_counted + sol->power.luminaires_without_watts == 0
+                                    ? "the scene has no luminaire (daylight only, or emitting surfaces)"
+                                    : "not every luminaire's file gives its input watts (point, spot and area "
+                                      "luminaires have none): no total and no W/m2");
+        if (sol->power.luminaires_counted > 0)
+            cJSON_AddNumberToObject(power, "known_w", sol->power.installed_w);
+    }
+    cJSON_AddNumberToObject(power, "luminaires_with_watts", (double)sol->power.luminaires_counted);
+    cJSON_AddNumberToObject(power, "luminaires_without_watts", (double)sol->power.luminaires_without_watts);
     cJSON_AddStringToObject(root, "method", cdl_method_name(sol->method));
     cJSON_AddStringToObject(root, "quality", cdl_quality_name(sol->settings.quality));
     cJSON_AddNumberToObject(root, "target_error", cdl_solver_settings_target(&sol->settings));
@@ -113,6 +175,8 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
     cJSON_AddNumberToObject(root, "rays", (double)sol->rays);
     cJSON *plan = cJSON_Parse(sol->plan_json ? sol->plan_json : "{}");
     if (plan) cJSON_AddItemToObject(root, "plan", plan);
+    cJSON *warnings = cJSON_AddArrayToObject(root, "warnings");
+    for (size_t w = 0; w < sol->warning_count; ++w) cJSON_AddItemToArray(warnings, cJSON_CreateString(sol->warnings[w]));
     char *text = cJSON_Print(root);
     cJSON_Delete(root);
     if (!text) return cdl_error_out_of_memory(err);
@@ -129,8 +193,11 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
 }
 
 cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, const char *out_dir,
-                              const char *ocio_config, cdl_error *err)
+                              const cdl_solution_write_options *options, cdl_error *err)
 {
+    cdl_solution_write_options opts = CDL_SOLUTION_WRITE_OPTIONS_DEFAULT;
+    if (options) opts = *options;
+    const char *ocio_config = opts.ocio_config ? opts.ocio_config : cdl_default_ocio_config();
     cdl_status st = cdl_solution_prepare_folder(out_dir, err);
     if (st != CDL_OK) return st;
     cdl_grid_stats *stats = calloc(sol->grid_count ? sol->grid_count : 1, sizeof *stats);
@@ -156,7 +223,9 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
 
     for (size_t g = 0; g < sol->grid_count && st == CDL_OK; ++g) {
         const cdl_grid_solution *gs = &sol->grids[g];
-        cdl_grid_result r = {scene->grids[g].name, &gs->grid, gs->E, gs->E_direct, gs->E_indirect, gs->E_stderr, gs->ao};
+        cdl_grid_result r;
+        cdl_grid_solution_result(gs, &scene->grids[g], &r);
+        r.map_log_scale = opts.map_log_scale;
         cdl_grid_result_stats(&r, &stats[g]);
         char *csv = join_path(out_dir, r.name, ".csv");
         char *exr = join_path(out_dir, r.name, ".exr");

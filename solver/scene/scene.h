@@ -89,8 +89,23 @@ typedef enum cdl_luminaire_kind {
 } cdl_luminaire_kind;
 
 typedef struct cdl_luminaire_spec {
-    char json_path[CDL_JSON_PATH_SIZE];  /* "luminaires[2]" */
+    char json_path[CDL_JSON_PATH_SIZE];  /* "luminaires[2]": the entry it comes from */
+    char *name;                          /* NULL when not given */
     cdl_luminaire_kind kind;
+    /* One entry may place a luminaire many times ("array" or "positions"):
+     * each placement is its own spec, in order, sharing the entry's
+     * json_path; copy is its number within the entry, copy_count their
+     * number (1 for a single luminaire). */
+    size_t entry;                        /* index of the entry in "luminaires" */
+    size_t copy, copy_count;
+    int array_index[2];                  /* "array": [i, j] of this copy; else [copy, 0] */
+    /* "aim" (spot, goniometric): the point the spot axis or the photometric
+     * nadir points at, turned by spin_deg about that axis; the loader has
+     * already turned it into `direction` (spot) or rotation_deg
+     * (goniometric) for this copy's position. */
+    int has_aim;
+    cdl_vec3 aim;
+    double spin_deg;
     cdl_vec3 position;                   /* point, spot, goniometric */
     cdl_vec3 direction;                  /* spot axis; directional: direction of travel */
     /* exactly one of intensity_cd / flux_lm for point and spot; for
@@ -127,6 +142,9 @@ typedef struct cdl_luminaire_spec {
  * polygon grids check their estimated count before meshing). */
 #define CDL_GRID_MAX_POINTS 10000000
 
+/* Most luminaires one scene may place (entries times their copies). */
+#define CDL_SCENE_MAX_LUMINAIRES 1000000
+
 typedef enum cdl_grid_kind { CDL_GRID_RECT, CDL_GRID_POLYGON, CDL_GRID_POINTS } cdl_grid_kind;
 
 typedef struct cdl_grid_spec {
@@ -146,8 +164,11 @@ typedef struct cdl_grid_spec {
     /* points */
     cdl_vec3 *points, *normals;
     size_t point_count;
-    /* outputs */
-    int want_ao;
+    /* outputs (each an extra CSV column, EXR channel and summary statistic) */
+    int want_ao;                         /* "ao": ambient occlusion */
+    int want_cylindrical;                /* "cylindrical": mean vertical illuminance E_z (EN 12464-1) */
+    int want_semicylindrical;            /* "semicylindrical": towards the point's normal, horizontal part */
+    int want_luminance;                  /* "luminance": rho E / pi of the surface the grid lies on */
 } cdl_grid_spec;
 
 /* ---- solver settings ---------------------------------------------------- */
@@ -212,6 +233,23 @@ typedef struct cdl_scene {
  * folder). On success *out is the caller's; on failure it is NULL and err
  * says where (above). CDL_ERR_INTERNAL for memory. */
 cdl_status cdl_scene_load(const char *path, cdl_scene **out, cdl_error *err);
+
+/* The keys the loader accepts, per kind of object ("scene", "luminaire
+ * spot", "surface box", "shape rect", "grid polygon", "solver", "array",
+ * "grid point"): the very tables it checks scenes against, so that a test
+ * can hold data/scene.schema.json to them both ways. */
+typedef struct cdl_scene_key_set {
+    const char *object;
+    const char *const *keys;             /* NULL-terminated */
+} cdl_scene_key_set;
+
+/* The loader's key sets: *sets points at a static table (not to be
+ * freed), the count is returned. Thread-safe; no errors. */
+size_t cdl_scene_key_sets(const cdl_scene_key_set **sets);
+
+/* A label for messages and the plan: the JSON path, the name when given,
+ * and for one copy of many its number ("luminaires[2] (row A, 3 of 12)"). */
+void cdl_luminaire_spec_label(const cdl_luminaire_spec *spec, char *out, size_t size);
 /* Parse from a string (path used for messages and relative paths). */
 cdl_status cdl_scene_load_string(const char *json, const char *path, cdl_scene **out, cdl_error *err);
 void cdl_scene_release(cdl_scene *scene);

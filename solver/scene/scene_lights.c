@@ -290,7 +290,7 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
     const cdl_luminaire_spec *sp = &scene->luminaires[k];
     cdl_scene_light proto;
     memset(&proto, 0, sizeof proto);
-    snprintf(proto.label, sizeof proto.label, "%s", sp->json_path);
+    cdl_luminaire_spec_label(sp, proto.label, sizeof proto.label);
     proto.owner = UINT32_MAX;
     double mf = sp->maintenance_factor;
     cdl_emitter *e = NULL;
@@ -343,14 +343,20 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
     }
     case CDL_LUMINAIRE_GONIOMETRIC: {
         cdl_photometry *ph = NULL;
-        cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
-        st = cdl_photometry_read_file(sp->file, &opt, &ph, err);
-        if (st != CDL_OK) {
-            cdl_error_prefix(err, "%s.file: ", sp->json_path);
-            cdl_error_prefix(err, "%s: ", scene->path);
-            return st;
+        if (sp->copy > 0 && k > 0) {
+            /* Copies of one entry ("array", "positions") share its file, read once. */
+            ph = L->photometries[L->photometry_count - 1];
+        } else {
+            cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+            st = cdl_photometry_read_file(sp->file, &opt, &ph, err);
+            if (st != CDL_OK) {
+                cdl_error_prefix(err, "%s.file: ", sp->json_path);
+                cdl_error_prefix(err, "%s: ", scene->path);
+                return st;
+            }
+            L->photometries[L->photometry_count++] = ph;
         }
-        L->photometries[L->photometry_count++] = ph;
+        L->luminaire_photometry[k] = ph;
         cdl_goniometric_params p;
         memset(&p, 0, sizeof p);
         p.position = sp->position;
@@ -433,7 +439,11 @@ cdl_status cdl_scene_lights_build(const cdl_scene *scene, const cdl_scene_geomet
 {
     memset(out, 0, sizeof *out);
     out->photometries = calloc(scene->luminaire_count + 1, sizeof *out->photometries);
-    if (!out->photometries) return cdl_error_out_of_memory(err);
+    out->luminaire_photometry = calloc(scene->luminaire_count + 1, sizeof *out->luminaire_photometry);
+    if (!out->photometries || !out->luminaire_photometry) {
+        cdl_scene_lights_release(out);
+        return cdl_error_out_of_memory(err);
+    }
     for (size_t k = 0; k < scene->luminaire_count; ++k) {
         cdl_status st = build_luminaire(scene, geometry, k, out, err);
         if (st != CDL_OK) {
@@ -449,8 +459,13 @@ cdl_status cdl_scene_lights_build(const cdl_scene *scene, const cdl_scene_geomet
         const cdl_surface_spec *ss = &scene->surfaces[gp->source_index];
         cdl_scene_light proto;
         memset(&proto, 0, sizeof proto);
-        if (gp->box_face >= 0)
+        if (gp->box_face >= 0 && ss->name)
+            snprintf(proto.label, sizeof proto.label, "%s (%s, face %s)", ss->json_path, ss->name,
+                     box_face_name(gp->box_face));
+        else if (gp->box_face >= 0)
             snprintf(proto.label, sizeof proto.label, "%s (face %s)", ss->json_path, box_face_name(gp->box_face));
+        else if (ss->name)
+            snprintf(proto.label, sizeof proto.label, "%s (%s)", ss->json_path, ss->name);
         else
             snprintf(proto.label, sizeof proto.label, "%s", ss->json_path);
         proto.owner = (uint32_t)i;
@@ -486,5 +501,6 @@ void cdl_scene_lights_release(cdl_scene_lights *L)
     free(L->emitters);
     free(L->kinds);
     free(L->photometries);
+    free(L->luminaire_photometry);
     memset(L, 0, sizeof *L);
 }

@@ -60,8 +60,10 @@ typedef struct cdl_scene_lights {
     const char **kinds;             /* "point", "area", ... per light */
     cdl_emitter **emitters;
     size_t count;
-    cdl_photometry **photometries;  /* owned, one per goniometric luminaire (NULL otherwise) */
+    cdl_photometry **photometries;  /* owned, one per goniometric entry (its copies share it) */
     size_t photometry_count;
+    /* Per luminaire of the scene (scene->luminaires[k]): its photometry, borrowed; NULL unless goniometric. */
+    const cdl_photometry **luminaire_photometry;
     int has_environment;
 } cdl_scene_lights;
 

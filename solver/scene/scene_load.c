@@ -44,6 +44,14 @@
 #include "solver/scene/scene_parse.h"
 
 #define GRID_NAME_MAX 64
+/* Room in the key tables of luminaires and grids, NULL included. */
+#define LUMINAIRE_KEYS_MAX 16
+
+static const char *const document_keys[] = {"$schema", "version", "surfaces", "luminaires", "grids", "solver", NULL};
+static const char *const settings_keys[] = {"method", "quality", "target_error", "bounces", "seed", "threads",
+                                            "direct_samples", "ao_samples", NULL};
+static const char *const point_keys[] = {"p", "n", NULL};
+
 
 static const char *const method_names[] = {"auto", "direct", "icache", "pathtrace", NULL};
 static const char *const quality_names[] = {"draft", "normal", "high", "reference", NULL};
@@ -71,6 +79,14 @@ const char *cdl_quality_name(cdl_quality quality)
 
 /* ---- helpers ------------------------------------------------------------------ */
 
+static char *strdup_or_null(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *c = malloc(n);
+    if (c) memcpy(c, s, n);
+    return c;
+}
+
 /* At most one of keys a and b; with `required`, exactly one. *which = 0 (a), 1 (b) or -1. */
 static cdl_status one_of(const cdl_scene_parse *ctx, const cJSON *node, const char *path, const char *a,
                          const char *b, int required, int *which)
@@ -97,7 +113,7 @@ static const cJSON *field(const cJSON *node, const char *path, const char *key, 
 
 /* An object with a "type" among `types` whose keys are all in keys[type]. */
 static cdl_status read_kind(const cdl_scene_parse *ctx, const cJSON *node, const char *path, const char *noun,
-                            const char *const *types, const char *const (*keys)[10], int *kind)
+                            const char *const *types, const char *const (*keys)[LUMINAIRE_KEYS_MAX], int *kind)
 {
     char p[CDL_SCENE_PATH_MAX], what[64];
     if (!cJSON_IsObject(node)) {
@@ -113,14 +129,15 @@ static cdl_status read_kind(const cdl_scene_parse *ctx, const cJSON *node, const
 /* ---- luminaires ----------------------------------------------------------------- */
 
 static const char *const luminaire_types[] = {"point", "spot", "goniometric", "area", "directional", "environment", NULL};
-static const char *const luminaire_keys[][10] = {
-    {"type", "position", "intensity_cd", "flux_lm", "maintenance_factor", NULL},
-    {"type", "position", "direction", "intensity_cd", "flux_lm", "half_angle", "falloff_start", "exponent",
+static const char *const luminaire_keys[][LUMINAIRE_KEYS_MAX] = {
+    {"type", "name", "position", "positions", "array", "intensity_cd", "flux_lm", "maintenance_factor", NULL},
+    {"type", "name", "position", "positions", "array", "direction", "aim", "spin", "intensity_cd", "flux_lm",
+     "half_angle", "falloff_start", "exponent", "maintenance_factor", NULL},
+    {"type", "name", "file", "position", "positions", "array", "rotation", "aim", "spin", "multiplier", "flux_lm",
      "maintenance_factor", NULL},
-    {"type", "file", "position", "rotation", "multiplier", "flux_lm", "maintenance_factor", NULL},
-    {"type", "shape", "luminance_cd_m2", "flux_lm", "reflectance", "maintenance_factor", NULL},
-    {"type", "direction", "illuminance_lx", "maintenance_factor", NULL},
-    {"type", "luminance_cd_m2", "file", "scale", "up", "hemisphere", "maintenance_factor", "sky",
+    {"type", "name", "shape", "luminance_cd_m2", "flux_lm", "reflectance", "maintenance_factor", NULL},
+    {"type", "name", "direction", "illuminance_lx", "maintenance_factor", NULL},
+    {"type", "name", "luminance_cd_m2", "file", "scale", "up", "hemisphere", "maintenance_factor", "sky",
      "zenith_luminance_cd_m2", NULL},
 };
 
@@ -142,7 +159,9 @@ static cdl_status read_intensity(const cdl_scene_parse *ctx, const cJSON *node, 
 static cdl_status read_spot(const cdl_scene_parse *ctx, const cJSON *node, const char *path, cdl_luminaire_spec *out)
 {
     char p[CDL_SCENE_PATH_MAX];
-    if (cdl_scene_json_read_vec3(ctx, field(node, path, "direction", p), p, 1, 1, &out->direction) != CDL_OK ||
+    out->direction = cdl_vec3_make(0, 0, -1);
+    if (cdl_scene_json_read_vec3(ctx, field(node, path, "direction", p), p, 1, !out->has_aim, &out->direction) !=
+            CDL_OK ||
         read_intensity(ctx, node, path, out) != CDL_OK)
         return CDL_ERR_INPUT;
     out->direction = cdl_vec3_normalize(out->direction);
@@ -241,22 +260,31 @@ static cdl_status read_luminaire(const cdl_scene_parse *ctx, const cJSON *node, 
     int kind = 0;
     if (read_kind(ctx, node, path, "luminaire", luminaire_types, luminaire_keys, &kind) != CDL_OK) return CDL_ERR_INPUT;
     out->kind = (cdl_luminaire_kind)kind;
-    if (cdl_scene_json_read_number(ctx, field(node, path, "maintenance_factor", p), p, CDL_RANGE_UNIT_OPEN0, 0,
+    if (cdl_scene_json_read_string(ctx, field(node, path, "name", p), p, 0, &out->name) != CDL_OK ||
+        cdl_scene_json_read_number(ctx, field(node, path, "maintenance_factor", p), p, CDL_RANGE_UNIT_OPEN0, 0,
                                    &out->maintenance_factor) != CDL_OK)
+        return CDL_ERR_INPUT;
+    /* A list of "positions" replaces "position". */
+    int need_position = !cdl_scene_json_member(node, "positions");
+    if ((out->kind == CDL_LUMINAIRE_SPOT || out->kind == CDL_LUMINAIRE_GONIOMETRIC) &&
+        cdl_scene_json_read_aim(ctx, node, path, out) != CDL_OK)
         return CDL_ERR_INPUT;
     switch (out->kind) {
     case CDL_LUMINAIRE_POINT:
-        if (cdl_scene_json_read_vec3(ctx, field(node, path, "position", p), p, 0, 1, &out->position) != CDL_OK)
+        if (cdl_scene_json_read_vec3(ctx, field(node, path, "position", p), p, 0, need_position, &out->position) !=
+            CDL_OK)
             return CDL_ERR_INPUT;
         return read_intensity(ctx, node, path, out);
     case CDL_LUMINAIRE_SPOT:
-        if (cdl_scene_json_read_vec3(ctx, field(node, path, "position", p), p, 0, 1, &out->position) != CDL_OK)
+        if (cdl_scene_json_read_vec3(ctx, field(node, path, "position", p), p, 0, need_position, &out->position) !=
+            CDL_OK)
             return CDL_ERR_INPUT;
         return read_spot(ctx, node, path, out);
     case CDL_LUMINAIRE_GONIOMETRIC: {
         cdl_vec3 rotation = cdl_vec3_make(0, 0, 0);
         if (cdl_scene_json_read_path(ctx, field(node, path, "file", p), p, 1, &out->file) != CDL_OK ||
-            cdl_scene_json_read_vec3(ctx, field(node, path, "position", p), p, 0, 1, &out->position) != CDL_OK ||
+            cdl_scene_json_read_vec3(ctx, field(node, path, "position", p), p, 0, need_position, &out->position) !=
+                CDL_OK ||
             cdl_scene_json_read_vec3(ctx, field(node, path, "rotation", p), p, 0, 0, &rotation) != CDL_OK ||
             cdl_scene_json_read_number(ctx, field(node, path, "multiplier", p), p, CDL_RANGE_NONNEGATIVE, 0,
                                        &out->multiplier) != CDL_OK)
@@ -296,10 +324,72 @@ static cdl_status read_luminaire(const cdl_scene_parse *ctx, const cJSON *node, 
     return CDL_OK;
 }
 
+/* One entry of "luminaires": its luminaire, placed once or at every
+ * position of its "array" or "positions" (each copy its own spec). */
+static cdl_status read_luminaire_entry(const cdl_scene_parse *ctx, const cJSON *node, const char *path, size_t entry,
+                                       cdl_scene *scene)
+{
+    cdl_luminaire_spec proto;
+    memset(&proto, 0, sizeof proto);
+    cdl_luminaire_copies copies;
+    memset(&copies, 0, sizeof copies);
+    cdl_status st = read_luminaire(ctx, node, path, &proto);
+    int placed = proto.kind == CDL_LUMINAIRE_POINT || proto.kind == CDL_LUMINAIRE_SPOT ||
+                 proto.kind == CDL_LUMINAIRE_GONIOMETRIC;
+    /* The entry's own orientation (aimed from "position") lays out an array. */
+    if (st == CDL_OK && placed && !cdl_scene_json_member(node, "positions"))
+        st = cdl_scene_place_copy(ctx, path, &proto);
+    if (st == CDL_OK && placed) {
+        st = cdl_scene_json_read_copies(ctx, node, path, &proto, &copies);
+    } else if (st == CDL_OK) {
+        copies.count = 1;
+    }
+    if (st == CDL_OK && scene->luminaire_count + copies.count > CDL_SCENE_MAX_LUMINAIRES)
+        st = cdl_scene_json_failf(ctx, path, "at most 1000000 luminaires in a scene", "%zu with this entry's",
+                                  scene->luminaire_count + copies.count);
+    cdl_luminaire_spec *grown = NULL;
+    if (st == CDL_OK) {
+        grown = realloc(scene->luminaires, (scene->luminaire_count + copies.count) * sizeof *grown);
+        if (!grown) st = cdl_error_out_of_memory(ctx->err);
+        else scene->luminaires = grown;
+    }
+    for (size_t k = 0; st == CDL_OK && k < copies.count; ++k) {
+        cdl_luminaire_spec *c = &scene->luminaires[scene->luminaire_count];
+        *c = proto;
+        c->entry = entry;
+        c->copy = k;
+        c->copy_count = copies.count;
+        c->array_index[0] = copies.index ? copies.index[k][0] : 0;
+        c->array_index[1] = copies.index ? copies.index[k][1] : 0;
+        if (copies.positions) c->position = copies.positions[k];
+        if (k == copies.count - 1) {
+            /* The last copy takes the entry's strings and shape. */
+            memset(&proto, 0, sizeof proto);
+        } else {
+            c->name = proto.name ? strdup_or_null(proto.name) : NULL;
+            c->file = proto.file ? strdup_or_null(proto.file) : NULL;
+            if ((proto.name && !c->name) || (proto.file && !c->file)) {
+                free(c->name);
+                free(c->file);
+                st = cdl_error_out_of_memory(ctx->err);
+                break;
+            }
+            memset(&c->shape, 0, sizeof c->shape);
+        }
+        scene->luminaire_count++;
+        st = cdl_scene_place_copy(ctx, path, c);
+    }
+    free(proto.name);
+    free(proto.file);
+    cdl_scene_surface_spec_free(&proto.shape);
+    cdl_scene_luminaire_copies_free(&copies);
+    return st;
+}
+
 /* ---- grids ------------------------------------------------------------------------ */
 
 static const char *const grid_types[] = {"rect", "polygon", "points", NULL};
-static const char *const grid_keys[][10] = {
+static const char *const grid_keys[][LUMINAIRE_KEYS_MAX] = {
     {"name", "type", "origin", "u", "v", "nu", "nv", "normal", "outputs", NULL},
     {"name", "type", "vertices", "holes", "spacing", "normal", "outputs", NULL},
     {"name", "type", "points", "outputs", NULL},
@@ -333,7 +423,7 @@ static cdl_status read_grid_points(const cdl_scene_parse *ctx, const cJSON *node
     out->points = malloc(n * sizeof *out->points);
     out->normals = malloc(n * sizeof *out->normals);
     if (!out->points || !out->normals) return cdl_error_out_of_memory(ctx->err);
-    static const char *const keys[] = {"p", "n", NULL};
+    const char *const *keys = point_keys;
     size_t i = 0;
     char item[CDL_SCENE_PATH_MAX], p[CDL_SCENE_PATH_MAX];
     for (const cJSON *e = node->child; e; e = e->next, ++i) {
@@ -352,17 +442,21 @@ static cdl_status read_grid_outputs(const cdl_scene_parse *ctx, const cJSON *nod
                                     cdl_grid_spec *out)
 {
     if (!node) return CDL_OK;
-    if (cdl_scene_json_check_array(ctx, node, path, "a list of extra outputs ([\"ao\"])", 0) != CDL_OK)
+    if (cdl_scene_json_check_array(ctx, node, path,
+                                   "a list of extra outputs (\"ao\", \"cylindrical\", \"semicylindrical\", "
+                                   "\"luminance\")",
+                                   0) != CDL_OK)
         return CDL_ERR_INPUT;
-    static const char *const outputs[] = {"ao", NULL};
+    static const char *const outputs[] = {"ao", "cylindrical", "semicylindrical", "luminance", NULL};
+    int *wants[] = {&out->want_ao, &out->want_cylindrical, &out->want_semicylindrical, &out->want_luminance};
     size_t i = 0;
     char item[CDL_SCENE_PATH_MAX];
     for (const cJSON *e = node->child; e; e = e->next, ++i) {
         int which = 0;
         cdl_scene_json_path_index(item, path, i);
         if (cdl_scene_json_read_choice(ctx, e, item, outputs, 1, &which) != CDL_OK) return CDL_ERR_INPUT;
-        if (out->want_ao) return cdl_scene_json_fail(ctx, item, "each output named once", e);
-        out->want_ao = 1;
+        if (*wants[which]) return cdl_scene_json_fail(ctx, item, "each output named once", e);
+        *wants[which] = 1;
     }
     return CDL_OK;
 }
@@ -423,8 +517,6 @@ static cdl_status read_grid(const cdl_scene_parse *ctx, const cJSON *node, const
 static cdl_status read_settings(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
                                 cdl_solver_settings *out)
 {
-    static const char *const keys[] = {"method", "quality", "target_error", "bounces", "seed", "threads",
-                                       "direct_samples", "ao_samples", NULL};
     char p[CDL_SCENE_PATH_MAX];
     out->method = CDL_METHOD_AUTO;
     out->quality = CDL_QUALITY_NORMAL;
@@ -435,7 +527,7 @@ static cdl_status read_settings(const cdl_scene_parse *ctx, const cJSON *node, c
     if (!node) return CDL_OK;
     int method = 0, quality = 1;
     double target = 0.0, bounces = CDL_BOUNCES_AUTO, seed = 1, threads = 0, direct = 0, ao = 0;
-    if (cdl_scene_json_check_object(ctx, node, path, "the solver settings", keys) != CDL_OK ||
+    if (cdl_scene_json_check_object(ctx, node, path, "the solver settings", settings_keys) != CDL_OK ||
         cdl_scene_json_read_choice(ctx, field(node, path, "method", p), p, method_names, 0, &method) != CDL_OK ||
         cdl_scene_json_read_choice(ctx, field(node, path, "quality", p), p, quality_names, 0, &quality) != CDL_OK ||
         /* 2^53: every integer up to it is exact in a JSON (double) number. */
@@ -491,9 +583,13 @@ static cdl_status array_items(const cdl_scene_parse *ctx, const cJSON *node, con
 
 static cdl_status read_document(const cdl_scene_parse *ctx, const cJSON *root, cdl_scene *scene)
 {
-    static const char *const keys[] = {"version", "surfaces", "luminaires", "grids", "solver", NULL};
     char p[CDL_SCENE_PATH_MAX], item[CDL_SCENE_PATH_MAX];
-    if (cdl_scene_json_check_object(ctx, root, "", "a scene", keys) != CDL_OK) return CDL_ERR_INPUT;
+    if (cdl_scene_json_check_object(ctx, root, "", "a scene", document_keys) != CDL_OK) return CDL_ERR_INPUT;
+    /* "$schema" names the JSON Schema editors check the file against
+     * (data/scene.schema.json); the loader needs nothing from it. */
+    const cJSON *schema = field(root, "", "$schema", p);
+    if (schema && !cJSON_IsString(schema))
+        return cdl_scene_json_fail(ctx, p, "the address of the scene's JSON Schema (a string)", schema);
     const cJSON *version = field(root, "", "version", p);
     if (!cJSON_IsNumber(version) || version->valuedouble != 1.0)
         return cdl_scene_json_fail(ctx, p, "the scene format version 1", version);
@@ -510,13 +606,11 @@ static cdl_status read_document(const cdl_scene_parse *ctx, const cJSON *root, c
     }
 
     list = field(root, "", "luminaires", p);
-    if (array_items(ctx, list, p, "a list of luminaires", 0, sizeof *scene->luminaires, (void **)&scene->luminaires,
-                    &scene->luminaire_count) != CDL_OK)
-        return CDL_ERR_INPUT;
+    if (list && cdl_scene_json_check_array(ctx, list, p, "a list of luminaires", 0) != CDL_OK) return CDL_ERR_INPUT;
     i = 0;
     for (const cJSON *e = list ? list->child : NULL; e; e = e->next, ++i) {
         cdl_scene_json_path_index(item, p, i);
-        if (read_luminaire(ctx, e, item, &scene->luminaires[i]) != CDL_OK) return CDL_ERR_INPUT;
+        if (read_luminaire_entry(ctx, e, item, i, scene) != CDL_OK) return CDL_ERR_INPUT;
     }
 
     list = field(root, "", "grids", p);
@@ -645,6 +739,7 @@ void cdl_scene_release(cdl_scene *scene)
     for (size_t i = 0; i < scene->surface_count; ++i) cdl_scene_surface_spec_free(&scene->surfaces[i]);
     free(scene->surfaces);
     for (size_t i = 0; i < scene->luminaire_count; ++i) {
+        free(scene->luminaires[i].name);
         free(scene->luminaires[i].file);
         cdl_scene_surface_spec_free(&scene->luminaires[i].shape);
     }
@@ -660,4 +755,44 @@ void cdl_scene_release(cdl_scene *scene)
     free(scene->path);
     free(scene->base_dir);
     free(scene);
+}
+
+/* ---- what the loader knows ---------------------------------------------------------- */
+
+size_t cdl_scene_key_sets(const cdl_scene_key_set **sets)
+{
+    /* Built once from the loader's own tables; they never change. */
+    static cdl_scene_key_set table[32];
+    static size_t count;
+    if (count == 0) {
+        size_t n = 0;
+        table[n++] = (cdl_scene_key_set){"scene", document_keys};
+        table[n++] = (cdl_scene_key_set){"solver", settings_keys};
+        table[n++] = (cdl_scene_key_set){"grid point", point_keys};
+        table[n++] = (cdl_scene_key_set){"array", cdl_scene_array_keys};
+        static char names[16][32];
+        size_t k = 0;
+        for (int t = 0; luminaire_types[t]; ++t, ++k) {
+            snprintf(names[k], sizeof names[k], "luminaire %s", luminaire_types[t]);
+            table[n++] = (cdl_scene_key_set){names[k], luminaire_keys[t]};
+        }
+        for (int t = 0; grid_types[t]; ++t, ++k) {
+            snprintf(names[k], sizeof names[k], "grid %s", grid_types[t]);
+            table[n++] = (cdl_scene_key_set){names[k], grid_keys[t]};
+        }
+        n += cdl_scene_surface_key_sets(table + n, sizeof table / sizeof table[0] - n);
+        count = n;
+    }
+    *sets = table;
+    return count;
+}
+
+void cdl_luminaire_spec_label(const cdl_luminaire_spec *spec, char *out, size_t size)
+{
+    char copy[64] = "";
+    if (spec->copy_count > 1) snprintf(copy, sizeof copy, "%zu of %zu", spec->copy + 1, spec->copy_count);
+    if (spec->name && copy[0]) snprintf(out, size, "%s (%s, %s)", spec->json_path, spec->name, copy);
+    else if (spec->name) snprintf(out, size, "%s (%s)", spec->json_path, spec->name);
+    else if (copy[0]) snprintf(out, size, "%s (%s)", spec->json_path, copy);
+    else snprintf(out, size, "%s", spec->json_path);
 }

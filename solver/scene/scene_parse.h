@@ -124,6 +124,34 @@ typedef enum cdl_scene_shape_use {
 cdl_status cdl_scene_json_read_surface(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
                                        cdl_scene_shape_use use, cdl_surface_spec *out);
 void cdl_scene_surface_spec_free(cdl_surface_spec *spec);
+/* The surface kinds' keys as the loader checks them (for cdl_scene_key_sets). */
+size_t cdl_scene_surface_key_sets(cdl_scene_key_set *sets, size_t capacity);
+
+/* ---- placing luminaires (scene_placement.c) ------------------------------------ */
+
+/* The keys of an "array" object. */
+extern const char *const cdl_scene_array_keys[];
+
+/* "aim" and "spin" of a spot or goniometric luminaire (refusing "aim" with
+ * "direction" or "rotation", and "spin" without "aim"). */
+cdl_status cdl_scene_json_read_aim(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                   cdl_luminaire_spec *out);
+
+/* Where an entry places its luminaires: one at proto->position, an
+ * "array" laid out in the entry's own frame, or the "positions" listed. */
+typedef struct cdl_luminaire_copies {
+    cdl_vec3 *positions;
+    int (*index)[2];              /* [i, j] in the array, or [k, 0] */
+    size_t count;
+} cdl_luminaire_copies;
+cdl_status cdl_scene_json_read_copies(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                      const cdl_luminaire_spec *proto, cdl_luminaire_copies *out);
+void cdl_scene_luminaire_copies_free(cdl_luminaire_copies *copies);
+
+/* Turn an aimed copy (has_aim) towards its aim point from its position:
+ * the spot's direction or the goniometric rotation. Refuses an aim point
+ * at the luminaire. */
+cdl_status cdl_scene_place_copy(const cdl_scene_parse *ctx, const char *path, cdl_luminaire_spec *spec);
 void cdl_scene_rings_free(cdl_ring3 *outer, cdl_ring3 *holes, size_t hole_count);
 
 #endif

@@ -419,7 +419,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     } else {
         check_solution(scene, &sol);
         check_against_rays(scene, &sol);
-        st = cdl_solution_write(scene, &sol, out_dir, cdl_default_ocio_config(), &err);
+        st = cdl_solution_write(scene, &sol, out_dir, NULL, &err);
         require(st == CDL_OK, "a solution is written", err.message);
         cdl_solution_release(&sol);
         clear_folder(out_dir);

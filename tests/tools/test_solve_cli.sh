@@ -3,12 +3,7 @@
 # the files DESIGN.md promises, relative paths, errors, atomic outputs, and
 # identical results for any thread count.
 # ctest-timeout: 300
-set -u
-: "${CANDELA:?}" "${CANDELA_SOURCE_DIR:?}"
-fail=0
-check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/harness.sh"
 office="$CANDELA_SOURCE_DIR/data/office/office.json"
 
 # Run from another folder: paths in the scene resolve against the scene file.

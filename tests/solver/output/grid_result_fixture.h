@@ -41,6 +41,12 @@ static inline int fixture_rect(fixture *f, int nu, int nv, double size_u, double
     f->grid.raster_width = nu;
     f->grid.raster_height = nv;
     f->grid.pixel_size_m = size_u / nu;
+    /* Lying along +x and +y from the origin (maps' axes). */
+    f->grid.raster_corner = cdl_vec3_make(0, 0, z);
+    f->grid.raster_right = cdl_vec3_make(1, 0, 0);
+    f->grid.raster_up = cdl_vec3_make(0, 1, 0);
+    f->grid.pixel_width_m = size_u / nu;
+    f->grid.pixel_height_m = size_v / nv;
     f->grid.spacing_m = size_u / nu;
     for (int j = 0; j < nv; ++j)
         for (int i = 0; i < nu; ++i) {

@@ -18,8 +18,38 @@ static int label_is(int step, const char *expected)
     return n == strlen(expected) && strcmp(buf, expected) == 0;
 }
 
+/* The linear scale: from 0 for a grid with dark parts; from its 2nd
+ * percentile, rounded down to the tick, where nearly all of it is bright,
+ * whatever a single dark point says; ticks a 1-2-5 step for about six
+ * intervals; all dark: 0 .. 10 lx. */
+static void test_linear(void)
+{
+    double E[100];
+    for (int i = 0; i < 100; ++i) E[i] = 30.0 + 7.5 * i; /* 30 .. 772.5 lx */
+    cdl_lux_scale s = cdl_lux_scale_linear_for_values(E, 100);
+    /* 2nd percentile 45 lx < half of 772.5: from 0; (772.5 - 0) / 6 = 129 -> step 200; top 800. */
+    CHECK(s.kind == CDL_LUX_SCALE_LINEAR && s.lo.lx == 0.0 && s.tick_lx == 200.0 && s.hi.lx == 800.0 && !s.clipped);
+    CHECK(cdl_lux_scale_position(&s, cdl_lux(400.0)) == 0.5);
+    for (int i = 0; i < 100; ++i) E[i] = 480.0 + 0.4 * i; /* 480 .. 519.6 */
+    E[37] = 0.0;
+    s = cdl_lux_scale_linear_for_values(E, 100);
+    /* the 2nd point up is 480.4 (the dark one left out): (519.6 - 480.4) / 6 = 6.5 -> step 10; 480 .. 520 */
+    CHECK_MSG(s.lo.lx == 480.0 && s.hi.lx == 520.0 && s.tick_lx == 10.0 && s.clipped, "%g .. %g by %g", s.lo.lx,
+              s.hi.lx, s.tick_lx);
+    CHECK(cdl_lux_scale_position(&s, cdl_lux(0.0)) == 0.0);
+    double dark[3] = {0, 0, 0};
+    s = cdl_lux_scale_linear_for_values(dark, 3);
+    CHECK(s.lo.lx == 0.0 && s.hi.lx == 10.0);
+    char label[32];
+    cdl_lux_scale_value_label(0.6000000000000001, label, sizeof label);
+    CHECK(strcmp(label, "0.6 lx") == 0);
+    cdl_lux_scale_value_label(12500.0, label, sizeof label);
+    CHECK(strcmp(label, "12.5k lx") == 0);
+}
+
 int main(void)
 {
+    test_linear();
     /* Step values are the doubles nearest the decimal values, exactly as literals. */
     CHECK(cdl_lux_scale_step_value(0).lx == 1.0);
     CHECK(cdl_lux_scale_step_value(1).lx == 2.0);

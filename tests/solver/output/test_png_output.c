@@ -1,5 +1,6 @@
 /* NAME.png decoded back with libpng: size, map colours against the OCIO
- * transform of hand-computed log positions, legend bar, ticks and labels. */
+ * transform of hand-computed log and linear positions, legend bar, ticks
+ * and labels, the title (name and statistics) and axes in metres. */
 #include <math.h>
 #include <png.h>
 #include <string.h>
@@ -108,22 +109,90 @@ static int bar_row(const cdl_png_layout *L, double t)
     return L->bar_y + (int)lround((1.0 - t) * (L->bar_height - 1));
 }
 
-/* Write f's PNG, check that its scale is lo .. hi lx (worked by hand by the
- * caller), that it decodes to the layout's size and that every cell has the
- * colour of its point. The decoded image stays in *d (NULL pixels if not). */
+/* Write f's PNG on the logarithmic scale, check that its scale is lo .. hi
+ * lx (worked by hand by the caller), that it decodes to the layout's size
+ * and that every cell has the colour of its point. The decoded image stays
+ * in *d (NULL pixels if not). */
 static void write_and_check(const fixture *f, const char *path, const cdl_display_transform *view, double lo,
                             double hi, cdl_png_layout *L, decoded *d)
 {
     cdl_error err;
     d->rgb = NULL;
-    CHECK_OK(cdl_grid_result_write_png(&f->result, path, CONFIG, &err), &err);
-    cdl_grid_result_png_layout(&f->result, L);
+    cdl_grid_result r = f->result;
+    r.map_log_scale = 1;
+    CHECK_OK(cdl_grid_result_write_png(&r, path, CONFIG, &err), &err);
+    cdl_grid_result_png_layout(&r, L);
     CHECK_MSG(L->scale.lo.lx == lo && L->scale.hi.lx == hi, "scale %g .. %g lx, expected %g .. %g", L->scale.lo.lx,
               L->scale.hi.lx, lo, hi);
     CHECK_MSG(decode(path, d), "%s decodes", path);
     if (!d->rgb) return;
     CHECK(d->width == L->width && d->height == L->height);
     check_map(d, L, f, view, lo, hi);
+}
+
+/* The default linear scale: an 8 x 8 grid of 480 .. 520 lx with one point
+ * at 0 lx (a dark corner) keeps its range, 480 .. 520 lx in steps of 10
+ * (about six intervals of a 1-2-5 step), instead of being flattened to
+ * 0 .. 520; the dark point shows the bottom colour and the bottom label
+ * says "<=". Title and axes are drawn. */
+static void test_linear(const char *path, const cdl_display_transform *view)
+{
+    fixture f;
+    decoded d;
+    cdl_png_layout L;
+    cdl_error err;
+    CHECK(fixture_rect(&f, 8, 8, 4.0, 4.0, 0.8));
+    for (size_t k = 0; k < f.grid.count; ++k) f.E[k] = 480.0 + 40.0 * (double)k / 63.0;
+    f.E[9] = 0.0;
+    for (int r = 0; r < 8; ++r)
+        for (int c = 0; c < 8; ++c) f.grid.raster_index[r * 8 + c] = (7 - r) * 8 + c;
+    f.result.name = "Hall_B";
+    CHECK_OK(cdl_grid_result_write_png(&f.result, path, CONFIG, &err), &err);
+    cdl_grid_result_png_layout(&f.result, &L);
+    CHECK(L.scale.kind == CDL_LUX_SCALE_LINEAR);
+    CHECK_MSG(L.scale.lo.lx == 480.0 && L.scale.hi.lx == 520.0 && L.scale.tick_lx == 10.0 && L.scale.clipped,
+              "scale %g .. %g step %g", L.scale.lo.lx, L.scale.hi.lx, L.scale.tick_lx);
+    CHECK(decode(path, &d));
+    if (!d.rgb) {
+        fixture_free(&f);
+        return;
+    }
+    CHECK(d.width == L.width && d.height == L.height);
+    for (int r = 0; r < 8; ++r)
+        for (int c = 0; c < 8; ++c) {
+            double E = f.E[(7 - r) * 8 + c];
+            double t = E <= 480.0 ? 0.0 : E >= 520.0 ? 1.0 : (E - 480.0) / 40.0;
+            int want[3];
+            expected_colour(view, t, want);
+            const uint8_t *got = cell_centre(&d, &L, c, r);
+            CHECK_MSG(same_colour(got, want), "linear cell (%d, %d): got %d %d %d, want %d %d %d", c, r, got[0],
+                      got[1], got[2], want[0], want[1], want[2]);
+        }
+    CHECK(label_drawn(&d, L.label_x, bar_row(&L, 0.0) - CDL_BITMAP_FONT_GLYPH_HEIGHT, "<=480 lx"));
+    CHECK(label_drawn(&d, L.label_x, L.bar_y - CDL_BITMAP_FONT_GLYPH_HEIGHT, "520 lx"));
+    CHECK(label_drawn(&d, L.label_x, bar_row(&L, 0.5) - CDL_BITMAP_FONT_GLYPH_HEIGHT, "500 lx"));
+    /* Title: the name, then Em (the mean, equal weights), Emin, Emax and
+     * U0 = Emin / Em, worked out here. */
+    double sum = 0.0, hi = 0.0;
+    for (size_t k = 0; k < f.grid.count; ++k) {
+        sum += f.E[k];
+        hi = fmax(hi, f.E[k]);
+    }
+    char stats[160];
+    snprintf(stats, sizeof stats, "Em %.4g lx  Emin %.4g lx  Emax %.4g lx  U0 %.3f", sum / 64.0, 0.0, hi, 0.0);
+    CHECK(label_drawn(&d, 16, L.title_y, "Hall_B"));
+    CHECK_MSG(label_drawn(&d, 16, L.stats_y, stats), "stats line %s", stats);
+    /* Axes: the horizontal one named "+x (m)" under the map's right end,
+     * ticks from 0 to 4 m; the vertical one "+y (m)" above the map. */
+    int map_w = 8 * L.cell, map_h = 8 * L.cell;
+    int name_w = cdl_bitmap_font_text_width("+x (m)", 2);
+    CHECK(label_drawn(&d, L.map_x + map_w - name_w, L.map_y + map_h + 6 + 4 + 14 + 8, "+x (m)"));
+    CHECK(label_drawn(&d, 16, L.map_y - 7 - 8 - 14, "+y (m)"));
+    int zero_w = cdl_bitmap_font_text_width("0", 2), four_w = cdl_bitmap_font_text_width("4", 2);
+    CHECK(label_drawn(&d, L.map_x - zero_w / 2, L.map_y + map_h + 6 + 4, "0"));
+    CHECK(label_drawn(&d, L.map_x + map_w - four_w / 2, L.map_y + map_h + 6 + 4, "4"));
+    free(d.rgb);
+    fixture_free(&f);
 }
 
 int main(void)
@@ -240,6 +309,7 @@ int main(void)
     free(d.rgb);
     fixture_free(&f);
 
+    test_linear(path, view);
     cdl_display_transform_release(view);
     unlink(path);
     return check_finish();

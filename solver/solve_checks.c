@@ -1,0 +1,171 @@
+/* solve_checks.c - no silent zeros: lights that light nothing, dark grids, a scene without light; installed power.
+ *
+ * After a solve, every luminaire (and emitting surface) is asked whether it
+ * reaches any grid point: a delta light at a point in front of the point's
+ * plane whose shadow ray is clear (the same test E uses); an extended light
+ * at a point where its closed form is above 0 and one of up to 16
+ * stratified samples of it is in view. A light that reaches none is named
+ * in a warning that says why: its light meets no grid point (facing away,
+ * the grids outside its beam) or surfaces hide it from every point (above
+ * a ceiling, outside a closed room), and when its position lies far
+ * outside the scene where a thousandth of it would lie inside, that it
+ * looks like millimetres in a scene in metres. A grid at 0 lx everywhere,
+ * and a scene with no light at all, are named too. The warnings go to
+ * summary.json; `candela solve` prints them and --strict refuses them.
+ */
+#include "solver/solve.h"
+#include "solver/solve_checks.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "radiometry/bounds.h"
+#include "solver/direct/direct.h"
+
+/* Samples of an extended light tried per point before calling it hidden there. */
+#define EXTENDED_PROBES 4
+
+typedef enum reach { REACH_NONE, REACH_HIDDEN, REACH_LIT } reach;
+
+/* Does light l reach point p (normal n)? */
+static reach light_reaches(const cdl_direct_context *ctx, size_t l, cdl_light_strategy st, cdl_vec3 p, cdl_vec3 n)
+{
+    const cdl_scene_light *light = &ctx->lights[l];
+    cdl_direct_sample_stats stats = {0};
+    if (cdl_emitter_is_delta(light->emitter)) {
+        cdl_delta_light d;
+        if (!cdl_emitter_eval_delta(light->emitter, p, n, &d) || !(d.E.lx > 0.0)) return REACH_NONE;
+        if (st != CDL_STRATEGY_DELTA_SHADOWED || !ctx->geometry) return REACH_LIT;
+        return cdl_scene_geometry_ray_occluded(ctx->geometry, p, n, d.to_light, d.distance) ? REACH_HIDDEN : REACH_LIT;
+    }
+    (void)stats;
+    cdl_illuminance E;
+    if (cdl_emitter_exact_illuminance(light->emitter, p, n, &E, NULL) != CDL_OK || !(E.lx > 0.0)) return REACH_NONE;
+    if (st == CDL_STRATEGY_EXTENDED_EXACT || !ctx->geometry) return REACH_LIT;
+    for (int j = 0; j < EXTENDED_PROBES; ++j)
+        for (int i = 0; i < EXTENDED_PROBES; ++i) {
+            cdl_light_sample s;
+            double u1 = (i + 0.5) / EXTENDED_PROBES, u2 = (j + 0.5) / EXTENDED_PROBES;
+            if (!cdl_emitter_sample(light->emitter, p, n, u1, u2, &s) || !(s.pdf > 0.0) ||
+                !(cdl_vec3_dot(s.to_light, n) > 0.0))
+                continue;
+            if (!cdl_scene_geometry_ray_occluded(ctx->geometry, p, n, s.to_light, s.distance)) return REACH_LIT;
+        }
+    return REACH_HIDDEN;
+}
+
+/* The box around every grid point and every surface: where the scene is. */
+static cdl_bounds3 scene_box(const cdl_direct_context *ctx, const cdl_solution *out)
+{
+    cdl_bounds3 box = cdl_bounds3_empty();
+    for (size_t g = 0; g < out->grid_count; ++g)
+        for (size_t i = 0; i < out->grids[g].grid.count; ++i) cdl_bounds3_grow(&box, out->grids[g].grid.points[i]);
+    if (ctx->geometry) {
+        cdl_vec3 lo, hi;
+        cdl_scene_geometry_bounds(ctx->geometry, &lo, &hi);
+        cdl_bounds3_grow(&box, lo);
+        cdl_bounds3_grow(&box, hi);
+    }
+    return box;
+}
+
+static int inside(cdl_bounds3 box, cdl_vec3 p, double margin)
+{
+    return p.x >= box.lo.x - margin && p.x <= box.hi.x + margin && p.y >= box.lo.y - margin &&
+           p.y <= box.hi.y + margin && p.z >= box.lo.z - margin && p.z <= box.hi.z + margin;
+}
+
+/* A position far outside the scene (beyond ten times its size) that a
+ * thousandth of would put inside it (with a tenth of its size to spare):
+ * millimetres typed into a scene in metres. */
+static int looks_like_millimetres(cdl_bounds3 box, cdl_vec3 p)
+{
+    double size = fmax(cdl_bounds3_diagonal(box), 1e-3);
+    cdl_vec3 mm = cdl_vec3_scale(p, 1e-3);
+    return !inside(box, p, 10.0 * size) && inside(box, mm, 0.1 * size);
+}
+
+cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_context *ctx, cdl_solution *out,
+                                  cdl_error *err)
+{
+    cdl_status st = CDL_OK;
+    if (ctx->light_count == 0) {
+        return cdl_solution_add_warning(out, err,
+                                        "the scene has no luminaire and no emitting surface: every grid is at 0 lx "
+                                        "(add \"luminaires\", or \"luminance_cd_m2\" to a surface)");
+    }
+    cdl_light_strategy *strategies = calloc(ctx->light_count * (out->grid_count ? out->grid_count : 1),
+                                            sizeof *strategies);
+    reach *best = calloc(ctx->light_count, sizeof *best);
+    if (!strategies || !best) {
+        free(strategies);
+        free(best);
+        return cdl_error_out_of_memory(err);
+    }
+    for (size_t g = 0; g < out->grid_count; ++g)
+        cdl_direct_plan_grid(ctx, out->grids[g].grid.points, out->grids[g].grid.count,
+                             strategies + g * ctx->light_count);
+    for (size_t l = 0; l < ctx->light_count; ++l)
+        for (size_t g = 0; g < out->grid_count && best[l] != REACH_LIT; ++g) {
+            const cdl_grid *grid = &out->grids[g].grid;
+            for (size_t i = 0; i < grid->count && best[l] != REACH_LIT; ++i) {
+                reach r = light_reaches(ctx, l, strategies[g * ctx->light_count + l], grid->points[i],
+                                        grid->normals[i]);
+                if (r > best[l]) best[l] = r;
+            }
+        }
+    cdl_bounds3 box = scene_box(ctx, out);
+    for (size_t l = 0; l < ctx->light_count && st == CDL_OK; ++l) {
+        if (best[l] == REACH_LIT) continue;
+        const cdl_scene_light *light = &ctx->lights[l];
+        char mm[200] = "";
+        if (light->bounded && looks_like_millimetres(box, cdl_bounds3_centre(light->bounds))) {
+            cdl_vec3 c = cdl_bounds3_centre(light->bounds);
+            snprintf(mm, sizeof mm,
+                     "; its position [%.6g, %.6g, %.6g] lies far outside the scene and looks like millimetres: "
+                     "the scene is in metres",
+                     c.x, c.y, c.z);
+        }
+        st = cdl_solution_add_warning(
+            out, err, "%s adds nothing to any grid: %s%s", light->label,
+            best[l] == REACH_NONE
+                ? "its light meets no grid point from the side the point faces (is it facing away, or are the grids "
+                  "outside its beam?)"
+                : "surfaces hide it from every grid point (is it above the ceiling, or outside a closed room?)",
+            mm);
+    }
+    free(best);
+    free(strategies);
+    /* Dark grids: 0 lx at every point (any of their outputs included). */
+    for (size_t g = 0; g < out->grid_count && st == CDL_OK; ++g) {
+        const cdl_grid_solution *gs = &out->grids[g];
+        int lit = 0;
+        for (size_t i = 0; i < gs->grid.count && !lit; ++i)
+            lit = gs->E[i] > 0.0 || (gs->Ez && gs->Ez[i] > 0.0) || (gs->Esz && gs->Esz[i] > 0.0);
+        if (!lit && gs->grid.count > 0)
+            st = cdl_solution_add_warning(out, err,
+                                          "grid '%s' (%s) is dark: 0 lx at every one of its %zu points (no light "
+                                          "reaches the side its points face)",
+                                          scene->grids[g].name, scene->grids[g].json_path, gs->grid.count);
+    }
+    return st;
+}
+
+void cdl_solve_sum_power(const cdl_scene *scene, const cdl_scene_lights *lights, cdl_power_summary *power)
+{
+    memset(power, 0, sizeof *power);
+    for (size_t k = 0; k < scene->luminaire_count; ++k) {
+        cdl_luminaire_kind kind = scene->luminaires[k].kind;
+        if (kind == CDL_LUMINAIRE_DIRECTIONAL || kind == CDL_LUMINAIRE_ENVIRONMENT) continue; /* daylight */
+        const cdl_photometry *ph = lights->luminaire_photometry ? lights->luminaire_photometry[k] : NULL;
+        double w = ph ? cdl_photometry_get_metadata(ph)->input_watts : 0.0;
+        if (w > 0.0) {
+            power->installed_w += w;
+            power->luminaires_counted++;
+        } else {
+            power->luminaires_without_watts++;
+        }
+    }
+}

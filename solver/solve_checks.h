@@ -1,0 +1,21 @@
+/* solve_checks.h - what a solve says besides its numbers (solve_checks.c). */
+#ifndef CANDELA_SOLVER_SOLVE_CHECKS_H
+#define CANDELA_SOLVER_SOLVE_CHECKS_H
+
+#include "radiometry/error.h"
+#include "solver/direct/direct.h"
+#include "solver/scene/scene.h"
+#include "solver/scene/scene_lights.h"
+#include "solver/solution.h"
+
+/* Warnings (cdl_solution_add_warning) for every light that reaches no
+ * grid point, saying why, every grid at 0 lx, and a scene without light.
+ * ctx is the solve's direct context; out holds the solved grids. */
+cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_context *ctx, cdl_solution *out,
+                                  cdl_error *err);
+
+/* Installed power: the input watts of every placed luminaire whose file
+ * gives them; the others counted apart. */
+void cdl_solve_sum_power(const cdl_scene *scene, const cdl_scene_lights *lights, cdl_power_summary *power);
+
+#endif
