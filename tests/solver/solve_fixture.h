@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "radiometry/constants.h"
 #include "solver/solve.h"
 
 /* Solve `json` (relative paths against CANDELA_TEST_TMPDIR); 0 on failure,
@@ -185,6 +186,23 @@ static inline void fixture_check_all(const cdl_solution *sol, double expected, i
             if (gs->E_stderr[i] > 0.0) calibration_add(tally, v, expected, gs->E_stderr[i], target);
         }
     }
+}
+
+/* The integrating sphere (fixture_sphere_scene, n points) solved by
+ * `method` to `target` on 2 threads, every point's E_indirect against the
+ * sphere's equation rho Phi / (A (1 - rho)), A = 4 pi r^2 (r = 1; e.g.
+ * Ohno, OSA Handbook of Optics, "Integrating sphere"), `flux` the light's
+ * Phi, each sampled point tallied. */
+static inline void fixture_sphere_check(double rho, const char *luminaire, double flux, int n, const char *method,
+                                        double target, calibration *tally, const char *label)
+{
+    static char json[32768];
+    fixture_sphere_scene(json, sizeof json, rho, luminaire, n, method, target);
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!fixture_solve(json, &scene, &sol, 2)) return;
+    fixture_check_all(&sol, rho * flux / (4.0 * CDL_PI * (1.0 - rho)), 1, tally, 0.0, label);
+    fixture_release(scene, &sol);
 }
 
 #endif

@@ -13,12 +13,7 @@
 # direct only and says why; a budget too small for the reference is exit 1
 # naming the time it needs.
 # ctest-timeout: 120
-set -u
-: "${CANDELA:?}"
-fail=0
-check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/harness.sh"
 cd "$tmp" || exit 1
 
 # 24 points spread over the wall (a Fibonacci lattice), 0.999 m from the

@@ -6,12 +6,7 @@
 # what is wrong) and the file left as it was; no temporary file remains, even
 # after a run killed part-way.
 # ctest-timeout: 120
-set -u
-: "${CANDELA:?}"
-fail=0
-check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/harness.sh"
 cd "$tmp" || exit 1
 
 # A closed box (rho 0.5), one point light, a 20 x 20 floor grid by the cache.

@@ -3,12 +3,7 @@
 # illuminance equals the closed form computed here from the unit's
 # definition, and a unit that does not fit the field (or does not exist) is
 # refused with exit status 1 and a message naming the file and JSON path.
-set -u
-: "${CANDELA:?}"
-fail=0
-check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/harness.sh"
 
 # scene NAME LUMINAIRE: one luminaire, one probe at the origin facing up.
 scene() {

@@ -64,15 +64,9 @@ static void test_furnace(double rho, double target)
  * inside it; n points on the wall facing the centre. */
 static void test_sphere(double rho, const char *luminaire, double flux, int n, double target, const char *what)
 {
-    static char json[32768];
-    fixture_sphere_scene(json, sizeof json, rho, luminaire, n, "icache", target);
-    cdl_scene *scene;
-    cdl_solution sol;
-    if (!fixture_solve(json, &scene, &sol, 2)) return;
     char label[128];
     snprintf(label, sizeof label, "icache sphere (%s) rho %g, indirect", what, rho);
-    fixture_check_all(&sol, rho * flux / (4.0 * CDL_PI * (1.0 - rho)), 1, &tally, 0.0, label);
-    fixture_release(scene, &sol);
+    fixture_sphere_check(rho, luminaire, flux, n, "icache", target, &tally, label);
 }
 
 /* The open white furnace: white (rho 1) two-sided plates under a uniform
