@@ -276,12 +276,17 @@ static void test_round_trips(void)
             cdl_photometry *r = second ? pc_read_text("second", second, strlen(second), 0, &err) : NULL;
             CHECK_MSG(r != NULL, "%s: %s", expected[k].file, err.message);
             if (r) {
+                /* A ballast factor EULUMDAT cannot hold is folded into its
+                 * lamp flux: the light (flux x output factor) is kept, the
+                 * table scaled by the factor. */
+                double kp = cdl_photometry_output_factor(p), kr = cdl_photometry_output_factor(r);
                 if (t.type == CDL_PHOTOMETRIC_TYPE_C) {
-                    CHECK_MSG(pc_node_difference(p, r) <= 1e-8 * max, "%s: stored values moved by %g cd",
-                              expected[k].file, pc_node_difference(p, r));
-                    CHECK_REL(cdl_photometry_flux(r).lm, flux, 1e-3);
+                    if (kp == kr)
+                        CHECK_MSG(pc_node_difference(p, r) <= 1e-8 * max, "%s: stored values moved by %g cd",
+                                  expected[k].file, pc_node_difference(p, r));
+                    CHECK_REL(cdl_photometry_flux(r).lm * kr, flux * kp, 1e-3);
                 } else {
-                    CHECK_REL(cdl_photometry_flux(r).lm, flux, 5e-3);
+                    CHECK_REL(cdl_photometry_flux(r).lm * kr, flux * kp, 5e-3);
                 }
             }
             cdl_photometry_release(q);
