@@ -20,6 +20,7 @@ typedef struct cdl_grid_solution {
     double *E, *E_direct, *E_indirect, *E_stderr;
     double *ao;                       /* NULL unless asked for */
     double *Ez, *Esz;                 /* cylindrical, semicylindrical illuminance (lux); NULL unless asked for */
+    double *Ez_stderr, *Esz_stderr;   /* their standard errors where part of them is sampled; NULL where exact */
     double *L;                        /* luminance rho E / pi of the surface under each point (cd/m^2); NULL
                                          unless asked for */
     double *rho;                      /* with L: the reflectance of that surface at each point */
@@ -70,6 +71,9 @@ cdl_status cdl_grid_solution_alloc(cdl_grid_solution *gs, int want_ao, cdl_error
 /* Zeroed arrays for the outputs `spec` asks for beyond E and ao:
  * Ez, Esz, and L with rho. */
 cdl_status cdl_grid_solution_alloc_outputs(cdl_grid_solution *gs, const cdl_grid_spec *spec, cdl_error *err);
+
+/* Zeroed Ez_stderr / Esz_stderr for the vertical outputs gs has. */
+cdl_status cdl_grid_solution_alloc_vertical_stderr(cdl_grid_solution *gs, cdl_error *err);
 
 /* Append a warning (printf-style); CDL_ERR_INTERNAL when out of memory. */
 cdl_status cdl_solution_add_warning(cdl_solution *solution, cdl_error *err, const char *fmt, ...) CDL_PRINTF(3, 4);
