@@ -16,6 +16,7 @@
 #include "solver/direct/direct.h"
 #include "solver/output/grid_result.h"
 #include "solver/output/solution_write.h"
+#include "solver/scene/exr_image.h"
 #include "solver/solve.h"
 #include "solver/solve_fixture.h"
 
@@ -161,6 +162,52 @@ static void test_shadowed_spot(void)
     fixture_release(scene, &sol);
 }
 
+/* Each extra output is an EXR channel holding the same values (as
+ * floats) at every raster pixel, and absent when not asked for. */
+static void check_exr_channels(const cdl_scene *scene, const cdl_solution *sol, const char *folder)
+{
+    char dir[512], path[600];
+    snprintf(dir, sizeof dir, "%s/%s", CANDELA_TEST_TMPDIR, folder);
+    cdl_error err;
+    cdl_error_clear(&err);
+    CHECK(cdl_solution_prepare_folder(dir, &err) == CDL_OK);
+    CHECK(cdl_solution_write(scene, sol, dir, NULL, &err) == CDL_OK);
+    const cdl_grid_solution *g = &sol->grids[0];
+    snprintf(path, sizeof path, "%s/%s.exr", dir, scene->grids[0].name);
+    cdl_exr_image img;
+    if (cdl_exr_read(path, &img, &err) != CDL_OK) {
+        CHECK_MSG(0, "%s", err.message);
+        return;
+    }
+    const struct {
+        const char *name;
+        const double *values;
+    } channels[] = {{"Ez", g->Ez}, {"Esz", g->Esz}, {"L", g->L}};
+    for (size_t c = 0; c < 3; ++c) {
+        const float *plane = cdl_exr_image_channel(&img, channels[c].name);
+        CHECK_MSG((plane != NULL) == (channels[c].values != NULL), "channel %s", channels[c].name);
+        for (int k = 0; plane && channels[c].values && k < img.width * img.height; ++k) {
+            int32_t idx = g->grid.raster_index[k];
+            if (idx >= 0) CHECK(plane[k] == (float)channels[c].values[idx]);
+        }
+    }
+    cdl_exr_image_release(&img);
+}
+
+/* A rect grid asking for both vertical outputs gets both channels. */
+static void test_vertical_channels(void)
+{
+    const char *json =
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"point\", \"position\": [1, 1, 3], \"intensity_cd\": 700}],"
+        " \"grids\": [{\"name\": \"v\", \"type\": \"rect\", \"origin\": [0, 0, 1.5], \"u\": [4, 0, 0], \"v\": [0, 3, 0],"
+        " \"nu\": 8, \"nv\": 6, \"normal\": [0, -1, 0], \"outputs\": [\"cylindrical\", \"semicylindrical\"]}]}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
+    check_exr_channels(scene, &sol, "outputs_vertical");
+    fixture_release(scene, &sol);
+}
+
 /* L = rho E / pi on a grid lying on a floor of reflectance 0.35. */
 static void test_luminance(void)
 {
@@ -185,6 +232,7 @@ static void test_luminance(void)
          * multiplication and division more. */
         CHECK_REL(g->L[i], 0.35 * E / CDL_PI, 1e-12);
     }
+    check_exr_channels(scene, &sol, "outputs_luminance");
     fixture_release(scene, &sol);
 }
 
@@ -422,6 +470,7 @@ int main(void)
     test_shadowed_spot();
     test_luminance();
     test_refusals();
+    test_vertical_channels();
     test_sampled_vertical();
     test_polygon_area_column();
     return check_finish();
