@@ -17,11 +17,17 @@
  * cos alpha); theta by inverting its distribution F(theta) = (theta -
  * sin theta cos theta) / pi, phi uniform; stratified in (F, phi).
  *
- * L(w): the first surface along w (Embree); an area emitter or emitting
- * surface that is that surface gives its luminance, a sky its luminance
- * when nothing is hit; and where interreflection is modelled, one path
- * from the point along w (transport/path.h) estimates pi times the
- * reflected radiance of that surface. Each point is sampled as the path
+ * L(w): a sky's luminance when nothing is hit along w (Embree); and where
+ * interreflection is modelled, one path from the point along w
+ * (transport/path.h) estimates pi times the reflected radiance of the
+ * first surface hit. Area emitters and emitting surfaces, often small,
+ * are sampled on themselves instead (their own samplers, emitter.h),
+ * each sample w with its solid-angle pdf adding L (sin theta / pi) / pdf
+ * to E_z and L (sin theta + w_h . f) / (pi pdf) to E_sz when unshadowed;
+ * the samplers cover one half-space of directions at a time, so each
+ * sample is drawn twice, for the half-spaces either side of the plane
+ * across the direction to the emitter, and the two added (each direction
+ * lies in exactly one). Each point is sampled as the path
  * tracer samples E: a pilot of 8 x 8 strata decides how many samples the
  * point needs for the target on E_z, one stage of that many is reported
  * with its standard error (radiometry/estimate.h).
@@ -31,6 +37,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "radiometry/bounds.h"
 #include "radiometry/constants.h"
 #include "radiometry/estimate.h"
 #include "radiometry/rng.h"
@@ -70,13 +77,11 @@ static sample_value radiance_along(const cdl_vertical_context *ctx, cdl_rng_key 
     if (ctx->path.geometry) stats->rays++;
     for (size_t l = 0; l < d->light_count; ++l) {
         const cdl_scene_light *light = &d->lights[l];
-        if (cdl_emitter_is_delta(light->emitter)) continue;
+        if (!light->is_environment) continue; /* area emitters: emitter_samples */
         double L = cdl_emitter_radiance(light->emitter, p, w, w, NULL).cd_m2;
         if (!(L > 0.0)) continue;
         s.potential += CDL_PI * L;
-        int seen = light->is_environment ? !hit_any : (!hit_any && !ctx->path.geometry) ||
-                                                          (hit_any && hit.geom_id == light->owner);
-        if (seen) s.L += L;
+        if (!hit_any) s.L += L;
     }
     if (ctx->indirect && hit_any) {
         cdl_path_result r;
@@ -86,6 +91,38 @@ static sample_value radiance_along(const cdl_vertical_context *ctx, cdl_rng_key 
         s.potential += r.potential;
     }
     return s;
+}
+
+/* The area emitters' part of one sample (u in [0, 1)^2): E_z and E_sz
+ * contributions, and what they would be unshadowed (*potential). */
+static void emitter_samples(const cdl_vertical_context *ctx, cdl_vec3 p, cdl_vec3 facing, const double u[2],
+                            double *fz, double *fsz, double *potential, cdl_path_stats *stats)
+{
+    const cdl_direct_context *d = ctx->path.direct;
+    for (size_t l = 0; l < d->light_count; ++l) {
+        const cdl_scene_light *light = &d->lights[l];
+        if (light->is_environment || cdl_emitter_is_delta(light->emitter)) continue;
+        cdl_vec3 a = cdl_vec3_sub(cdl_bounds3_centre(light->bounds), p);
+        double len = cdl_vec3_length(a);
+        a = len > 0.0 ? cdl_vec3_scale(a, 1.0 / len) : cdl_vec3_make(0, 0, 1);
+        for (int h = 0; h < 2; ++h) {
+            cdl_vec3 n = h ? cdl_vec3_neg(a) : a;
+            cdl_light_sample smp;
+            if (!cdl_emitter_sample(light->emitter, p, n, u[0], u[1], &smp) || !(smp.pdf > 0.0)) continue;
+            if (!(cdl_vec3_dot(n, smp.to_light) > 0.0)) continue;
+            cdl_vec3 w = smp.to_light;
+            double st = sqrt(w.x * w.x + w.y * w.y);
+            double gz = smp.L.cd_m2 * st / (CDL_PI * smp.pdf);
+            double gsz = smp.L.cd_m2 * (st + w.x * facing.x + w.y * facing.y) / (CDL_PI * smp.pdf);
+            *potential += gz;
+            if (ctx->path.geometry) {
+                stats->rays++;
+                if (cdl_scene_geometry_ray_occluded(ctx->path.geometry, p, n, w, smp.distance)) continue;
+            }
+            *fz += gz;
+            *fsz += gsz;
+        }
+    }
 }
 
 /* One round of k x k strata, two samples each. */
@@ -111,6 +148,11 @@ static void vertical_round(const cdl_vertical_context *ctx, uint64_t stream, uin
                 fz[s] = CDL_PI * v.L;
                 fsz[s] = CDL_PI * v.L * (1.0 + cos_alpha);
                 *potential_sum += v.potential;
+                /* the area emitters, on the same stratum of their own samplers */
+                double ue[2];
+                cdl_rng_uniform2(key, 1, ue);
+                double ue_s[2] = {(i + ue[0]) / k, (j + ue[1]) / k};
+                emitter_samples(ctx, p, facing, ue_s, &fz[s], &fsz[s], potential_sum, stats);
             }
             cdl_round_add_pair(&rz, fz[0], fz[1]);
             cdl_round_add_pair(&rsz, fsz[0], fsz[1]);

@@ -381,6 +381,49 @@ static void test_sampled_vertical(void)
     }
 }
 
+/* A small panel (0.3 x 0.3 m, 2000 cd/m2, facing down at 2.5 m) half
+ * hidden by an opaque plate at 2.3 m: E_z by the midpoint rule on 300 x
+ * 300 cells of the panel, each counted where the segment to the point
+ * misses the plate (tested here, in closed form, at the plate's height). */
+static void test_shadowed_panel(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [-1, -1, 2.3], \"u\": [1.15, 0, 0], "
+        "\"v\": [0, 2, 0], \"reflectance\": 0}], \"luminaires\": [{\"type\": \"area\", \"shape\": {\"type\": "
+        "\"rect\", \"origin\": [0, 0, 2.5], \"u\": [0, 0.3, 0], \"v\": [0.3, 0, 0]}, \"luminance_cd_m2\": 2000}], "
+        "\"grids\": [{\"name\": \"c\", \"type\": \"points\", \"outputs\": [\"cylindrical\", \"semicylindrical\"], "
+        "\"points\": [{\"p\": [0.3, 0.1, 1.0], \"n\": [-1, 0, 0]}, {\"p\": [1.5, -0.4, 0.5], \"n\": [0, 1, 0]}]}], "
+        "\"solver\": {\"quality\": \"draft\"}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
+    const cdl_grid_solution *g = &sol.grids[0];
+    for (size_t i = 0; g->Ez_stderr && i < 2; ++i) {
+        cdl_vec3 p = g->grid.points[i], f = g->grid.normals[i];
+        double ez = 0.0, esz = 0.0, dA = (0.3 / 300.0) * (0.3 / 300.0);
+        for (int a = 0; a < 300; ++a)
+            for (int b = 0; b < 300; ++b) {
+                cdl_vec3 q = cdl_vec3_make(0.3 * (a + 0.5) / 300.0, 0.3 * (b + 0.5) / 300.0, 2.5);
+                cdl_vec3 r = cdl_vec3_sub(q, p);
+                double t = (2.3 - p.z) / r.z; /* where the segment crosses the plate's plane */
+                double x = p.x + t * r.x, y = p.y + t * r.y;
+                if (x >= -1.0 && x <= 0.15 && y >= -1.0 && y <= 1.0) continue;
+                double r2 = cdl_vec3_dot(r, r), rl = sqrt(r2);
+                double w_h = sqrt(r.x * r.x + r.y * r.y) / rl, along = (r.x * f.x + r.y * f.y) / rl;
+                double dw = (r.z / rl) * dA / r2;
+                ez += 2000.0 * w_h * dw / CDL_PI;
+                esz += 2000.0 * (w_h + along) * dw / CDL_PI;
+            }
+        CHECK_MSG(within_sigma(g->Ez[i], g->Ez_stderr[i], ez, 4.0), "half-hidden panel %zu: Ez %g +- %g, exact %g", i,
+                  g->Ez[i], g->Ez_stderr[i], ez);
+        CHECK_MSG(within_sigma(g->Esz[i], g->Esz_stderr[i], esz, 4.0), "half-hidden panel %zu: Esz %g +- %g, exact %g",
+                  i, g->Esz[i], g->Esz_stderr[i], esz);
+        printf("half-hidden panel: Ez %.6g lx +- %.3g (quadrature %.6g, %.2f sigma), Esz %.6g +- %.3g (%.6g)\n", g->Ez[i],
+               g->Ez_stderr[i], ez, (g->Ez[i] - ez) / g->Ez_stderr[i], g->Esz[i], g->Esz_stderr[i], esz);
+    }
+    fixture_release(scene, &sol);
+}
+
 /* Outputs that cannot be computed are refused with the grid's JSON path
  * and what is missing, never returned as a part. */
 static void expect_refusal(const char *json, const char *fragment)
@@ -472,6 +515,7 @@ int main(void)
     test_refusals();
     test_vertical_channels();
     test_sampled_vertical();
+    test_shadowed_panel();
     test_polygon_area_column();
     return check_finish();
 }
