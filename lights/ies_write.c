@@ -153,7 +153,8 @@ static void write_keywords(cdl_text *out, const cdl_photometry *p, int version, 
     static const char *const required[4] = {"TEST", "TESTLAB", "ISSUEDATE", "MANUFAC"};
     if (m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT) {
         keyword(out, "TEST", m->ldt_report);
-        keyword(out, "TESTLAB", "");
+        const char *lab = cdl_photometry_keyword_value(p, "TESTLAB"); /* split off line 12 by the reader */
+        keyword(out, "TESTLAB", lab ? lab : "");
         keyword(out, "ISSUEDATE", m->ldt_date_user);
         keyword(out, "MANUFAC", m->ldt_company);
         if (m->ldt_luminaire_number[0]) keyword(out, "LUMCAT", m->ldt_luminaire_number);

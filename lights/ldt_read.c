@@ -126,6 +126,13 @@ static cdl_status read_header(ldt_reader *r, ldt_header *h)
     TRY(text_field(r, "the luminaire number (line 10)", m->ldt_luminaire_number, sizeof m->ldt_luminaire_number));
     TRY(text_field(r, "the file name (line 11)", m->ldt_file_name, sizeof m->ldt_file_name));
     TRY(text_field(r, "the date and user (line 12)", m->ldt_date_user, sizeof m->ldt_date_user));
+    /* A test lab written by Candela from an IES [TESTLAB] (ldt_write.c). */
+    char *lab = strstr(m->ldt_date_user, CDL_LDT_TESTLAB_MARK);
+    if (lab) {
+        const char *name = lab + strlen(CDL_LDT_TESTLAB_MARK);
+        if (cdl_photometry_add_keyword(r->p, "TESTLAB", 7, name, strlen(name)) != CDL_OK) return oom(r);
+        *lab = '\0';
+    }
     static const char *const dims[3] = {"the luminaire length or diameter in mm (line 13)",
                                         "the luminaire width in mm (line 14)", "the luminaire height in mm (line 15)"};
     for (int k = 0; k < 3; ++k) TRY(number_field(r, dims[k], 1, 0.0, &m->ldt_luminaire_mm[k]));

@@ -11,6 +11,7 @@
  * converters write them (FORMAT_NOTES 3.3). Lines end in CR LF.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -52,18 +53,30 @@ static double spacing(const double *x, size_t n, double period)
     return step;
 }
 
+/* The lamp flux an IES file's table is relative to: the rated flux, or
+ * for absolute photometry the table's own (cd/klm of the luminaire). */
+static double ballast_reference_flux(const cdl_photometry *p)
+{
+    double phi = p->meta.absolute ? p->flux_lm : p->meta.rated_lamp_flux_lm;
+    return phi > 0.0 ? phi : p->flux_lm > 0.0 ? p->flux_lm : 1000.0;
+}
+
 static void ies_notes(const cdl_photometry *p, cdl_photometry_notes *lost)
 {
     const cdl_photometry_metadata *m = &p->meta;
     if (m->tilt_count > 0) cdl_photometry_note(lost, "TILT data (%zu angles) has no EULUMDAT field", m->tilt_count);
     double factor = cdl_photometry_output_factor(p);
     if (factor != 1.0)
-        cdl_photometry_note(lost, "ballast factor %g has no EULUMDAT field: the table is written as measured", factor);
+        cdl_photometry_note(lost,
+                            "ballast factor %g has no EULUMDAT field: folded into the lamp flux (line 29: %.6g lm x "
+                            "%g = %.6g lm), so the luminaire gives the same light; the intensities stay per 1000 lm "
+                            "of the rated lamps",
+                            factor, ballast_reference_flux(p), factor, ballast_reference_flux(p) * factor);
     if (m->format == CDL_PHOTOMETRY_FORMAT_IES && m->ies_version >= 2019 && m->file_generation_type != 0.0)
         cdl_photometry_note(lost, "the LM-63-2019 file generation type %.5f has no EULUMDAT field",
                             m->file_generation_type);
     size_t kept = 0;
-    static const char *const mapped[] = {"TEST", "MANUFAC", "LUMCAT", "LUMINAIRE", "ISSUEDATE", "LAMP"};
+    static const char *const mapped[] = {"TEST", "TESTLAB", "MANUFAC", "LUMCAT", "LUMINAIRE", "ISSUEDATE", "LAMP"};
     for (size_t i = 0; i < m->keyword_count; ++i) {
         int is_mapped = 0;
         for (size_t k = 0; k < sizeof mapped / sizeof *mapped; ++k)
@@ -71,8 +84,8 @@ static void ies_notes(const cdl_photometry *p, cdl_photometry_notes *lost)
         if (!is_mapped) ++kept;
     }
     if (kept)
-        cdl_photometry_note(lost, "%zu IES keyword lines other than [TEST] [MANUFAC] [LUMCAT] [LUMINAIRE] [ISSUEDATE] "
-                                  "[LAMP] have no EULUMDAT field",
+        cdl_photometry_note(lost, "%zu IES keyword lines other than [TEST] [TESTLAB] [MANUFAC] [LUMCAT] [LUMINAIRE] "
+                                  "[ISSUEDATE] [LAMP] have no EULUMDAT field",
                             kept);
     switch (m->opening.shape) {
     case CDL_LUMINOUS_SHAPE_POINT:
@@ -157,7 +170,12 @@ cdl_status cdl_photometry_format_ldt(const cdl_photometry *p, const cdl_photomet
     text_line(&out, options && options->file_name ? options->file_name : m->ldt_file_name, "file name (line 11)", lost);
     const char *date = from_ldt ? m->ldt_date_user
                                 : keyword_or(p, "ISSUEDATE", keyword_or(p, "DATE", keyword_or(p, "TESTDATE", "")));
-    text_line(&out, date, "date and user (line 12)", lost);
+    /* The test lab has no EULUMDAT field: it goes with the date (line 12),
+     * after CDL_LDT_TESTLAB_MARK, where the reader finds it again. */
+    const char *lab = from_ldt ? "" : keyword_or(p, "TESTLAB", "");
+    char date_lab[512];
+    snprintf(date_lab, sizeof date_lab, "%s%s%s", date, lab[0] ? CDL_LDT_TESTLAB_MARK : "", lab);
+    text_line(&out, date_lab, "date and user (line 12)", lost);
     /* lines 13-21: dimensions in mm */
     const cdl_luminous_opening *o = &m->opening;
     int circular = is_round(o->shape);
@@ -194,7 +212,8 @@ cdl_status cdl_photometry_format_ldt(const cdl_photometry *p, const cdl_photomet
         int lamps = s->count != 0 ? abs(s->count) : 1;
         cdl_text_printf(&out, "1\r\n%d\r\n", m->absolute ? -lamps : lamps);
         text_line(&out, s->type, "lamp type", lost);
-        number_line(&out, phi_ref);
+        /* The ballast factor folded in: the same light from the same table (ies_notes). */
+        number_line(&out, phi_ref * cdl_photometry_output_factor(p));
         cdl_text_printf(&out, "\r\n\r\n");
         number_line(&out, m->input_watts);
         for (int k = 0; k < 10; ++k) cdl_text_printf(&out, "0\r\n");

@@ -297,6 +297,13 @@ typedef struct cdl_photometry_metadata {
     double ldt_lorl_percent;       /* light output ratio as stated */
     double ldt_measurement_tilt_deg;
     double ldt_direct_ratios[10];  /* for room indices 0.60 ... 5.00 */
+    /* Radiometric files (photometry_units.c): the table is radiant
+     * intensity, radiometric_scale W/sr per unit (1 for W/sr, 1e-3 for
+     * mW/sr), as a keyword named units_keyword says; its "flux" is then
+     * radiant flux in W / radiometric_scale, not lumens. */
+    int radiometric;
+    double radiometric_scale;
+    char units_keyword[64];
 } cdl_photometry_metadata;
 
 /* The file data. Never NULL for a valid photometry. */
@@ -340,6 +347,21 @@ typedef struct cdl_photometry_summary {
     double field_angle_deg[2];
     int efficacy_known;
     cdl_luminous_efficacy efficacy;          /* flux x output factor / input watts */
+    /* Where the beam and field angles are measured: spread_about_peak 0,
+     * in the C0-C180 and C90-C270 planes through nadir; 1 (a maximum off
+     * nadir: batwing, asymmetric, wall-pack and flood distributions), in
+     * the vertical plane through the peak ([0]) and the plane across it
+     * through the peak ([1]). Either way about the peak of that plane and
+     * undefined (-1) when the half (tenth) level does not close within
+     * 180 degrees. */
+    int spread_about_peak;
+    double spread_axis_c_deg, spread_axis_gamma_deg; /* the peak, when about it */
+    /* Radiometric files (metadata.radiometric): the table's integral and
+     * maximum as what they are; flux and max_intensity then hold the same
+     * numbers in the table's unit and are not luminous. */
+    int radiometric;
+    cdl_radiant_flux radiant_flux;
+    cdl_radiant_intensity max_radiant_intensity;
 } cdl_photometry_summary;
 
 /* Fill *summary (caller's) with the figures above, all from the table
@@ -392,6 +414,18 @@ cdl_status cdl_photometry_format_ies(const cdl_photometry *photometry, const cdl
                                      char **text, size_t *length, cdl_photometry_notes *lost, cdl_error *err);
 cdl_status cdl_photometry_format_ldt(const cdl_photometry *photometry, const cdl_photometry_write_options *options,
                                      char **text, size_t *length, cdl_photometry_notes *lost, cdl_error *err);
+
+/* ---- plotting (photometry_plot.c) ---------------------------------------- */
+
+/* The polar intensity diagram as SVG at `path` (atomically): the C0-C180
+ * (solid) and C90-C270 (dashed) planes in cd/klm, nadir down, `title` on
+ * top. */
+cdl_status cdl_photometry_write_polar_svg(const cdl_photometry *photometry, const char *title, const char *path,
+                                          cdl_error *err);
+/* The diagram's scale: its outer ring's value (a 1-2-5 value at or above
+ * the largest cd/klm), and in *per_klm the factor from cd to cd/klm
+ * (1000 / the rated lamp flux, or the table's flux for absolute photometry). */
+double cdl_photometry_plot_scale(const cdl_photometry *photometry, double *per_klm);
 
 /* Write a file atomically (temporary name, then rename). */
 cdl_status cdl_photometry_write_file(const cdl_photometry *photometry, const char *path, cdl_photometry_format format,

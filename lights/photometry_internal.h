@@ -95,6 +95,14 @@ cdl_status cdl_photometry_full_planes(const cdl_photometry *p, double **c, size_
  * blanks, always NUL-terminated. */
 void cdl_photometry_copy_text(char *dst, size_t dst_size, const char *src, size_t len);
 
+/* Where an IES file's [TESTLAB] goes in EULUMDAT, which has no field for
+ * it: after the date on line 12 ("2026-01-01, test lab: Lab name"); the
+ * EULUMDAT reader splits it back off into a TESTLAB keyword. */
+#define CDL_LDT_TESTLAB_MARK ", test lab: "
+
+/* Set meta.radiometric from the keywords (photometry_units.c). */
+void cdl_photometry_detect_units(cdl_photometry *p);
+
 /* Case-insensitive ASCII comparison of NUL-terminated strings. */
 int cdl_photometry_strcaseeq(const char *a, const char *b);
 

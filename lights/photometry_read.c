@@ -84,6 +84,7 @@ cdl_status cdl_photometry_read_memory(const void *bytes, size_t size, const char
     if (!p) return cdl_error_out_of_memory(err);
     cdl_status st = format == FORMAT_IES ? cdl_ies_read(data, size, name, options, p, err)
                                          : cdl_ldt_read(data, size, name, options, p, err);
+    if (st == CDL_OK) cdl_photometry_detect_units(p);
     if (st == CDL_OK && cdl_photometry_check_consistency(p, source) != CDL_OK) st = cdl_error_out_of_memory(err);
     if (st == CDL_OK && options->strict && p->warning_count > 0)
         st = cdl_error_set(err, CDL_ERR_INPUT, "%s (an error with --strict)", p->warnings[0]);

@@ -48,6 +48,14 @@ cdl_status cdl_solution_add_warning(cdl_solution *s, cdl_error *err, const char 
     return CDL_OK;
 }
 
+cdl_status cdl_grid_solution_alloc_vertical_stderr(cdl_grid_solution *gs, cdl_error *err)
+{
+    size_t n = gs->grid.count ? gs->grid.count : 1;
+    if (gs->Ez && !(gs->Ez_stderr = calloc(n, sizeof(double)))) return cdl_error_out_of_memory(err);
+    if (gs->Esz && !(gs->Esz_stderr = calloc(n, sizeof(double)))) return cdl_error_out_of_memory(err);
+    return CDL_OK;
+}
+
 void cdl_solution_release(cdl_solution *s)
 {
     if (!s) return;
@@ -61,6 +69,8 @@ void cdl_solution_release(cdl_solution *s)
         free(gs->ao);
         free(gs->Ez);
         free(gs->Esz);
+        free(gs->Ez_stderr);
+        free(gs->Esz_stderr);
         free(gs->L);
         free(gs->rho);
     }

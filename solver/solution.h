@@ -25,6 +25,7 @@ typedef struct cdl_grid_solution {
     double *E, *E_direct, *E_indirect, *E_stderr;
     double *ao;                       /* NULL unless asked for */
     double *Ez, *Esz;                 /* cylindrical, semicylindrical illuminance (lux); NULL unless asked for */
+    double *Ez_stderr, *Esz_stderr;   /* their standard errors where part of them is sampled; NULL where exact */
     double *L;                        /* luminance rho E / pi of the surface under each point (cd/m^2); NULL
                                          unless asked for */
     double *rho;                      /* with L: the reflectance of that surface at each point */
@@ -76,6 +77,10 @@ cdl_status cdl_grid_solution_alloc(cdl_grid_solution *gs, int want_ao, cdl_error
  * Ez, Esz, and L with rho. Ownership: the grid solution's (released with
  * the solution). Errors: CDL_ERR_OUT_OF_MEMORY. */
 cdl_status cdl_grid_solution_alloc_outputs(cdl_grid_solution *gs, const cdl_grid_spec *spec, cdl_error *err);
+
+/* Zeroed Ez_stderr / Esz_stderr for the vertical outputs gs has. Ownership:
+ * the grid solution's. Errors: CDL_ERR_OUT_OF_MEMORY. */
+cdl_status cdl_grid_solution_alloc_vertical_stderr(cdl_grid_solution *gs, cdl_error *err);
 
 /* Append a warning (printf-style) to the solution's list; CDL_ERR_INTERNAL
  * when out of memory. Not thread-safe for one solution. */

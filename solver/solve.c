@@ -22,6 +22,7 @@
 #include "solver/scene/scene_lights.h"
 #include "solver/scene/scene_occluders.h"
 #include "solver/solve_checks.h"
+#include "solver/transport/vertical_sampled.h"
 
 /* Ambient-occlusion samples per point implied by the quality level (an
  * explicit ao_samples overrides). Direct light samples to the target. */
@@ -171,33 +172,20 @@ static cdl_status check_finite(const cdl_scene *scene, const cdl_scene_lights *l
 
 /* ---- outputs beyond E ------------------------------------------------------------ */
 
-/* Cylindrical and semicylindrical illuminance are computed for delta lights
- * (direct_vertical.c); a grid asking for them where other light would
- * reach it is refused, naming what is missing, rather than given a part. */
+/* Cylindrical and semicylindrical illuminance: exact for delta lights
+ * (direct_vertical.c), sampled for the rest (transport/vertical_sampled.c).
+ * A semicylinder needs a horizontal direction to face. *sampled: whether
+ * the grid's vertical outputs need the sampled part (extended emitters,
+ * skies, or interreflection). */
 static cdl_status check_vertical_outputs(const cdl_scene *scene, const cdl_scene_lights *lights, int indirect,
-                                         size_t g, const cdl_grid *grid, cdl_error *err)
+                                         size_t g, const cdl_grid *grid, int *sampled, cdl_error *err)
 {
     const cdl_grid_spec *spec = &scene->grids[g];
+    *sampled = 0;
     if (!spec->want_cylindrical && !spec->want_semicylindrical) return CDL_OK;
-    const char *what = spec->want_cylindrical ? "cylindrical" : "semicylindrical";
+    *sampled = indirect;
     for (size_t l = 0; l < lights->count; ++l)
-        if (!cdl_emitter_is_delta(lights->emitters[l]))
-            return cdl_error_set(err, CDL_ERR_INPUT,
-                                 "%s: %s.outputs: expected lights Candela can give %s illuminance for (point, spot, "
-                                 "goniometric, directional), found %s, a%s %s emitter: %s illuminance from area "
-                                 "emitters, skies and emitting surfaces is not built yet",
-                                 scene->path, spec->json_path, what, lights->lights[l].label,
-                                 lights->kinds[l][0] == 'a' || lights->kinds[l][0] == 'e' ? "n" : "",
-                                 lights->kinds[l], what);
-    if (indirect) {
-        double rho = 0.0;
-        const char *reflector = cdl_solve_first_reflector(scene, &rho);
-        return cdl_error_set(err, CDL_ERR_INPUT,
-                             "%s: %s.outputs: expected a scene without interreflection for %s illuminance, found %s "
-                             "reflecting %g %%: interreflected %s illuminance is not built yet (\"method\": "
-                             "\"direct\" gives its direct part)",
-                             scene->path, spec->json_path, what, reflector ? reflector : "a surface", rho * 100.0, what);
-    }
+        if (!cdl_emitter_is_delta(lights->emitters[l])) *sampled = 1;
     if (spec->want_semicylindrical)
         for (size_t i = 0; i < grid->count; ++i) {
             cdl_vec3 facing;
@@ -447,6 +435,12 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     cdl_icache_stats ic_stats;
     memset(&ic_stats, 0, sizeof ic_stats);
     cJSON *inter_grids = cJSON_AddObjectToObject(cJSON_GetObjectItem(plan, "interreflection"), "grids");
+    cJSON *plan_vertical = cJSON_AddObjectToObject(plan, "vertical");
+    cdl_vertical_context vctx = {.path = pt.path, .indirect = indirect && pieces > 0, .target = target,
+                                 .max_samples = 1048576.0};
+    vctx.path.geometry = pieces > 0 ? geometry : NULL;
+    cdl_path_stats vt_stats;
+    memset(&vt_stats, 0, sizeof vt_stats);
     ctx.ao_samples = out->settings.ao_samples;
     ctx.seed = scene->settings.seed;
     ctx.log = opts.ray_log;
@@ -493,7 +487,9 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         }
         st = cdl_grid_solution_alloc(&out->grids[g], scene->grids[g].want_ao, err);
         if (st == CDL_OK) st = cdl_grid_solution_alloc_outputs(&out->grids[g], &scene->grids[g], err);
-        if (st == CDL_OK) st = check_vertical_outputs(scene, &lights, indirect, g, &out->grids[g].grid, err);
+        int sampled = 0;
+        if (st == CDL_OK) st = check_vertical_outputs(scene, &lights, indirect, g, &out->grids[g].grid, &sampled, err);
+        if (st == CDL_OK && sampled) st = cdl_grid_solution_alloc_vertical_stderr(&out->grids[g], err);
         if (st == CDL_OK) st = find_reflectances(scene, geometry, occluders, g, &out->grids[g], err);
         if (st != CDL_OK) goto fail;
     }
@@ -576,9 +572,32 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
              * (its exitance rho E spread as pi L over the hemisphere). */
             if (gs->L) gs->L[i] = gs->rho[i] * gs->E[i] / CDL_PI;
         }
+        if (gs->Ez_stderr || gs->Esz_stderr) {
+            /* The vertical outputs' extended, sky and reflected light, sampled. */
+            snprintf(stage_name, sizeof stage_name, "grid %s: cylindrical illuminance", spec->name);
+            tc = cdl_pool_now_seconds();
+            cdl_path_stats before = vt_stats;
+            st = cdl_vertical_sampled_grid(&vctx, &gs->grid, (size_t)grid_key(spec->name), gs->Ez, gs->Esz,
+                                           gs->Ez_stderr, gs->Esz_stderr, threads, &opts.progress, stage_name,
+                                           &vt_stats, err);
+            out->compute_seconds += cdl_pool_now_seconds() - tc;
+            if (st != CDL_OK) goto fail;
+            char why[300];
+            snprintf(why, sizeof why,
+                     "exact for point, spot, goniometric and directional lights; extended emitters, skies%s sampled "
+                     "to the target (%llu rays), with a stated error (Ez_stderr_lx, Esz_stderr_lx)",
+                     indirect ? " and interreflected light" : "",
+                     (unsigned long long)(vt_stats.rays - before.rays + vt_stats.direct.rays - before.direct.rays));
+            cJSON_AddStringToObject(plan_vertical, spec->name, why);
+        } else if (gs->Ez || gs->Esz) {
+            cJSON_AddStringToObject(plan_vertical, spec->name,
+                                    "exact: every light is a point, spot, goniometric or directional light and "
+                                    "nothing reflects");
+        }
         st = check_finite(scene, &lights, g, gs, err);
         if (st != CDL_OK) goto fail;
     }
+    total.rays += vt_stats.rays + vt_stats.direct.rays;
     {
         cJSON *counts = cJSON_AddObjectToObject(plan, "evaluations");
         cJSON_AddNumberToObject(counts, "closed_form", (double)total.exact_evaluations);

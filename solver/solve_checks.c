@@ -78,13 +78,14 @@ static int inside(cdl_bounds3 box, cdl_vec3 p, double margin)
 }
 
 /* A position far outside the scene (beyond ten times its size) that a
- * thousandth of would put inside it (with a tenth of its size to spare):
- * millimetres typed into a scene in metres. */
+ * thousandth of would put in or near it (within half its size and 3 m, the
+ * height a luminaire may hang above a work plane): millimetres typed into a
+ * scene in metres. */
 static int looks_like_millimetres(cdl_bounds3 box, cdl_vec3 p)
 {
     double size = fmax(cdl_bounds3_diagonal(box), 1e-3);
     cdl_vec3 mm = cdl_vec3_scale(p, 1e-3);
-    return !inside(box, p, 10.0 * size) && inside(box, mm, 0.1 * size);
+    return !inside(box, p, 10.0 * size) && inside(box, mm, 0.5 * size + 3.0);
 }
 
 cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_context *ctx, cdl_solution *out,
@@ -118,23 +119,28 @@ cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_conte
         }
     cdl_bounds3 box = scene_box(ctx, out);
     for (size_t l = 0; l < ctx->light_count && st == CDL_OK; ++l) {
-        if (best[l] == REACH_LIT) continue;
         const cdl_scene_light *light = &ctx->lights[l];
         char mm[200] = "";
-        if (light->bounded && looks_like_millimetres(box, cdl_bounds3_centre(light->bounds))) {
+        int millimetres = light->bounded && looks_like_millimetres(box, cdl_bounds3_centre(light->bounds));
+        if (millimetres) {
             cdl_vec3 c = cdl_bounds3_centre(light->bounds);
             snprintf(mm, sizeof mm,
-                     "; its position [%.6g, %.6g, %.6g] lies far outside the scene and looks like millimetres: "
+                     "its position [%.6g, %.6g, %.6g] lies far outside the scene and looks like millimetres: "
                      "the scene is in metres",
                      c.x, c.y, c.z);
         }
+        if (best[l] == REACH_LIT) {
+            /* Lighting something from a kilometre away is still a slip. */
+            if (millimetres) st = cdl_solution_add_warning(out, err, "%s: %s", light->label, mm);
+            continue;
+        }
         st = cdl_solution_add_warning(
-            out, err, "%s adds nothing to any grid: %s%s", light->label,
+            out, err, "%s adds nothing to any grid: %s%s%s", light->label,
             best[l] == REACH_NONE
                 ? "its light meets no grid point from the side the point faces (is it facing away, or are the grids "
                   "outside its beam?)"
                 : "surfaces hide it from every grid point (is it above the ceiling, or outside a closed room?)",
-            mm);
+            millimetres ? "; " : "", mm);
     }
     free(best);
     free(strategies);

@@ -19,7 +19,7 @@ typedef struct cdl_cli_option {
 } cdl_cli_option;
 
 typedef struct cdl_cli_result {
-    const char *positional[16];
+    const char *positional[4096];
     size_t positional_count;
     int help;                 /* --help or -h seen */
     char message[256];        /* usage error text when the scan fails */

@@ -43,7 +43,11 @@ static void print_help(FILE *out)
           "IES multiplier is applied (written as 1). A gamma range EULUMDAT allows\n"
           "but LM-63 does not (e.g. 0-140) is padded with zero intensity. IES type\n"
           "A/B data is resampled onto C-planes for EULUMDAT (the flux change is\n"
-          "reported).\n"
+          "reported). EULUMDAT has no ballast factor: an IES one is folded into the\n"
+          "lamp flux (line 29), so the luminaire gives the same light (said on\n"
+          "stderr). Test-lab fields both ways: [TEST] is the report number (line 8),\n"
+          "[ISSUEDATE] the date (line 12), and [TESTLAB], which EULUMDAT lacks,\n"
+          "follows the date as \", test lab: NAME\" and comes back as [TESTLAB].\n"
           "\n"
           "Exit status: 0 success, 1 bad input (an unreadable or invalid IN, an\n"
           "unwritable OUT), 2 usage error, 3 internal or resource failure.\n", out);

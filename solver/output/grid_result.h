@@ -42,6 +42,8 @@ typedef struct cdl_grid_result {
     const double *Ez;         /* cylindrical illuminance, lux ("cylindrical") */
     const double *Esz;        /* semicylindrical illuminance, lux ("semicylindrical") */
     const double *L;          /* luminance rho E / pi, cd/m^2 ("luminance") */
+    const double *Ez_stderr;  /* with Ez where part of it is sampled: its standard error, lux */
+    const double *Esz_stderr; /* with Esz likewise */
     int map_log_scale;        /* NAME.png: 1 a logarithmic lux scale, 0 (default) linear (lux_scale.h) */
 } cdl_grid_result;
 
@@ -82,7 +84,8 @@ typedef struct cdl_grid_stats {
 void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats);
 
 /* NAME.csv: header x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx
- * then, for those given, AO, area_m2, Ez_lx, Esz_lx, L_cd_m2; one row per point in grid order, "\n" line
+ * then, for those given, area_m2, AO, Ez_lx, Ez_stderr_lx, Esz_lx,
+ * Esz_stderr_lx, L_cd_m2; one row per point in grid order, "\n" line
  * ends. Each number is the shortest of "%.15g", "%.16g", "%.17g" that reads
  * back (strtod) as exactly the same double, so a closed-form result
  * survives the trip to text. Expects the "C" numeric locale (the library

@@ -3,6 +3,7 @@
 
 #include <cjson/cJSON.h>
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -79,6 +80,8 @@ void cdl_grid_solution_result(const cdl_grid_solution *gs, const cdl_grid_spec *
     out->Ez = gs->Ez;
     out->Esz = gs->Esz;
     out->L = gs->L;
+    out->Ez_stderr = gs->Ez_stderr;
+    out->Esz_stderr = gs->Esz_stderr;
 }
 
 static char *join_path(const char *dir, const char *name, const char *ext)
@@ -131,6 +134,14 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
             }
             snprintf(key, sizeof key, "%s_U0", extra[k].key);
             cJSON_AddNumberToObject(o, key, extra[k].stats->U0);
+            /* A sampled part's worst stated error. */
+            const double *err_values = k == 0 ? sol->grids[g].Ez_stderr : k == 1 ? sol->grids[g].Esz_stderr : NULL;
+            if (err_values) {
+                double worst = 0.0;
+                for (size_t i = 0; i < sol->grids[g].grid.count; ++i) worst = fmax(worst, err_values[i]);
+                snprintf(key, sizeof key, "%s_stderr_max_lx", extra[k].key);
+                cJSON_AddNumberToObject(o, key, worst);
+            }
         }
         /* Power density: the installed power over the grid's area, when
          * every luminaire's file gives its input watts. */

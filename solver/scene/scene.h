@@ -237,15 +237,25 @@ cdl_status cdl_scene_load(const char *path, cdl_scene **out, cdl_error *err);
 /* The keys the loader accepts, per kind of object ("scene", "luminaire
  * spot", "surface box", "shape rect", "grid polygon", "solver", "array",
  * "grid point"): the very tables it checks scenes against, so that a test
- * can hold data/scene.schema.json to them both ways. */
+ * can hold data/scene.schema.json to them both ways. Filled into a
+ * caller-owned cdl_scene_keys (no global state); reentrant. */
+#define CDL_SCENE_KEY_SETS_MAX 32
+#define CDL_SCENE_KEYS_PER_SET 24
 typedef struct cdl_scene_key_set {
     const char *object;
     const char *const *keys;             /* NULL-terminated */
 } cdl_scene_key_set;
 
-/* The loader's key sets: *sets points at a static table (not to be
- * freed), the count is returned. Thread-safe; no errors. */
-size_t cdl_scene_key_sets(const cdl_scene_key_set **sets);
+typedef struct cdl_scene_keys {
+    cdl_scene_key_set sets[CDL_SCENE_KEY_SETS_MAX];
+    size_t count;
+    /* room for the names and key lists assembled from the loader's tables */
+    char names[CDL_SCENE_KEY_SETS_MAX][32];
+    const char *lists[CDL_SCENE_KEY_SETS_MAX][CDL_SCENE_KEYS_PER_SET];
+} cdl_scene_keys;
+/* The loader's key sets, assembled into caller-owned storage (no static
+ * table). Thread-safe; no errors. */
+void cdl_scene_keys_collect(cdl_scene_keys *out);
 
 /* A label for messages and the plan: the JSON path, the name when given,
  * and for one copy of many its number ("luminaires[2] (row A, 3 of 12)"). */

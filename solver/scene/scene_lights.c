@@ -355,6 +355,17 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
                 return st;
             }
             L->photometries[L->photometry_count++] = ph;
+            const cdl_photometry_metadata *pm = cdl_photometry_get_metadata(ph);
+            if (pm->radiometric)
+                /* No light without a spectrum or an efficacy: refuse, never guess one. */
+                return cdl_error_set(err, CDL_ERR_INPUT,
+                                     "%s: %s.file: %s: expected photometric data (candela), found radiant "
+                                     "intensity in %s ([%s]): Candela computes lux from luminous quantities, and "
+                                     "watts of UV or infrared radiation are no light",
+                                     scene->path, sp->json_path, sp->file,
+                                     pm->radiometric_scale == 1.0 ? "W/sr" : pm->radiometric_scale == 1e-3 ? "mW/sr"
+                                                                                                         : "uW/sr",
+                                     pm->units_keyword);
         }
         L->luminaire_photometry[k] = ph;
         cdl_goniometric_params p;

@@ -759,32 +759,23 @@ void cdl_scene_release(cdl_scene *scene)
 
 /* ---- what the loader knows ---------------------------------------------------------- */
 
-size_t cdl_scene_key_sets(const cdl_scene_key_set **sets)
+void cdl_scene_keys_collect(cdl_scene_keys *out)
 {
-    /* Built once from the loader's own tables; they never change. */
-    static cdl_scene_key_set table[32];
-    static size_t count;
-    if (count == 0) {
-        size_t n = 0;
-        table[n++] = (cdl_scene_key_set){"scene", document_keys};
-        table[n++] = (cdl_scene_key_set){"solver", settings_keys};
-        table[n++] = (cdl_scene_key_set){"grid point", point_keys};
-        table[n++] = (cdl_scene_key_set){"array", cdl_scene_array_keys};
-        static char names[16][32];
-        size_t k = 0;
-        for (int t = 0; luminaire_types[t]; ++t, ++k) {
-            snprintf(names[k], sizeof names[k], "luminaire %s", luminaire_types[t]);
-            table[n++] = (cdl_scene_key_set){names[k], luminaire_keys[t]};
-        }
-        for (int t = 0; grid_types[t]; ++t, ++k) {
-            snprintf(names[k], sizeof names[k], "grid %s", grid_types[t]);
-            table[n++] = (cdl_scene_key_set){names[k], grid_keys[t]};
-        }
-        n += cdl_scene_surface_key_sets(table + n, sizeof table / sizeof table[0] - n);
-        count = n;
+    memset(out, 0, sizeof *out);
+    size_t n = 0;
+    out->sets[n++] = (cdl_scene_key_set){"scene", document_keys};
+    out->sets[n++] = (cdl_scene_key_set){"solver", settings_keys};
+    out->sets[n++] = (cdl_scene_key_set){"grid point", point_keys};
+    out->sets[n++] = (cdl_scene_key_set){"array", cdl_scene_array_keys};
+    for (int t = 0; luminaire_types[t]; ++t, ++n) {
+        snprintf(out->names[n], sizeof out->names[n], "luminaire %s", luminaire_types[t]);
+        out->sets[n] = (cdl_scene_key_set){out->names[n], luminaire_keys[t]};
     }
-    *sets = table;
-    return count;
+    for (int t = 0; grid_types[t]; ++t, ++n) {
+        snprintf(out->names[n], sizeof out->names[n], "grid %s", grid_types[t]);
+        out->sets[n] = (cdl_scene_key_set){out->names[n], grid_keys[t]};
+    }
+    out->count = n + cdl_scene_surface_key_sets(out, n);
 }
 
 void cdl_luminaire_spec_label(const cdl_luminaire_spec *spec, char *out, size_t size)

@@ -124,8 +124,10 @@ typedef enum cdl_scene_shape_use {
 cdl_status cdl_scene_json_read_surface(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
                                        cdl_scene_shape_use use, cdl_surface_spec *out);
 void cdl_scene_surface_spec_free(cdl_surface_spec *spec);
-/* The surface kinds' keys as the loader checks them (for cdl_scene_key_sets). */
-size_t cdl_scene_surface_key_sets(cdl_scene_key_set *sets, size_t capacity);
+/* The surface and shape kinds' keys as the loader checks them, into
+ * keys->sets from index `first` on (cdl_scene_keys_collect); returns how
+ * many were added. */
+size_t cdl_scene_surface_key_sets(cdl_scene_keys *keys, size_t first);
 
 /* ---- placing luminaires (scene_placement.c) ------------------------------------ */
 

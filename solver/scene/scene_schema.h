@@ -3,7 +3,7 @@
  * The schema is the one description of the scene file a person or an
  * editor reads: every key with its unit ("x-unit", an annotation),
  * default and range. `candela help scene` prints its reference from it; a
- * test holds it to the loader's own key tables (cdl_scene_key_sets) both
+ * test holds it to the loader's own key tables (cdl_scene_keys_collect) both
  * ways and validates every example scene against it. Editors validate and
  * complete a scene that names it in "$schema".
  */

@@ -488,28 +488,27 @@ cdl_status cdl_scene_json_read_surface(const cdl_scene_parse *ctx, const cJSON *
                                         CDL_RANGE_NONNEGATIVE, 0, &out->luminance_cd_m2);
 }
 
-size_t cdl_scene_surface_key_sets(cdl_scene_key_set *sets, size_t capacity)
+size_t cdl_scene_surface_key_sets(cdl_scene_keys *keys, size_t first)
 {
     /* "type", the kind's geometric keys, and for surfaces the material
      * keys: what cdl_scene_json_read_surface allows. */
-    static const char *keys[2][6][16];
-    static char names[2][6][32];
     static const int shape_ok[6] = {1, 1, 0, 1, 0, 1}; /* rect, polygon, disk, mesh */
-    size_t n = 0;
+    size_t n = first;
     for (int use = 0; use < 2; ++use)
         for (int kind = 0; surface_types[kind]; ++kind) {
             if (use == 1 && !shape_ok[kind]) continue;
-            if (n >= capacity) return n;
+            if (n >= CDL_SCENE_KEY_SETS_MAX) return n - first;
+            const char **list = keys->lists[n];
             size_t k = 0;
-            keys[use][kind][k++] = "type";
-            for (size_t i = 0; geometry_keys[kind][i]; ++i) keys[use][kind][k++] = geometry_keys[kind][i];
+            list[k++] = "type";
+            for (size_t i = 0; geometry_keys[kind][i]; ++i) list[k++] = geometry_keys[kind][i];
             if (use == 0)
-                for (size_t i = 0; material_keys[i]; ++i) keys[use][kind][k++] = material_keys[i];
-            keys[use][kind][k] = NULL;
-            snprintf(names[use][kind], sizeof names[use][kind], "%s %s", use ? "shape" : "surface", surface_types[kind]);
-            sets[n].object = names[use][kind];
-            sets[n].keys = keys[use][kind];
+                for (size_t i = 0; material_keys[i]; ++i) list[k++] = material_keys[i];
+            list[k] = NULL;
+            snprintf(keys->names[n], sizeof keys->names[n], "%s %s", use ? "shape" : "surface", surface_types[kind]);
+            keys->sets[n].object = keys->names[n];
+            keys->sets[n].keys = list;
             ++n;
         }
-    return n;
+    return n - first;
 }

@@ -225,7 +225,8 @@ static void check_solution(const cdl_scene *scene, const cdl_solution *sol)
             require(isfinite(gs->E_stderr[i]) && gs->E_stderr[i] >= 0.0, "finite standard error >= 0", name);
             if (gs->ao) require(gs->ao[i] >= 0.0 && gs->ao[i] <= 1.0, "AO in [0, 1]", name);
         }
-        cdl_grid_result r = {name, &gs->grid, gs->E, gs->E_direct, gs->E_indirect, gs->E_stderr, gs->ao};
+        cdl_grid_result r;
+        cdl_grid_solution_result(gs, &scene->grids[g], &r);
         cdl_grid_stats s;
         cdl_grid_result_stats(&r, &s);
         require(isfinite(s.E_avg_lx) && isfinite(s.E_min_lx) && isfinite(s.E_max_lx), "finite statistics", name);

@@ -174,6 +174,24 @@ static int summary_of(double h_last, double dh, double g_last, double (*f)(doubl
     return p != NULL;
 }
 
+/* A batwing, rotationally symmetric: I0 (0.3 + 0.7 sin^2(2 gamma)) up to
+ * 90 degrees, peak at gamma 45 with 0.3 I0 at nadir (test_spreads_about_peak). */
+static double batwing(double h, double v)
+{
+    (void)h;
+    double s2 = sin(2.0 * d2r(v));
+    return v <= 90.0 ? I0 * (0.3 + 0.7 * s2 * s2) : 0.0;
+}
+
+/* Wide and flat: I0 (0.2 + 0.8 (1 + cos gamma) / 2) falls to half only at
+ * cos gamma = -0.25 (104.5 degrees from nadir): a 209 degree "beam", more
+ * than a half-space, so none. */
+static double wide(double h, double v)
+{
+    (void)h;
+    return I0 * (0.2 + 0.4 * (1.0 + cos(d2r(v))));
+}
+
 /* Beam (50 %) and field (10 %) angles against closed forms, each plane on
  * its own. Tables step 0.5 degree in gamma; the linear interpolant of a
  * smooth f lies within h^2/8 max|f''| of it (h = 8.7e-3 rad: 9.5e-6 I0 for
@@ -192,19 +210,26 @@ static void test_beam_and_field(void)
         CHECK_ABS(s.beam_angle_deg[CDL_PLANE_C90_C270], 90.0, 0.005);
         CHECK_ABS(s.field_angle_deg[CDL_PLANE_C90_C270], 2.0 * acos(sqrt(0.1)) * CDL_RAD_TO_DEG, 0.005);
         CHECK_ABS(half90, 90.0, 0.005);
-        /* the maximum: I0 at nadir */
+        /* the maximum: I0 at nadir, so the planes through nadir */
         CHECK_REL(s.max_intensity.cd, I0, 1e-15);
-        CHECK(s.max_gamma_deg == 0.0);
+        CHECK(s.max_gamma_deg == 0.0 && s.spread_about_peak == 0);
     }
     /* An off-axis beam: I0 cos(theta - 30) in the C0-C180 plane (theta from
-     * nadir, positive toward C0), peak at C0, gamma 30. Half of it at theta =
-     * -30 and 90: a 120 degree beam that crosses nadir into the C180 half;
-     * the field spans 30 +- acos 0.1. In the C90-C270 plane I = I0 cos 30 cos
-     * theta: 120 degrees again, relative to that plane's own maximum. */
+     * nadir, positive toward C0), peak at C0, gamma 30, nadir at cos 30 =
+     * 0.87 of it: measured about the peak. In the vertical plane through
+     * the peak (the C0-C180 plane) half of it at theta = -30 and 90: a 120
+     * degree beam that crosses nadir into the C180 half; the field spans
+     * 30 +- acos 0.1. Across the peak, I = I0 cos(angle from the peak):
+     * 120 degrees again; that circle cuts the 15 degree C planes between
+     * their samples, where the linear interpolant of cos C lies within
+     * h^2/8 = 0.0086 of it (h = 0.26 rad), which moves each crossing (slope
+     * 0.87 I0 per radian) by up to 0.57 degree; measured 0.025 per side:
+     * tolerance 0.1 degree on the full angle. */
     if (summary_of(360.0, 15.0, 180.0, tilted, &s, &half90)) {
-        CHECK_ABS(s.beam_angle_deg[CDL_PLANE_C0_C180], 120.0, 0.005);
-        CHECK_ABS(s.field_angle_deg[CDL_PLANE_C0_C180], 2.0 * acos(0.1) * CDL_RAD_TO_DEG, 0.005);
-        CHECK_ABS(s.beam_angle_deg[CDL_PLANE_C90_C270], 120.0, 0.005);
+        CHECK(s.spread_about_peak == 1 && s.spread_axis_c_deg == 0.0 && s.spread_axis_gamma_deg == 30.0);
+        CHECK_ABS(s.beam_angle_deg[0], 120.0, 0.005);
+        CHECK_ABS(s.field_angle_deg[0], 2.0 * acos(0.1) * CDL_RAD_TO_DEG, 0.005);
+        CHECK_ABS(s.beam_angle_deg[1], 120.0, 0.1);
         CHECK(s.max_c_deg == 0.0 && s.max_gamma_deg == 30.0);
         CHECK_REL(s.max_intensity.cd, I0, 1e-15);
         /* the flux of a clipped cosine lobe is pi I0 whatever its tilt: the trapezoid rule
@@ -214,10 +239,42 @@ static void test_beam_and_field(void)
     }
 }
 
+/* Batwing: measured about its peak; a beam wider than 180 degrees: none. */
+static void test_spreads_about_peak(void)
+{
+    cdl_photometry_summary s;
+    double half90;
+    if (summary_of(0.0, 15.0, 90.0, batwing, &s, &half90)) {
+        CHECK(s.spread_about_peak == 1 && s.spread_axis_gamma_deg == 45.0);
+        /* In the vertical plane through the peak the half level 0.5 I0 lies
+         * where sin^2(2 g) = 2/7, g = asin(sqrt(2/7)) / 2 and 90 - that:
+         * beam = 90 - asin(sqrt(2/7)) degrees. Gamma steps of 0.5 degree:
+         * the interpolant of the smooth f lies within h^2/8 max|f''| =
+         * 2.7e-5 I0 (f'' <= 2.8 I0 per rad^2), over a slope of at least 1.3
+         * I0 per radian at the crossings: 1.2e-3 degree each side. */
+        double beam = 90.0 - asin(sqrt(2.0 / 7.0)) * CDL_RAD_TO_DEG;
+        CHECK_ABS(s.beam_angle_deg[0], beam, 0.005);
+        /* Across the peak, along the great circle through it square to the
+         * vertical plane, cos(gamma) = cos 45 cos(theta): the half level's
+         * gamma_h = 90 - asin(sqrt(2/7)) / 2 comes at theta = acos(cos
+         * gamma_h / cos 45) either side. The slope there is 0.86 I0 per
+         * radian of theta: the same 0.002 degree per side. */
+        double gh = (90.0 - 0.5 * asin(sqrt(2.0 / 7.0)) * CDL_RAD_TO_DEG) * CDL_DEG_TO_RAD;
+        CHECK_ABS(s.beam_angle_deg[1], 2.0 * acos(cos(gh) / cos(CDL_PI / 4.0)) * CDL_RAD_TO_DEG, 0.005);
+    }
+    if (summary_of(0.0, 15.0, 180.0, wide, &s, &half90)) {
+        CHECK(s.spread_about_peak == 0);
+        CHECK(s.beam_angle_deg[0] == -1.0 && s.beam_angle_deg[1] == -1.0);
+        /* the field (10 %) never closes at all: 0.2 I0 everywhere at least */
+        CHECK(s.field_angle_deg[0] == -1.0);
+    }
+}
+
 int main(void)
 {
     test_isotropic_and_cone();
     test_types_agree();
     test_beam_and_field();
+    test_spreads_about_peak();
     return check_finish();
 }

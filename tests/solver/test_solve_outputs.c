@@ -16,6 +16,7 @@
 #include "solver/direct/direct.h"
 #include "solver/output/grid_result.h"
 #include "solver/output/solution_write.h"
+#include "solver/scene/exr_image.h"
 #include "solver/solve.h"
 #include "solver/solve_fixture.h"
 
@@ -161,6 +162,52 @@ static void test_shadowed_spot(void)
     fixture_release(scene, &sol);
 }
 
+/* Each extra output is an EXR channel holding the same values (as
+ * floats) at every raster pixel, and absent when not asked for. */
+static void check_exr_channels(const cdl_scene *scene, const cdl_solution *sol, const char *folder)
+{
+    char dir[512], path[600];
+    snprintf(dir, sizeof dir, "%s/%s", CANDELA_TEST_TMPDIR, folder);
+    cdl_error err;
+    cdl_error_clear(&err);
+    CHECK(cdl_solution_prepare_folder(dir, &err) == CDL_OK);
+    CHECK(cdl_solution_write(scene, sol, dir, NULL, &err) == CDL_OK);
+    const cdl_grid_solution *g = &sol->grids[0];
+    snprintf(path, sizeof path, "%s/%s.exr", dir, scene->grids[0].name);
+    cdl_exr_image img;
+    if (cdl_exr_read(path, &img, &err) != CDL_OK) {
+        CHECK_MSG(0, "%s", err.message);
+        return;
+    }
+    const struct {
+        const char *name;
+        const double *values;
+    } channels[] = {{"Ez", g->Ez}, {"Esz", g->Esz}, {"L", g->L}};
+    for (size_t c = 0; c < 3; ++c) {
+        const float *plane = cdl_exr_image_channel(&img, channels[c].name);
+        CHECK_MSG((plane != NULL) == (channels[c].values != NULL), "channel %s", channels[c].name);
+        for (int k = 0; plane && channels[c].values && k < img.width * img.height; ++k) {
+            int32_t idx = g->grid.raster_index[k];
+            if (idx >= 0) CHECK(plane[k] == (float)channels[c].values[idx]);
+        }
+    }
+    cdl_exr_image_release(&img);
+}
+
+/* A rect grid asking for both vertical outputs gets both channels. */
+static void test_vertical_channels(void)
+{
+    const char *json =
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"point\", \"position\": [1, 1, 3], \"intensity_cd\": 700}],"
+        " \"grids\": [{\"name\": \"v\", \"type\": \"rect\", \"origin\": [0, 0, 1.5], \"u\": [4, 0, 0], \"v\": [0, 3, 0],"
+        " \"nu\": 8, \"nv\": 6, \"normal\": [0, -1, 0], \"outputs\": [\"cylindrical\", \"semicylindrical\"]}]}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
+    check_exr_channels(scene, &sol, "outputs_vertical");
+    fixture_release(scene, &sol);
+}
+
 /* L = rho E / pi on a grid lying on a floor of reflectance 0.35. */
 static void test_luminance(void)
 {
@@ -185,11 +232,200 @@ static void test_luminance(void)
          * multiplication and division more. */
         CHECK_REL(g->L[i], 0.35 * E / CDL_PI, 1e-12);
     }
+    check_exr_channels(scene, &sol, "outputs_luminance");
     fixture_release(scene, &sol);
 }
 
-/* Outputs that cannot be computed yet are refused with the grid's JSON
- * path and what is missing, never returned as a part. */
+/* Cylindrical and semicylindrical illuminance from skies, area emitters
+ * and interreflection are sampled: checked against closed forms within
+ * four of their stated standard errors (a point fails by chance with
+ * probability 6e-5), and the stated errors near the target. */
+static int within_sigma(double value, double stderr, double exact, double k)
+{
+    return fabs(value - exact) <= k * stderr + 1e-12 * fabs(exact);
+}
+
+/* A scene of one sky (the luminaire's JSON) and three points asking for
+ * both vertical outputs, at draft quality. */
+static const char *sky_scene(const char *sky)
+{
+    static char json[1024];
+    snprintf(json, sizeof json,
+             "{\"version\": 1, \"luminaires\": [%s], \"grids\": [{\"name\": \"c\", \"type\": \"points\", "
+             "\"outputs\": [\"cylindrical\", \"semicylindrical\"], \"points\": [{\"p\": [0, 0, 1.5], \"n\": [1, 0, 0]}, "
+             "{\"p\": [3, 2, 1], \"n\": [0, -1, 0.2]}, {\"p\": [-5, 1, 0], \"n\": [1, 1, 0]}]}], "
+             "\"solver\": {\"quality\": \"draft\"}}",
+             sky);
+    return json;
+}
+
+static void test_sampled_vertical(void)
+{
+    /* Uniform skies, nothing around: the full sphere of L gives every
+     * facet pi L, so E_z = E_sz = pi L; each sample of E_z is exactly that
+     * (no error). The upper hemisphere alone: E_z = (1 / pi) L 2 pi int_0^pi/2
+     * sin^2 = pi L / 2, and E_sz too (cos alpha averages to 0 over phi). */
+    const double L = 1000.0;
+    const char *full = sky_scene("{\"type\": \"environment\", \"luminance_cd_m2\": 1000}");
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (fixture_solve(full, &scene, &sol, 1)) {
+        const cdl_grid_solution *g = &sol.grids[0];
+        CHECK(g->Ez_stderr != NULL && g->Esz_stderr != NULL);
+        for (size_t i = 0; g->Ez_stderr && i < 3; ++i) {
+            CHECK_REL(g->Ez[i], CDL_PI * L, 1e-12);
+            CHECK(g->Ez_stderr[i] < 1e-9 * CDL_PI * L);
+            /* E_sz's samples, pi L (1 + cos alpha), vary with azimuth */
+            CHECK_MSG(within_sigma(g->Esz[i], g->Esz_stderr[i], CDL_PI * L, 4.0), "full sky point %zu: Esz %g +- %g",
+                      i, g->Esz[i], g->Esz_stderr[i]);
+        }
+        fixture_release(scene, &sol);
+    }
+    const char *upper = sky_scene("{\"type\": \"environment\", \"luminance_cd_m2\": 1000, \"hemisphere\": \"upper\"}");
+    if (fixture_solve(upper, &scene, &sol, 1)) {
+        const cdl_grid_solution *g = &sol.grids[0];
+        for (size_t i = 0; g->Ez_stderr && i < 3; ++i) {
+            /* The strata in F(theta) split at the horizon (F = 1/2), so each
+             * stratum lies wholly in the sky or below it: E_z's estimate is
+             * exact, and says so. E_sz's samples vary with azimuth. */
+            double exact = CDL_PI * L / 2.0;
+            CHECK_REL(g->Ez[i], exact, 1e-12);
+            CHECK(g->Ez_stderr[i] < 1e-9 * exact);
+            CHECK_MSG(within_sigma(g->Esz[i], g->Esz_stderr[i], exact, 4.0), "upper sky point %zu: Esz %g +- %g", i,
+                      g->Esz[i], g->Esz_stderr[i]);
+        }
+        fixture_release(scene, &sol);
+    }
+    /* The CIE overcast sky, L = Lz (1 + 2 cos theta) / 3 above the horizon:
+     * E_z = (1 / pi) 2 pi (Lz / 3) int_0^pi/2 (1 + 2 cos) sin^2 = (2 Lz / 3)
+     * (pi / 4 + 2 / 3) = Lz (pi / 6 + 4 / 9); E_sz the same (nothing depends
+     * on azimuth). Sampled: within 4 stated sigma, stated near the 2 %. */
+    const char *overcast = sky_scene("{\"type\": \"environment\", \"sky\": \"cie_overcast\", "
+                                     "\"zenith_luminance_cd_m2\": 1000}");
+    if (fixture_solve(overcast, &scene, &sol, 1)) {
+        const cdl_grid_solution *g = &sol.grids[0];
+        double exact = L * (CDL_PI / 6.0 + 4.0 / 9.0);
+        for (size_t i = 0; g->Ez_stderr && i < 3; ++i) {
+            CHECK_MSG(within_sigma(g->Ez[i], g->Ez_stderr[i], exact, 4.0), "overcast point %zu: Ez %g +- %g, exact %g",
+                      i, g->Ez[i], g->Ez_stderr[i], exact);
+            CHECK_MSG(within_sigma(g->Esz[i], g->Esz_stderr[i], exact, 4.0), "overcast point %zu: Esz %g +- %g", i,
+                      g->Esz[i], g->Esz_stderr[i]);
+            CHECK_MSG(g->Ez_stderr[i] > 0.0 && g->Ez_stderr[i] < 0.03 * exact, "stated %g", g->Ez_stderr[i]);
+            printf("overcast sky: Ez %.6g lx +- %.3g (exact %.6g, %.2f sigma)\n", g->Ez[i], g->Ez_stderr[i], exact,
+                   (g->Ez[i] - exact) / g->Ez_stderr[i]);
+        }
+        fixture_release(scene, &sol);
+    }
+
+    /* An integrating sphere (radius 2 m, rho 0.5) with a 1000 cd point
+     * source at its centre: the wall's direct irradiance I / R^2 = 250 lx is
+     * uniform, so after all reflections its radiance is uniform, L = rho E_w
+     * / pi with E_w = 250 / (1 - rho), and every inside point sees it from
+     * every direction: E_z,ind = E_sz,ind = pi L = rho I / (R^2 (1 - rho))
+     * = 250 lx, on top of the source's exact I sin(theta) / (pi d^2). */
+    const char *sphere =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 2, "
+        "\"inward\": true, \"reflectance\": 0.5}], \"luminaires\": [{\"type\": \"point\", \"position\": [0, 0, 0],"
+        " \"intensity_cd\": 1000}], \"grids\": [{\"name\": \"c\", \"type\": \"points\", \"outputs\": "
+        "[\"cylindrical\", \"semicylindrical\"], \"points\": [{\"p\": [0.8, 0, 0], \"n\": [0, 1, 0]}, {\"p\": [0, 0.6, 0.8], "
+        "\"n\": [1, 0, 0]}, {\"p\": [-0.5, -0.5, -1], \"n\": [0, -1, 0]}]}], \"solver\": {\"method\": \"pathtrace\", "
+        "\"quality\": \"draft\"}}";
+    if (fixture_solve(sphere, &scene, &sol, 2)) {
+        const cdl_grid_solution *g = &sol.grids[0];
+        for (size_t i = 0; g->Ez_stderr && i < 3; ++i) {
+            cdl_vec3 p = g->grid.points[i];
+            double d2 = cdl_vec3_dot(p, p), sin_theta = sqrt(p.x * p.x + p.y * p.y) / sqrt(d2);
+            double exact = 1000.0 * sin_theta / (CDL_PI * d2) + 250.0;
+            CHECK_MSG(within_sigma(g->Ez[i], g->Ez_stderr[i], exact, 4.0), "sphere point %zu: Ez %g +- %g, exact %g", i,
+                      g->Ez[i], g->Ez_stderr[i], exact);
+            /* the facing direction and the source's: alpha from the point's normal to -p (horizontal parts) */
+            cdl_vec3 n = g->grid.normals[i], w = cdl_vec3_scale(p, -1.0 / sqrt(d2));
+            double h = sqrt(w.x * w.x + w.y * w.y), cos_alpha = h > 0.0 ? (w.x * n.x + w.y * n.y) / h : 0.0;
+            double exact_sz = 1000.0 * sin_theta * (1.0 + cos_alpha) / (CDL_PI * d2) + 250.0;
+            CHECK_MSG(within_sigma(g->Esz[i], g->Esz_stderr[i], exact_sz, 4.0), "sphere point %zu: Esz %g +- %g, exact %g",
+                      i, g->Esz[i], g->Esz_stderr[i], exact_sz);
+            printf("integrating sphere: Ez %.6g lx +- %.3g (exact %.6g, %.2f sigma), Esz %.6g +- %.3g (exact %.6g)\n",
+                   g->Ez[i], g->Ez_stderr[i], exact, (g->Ez[i] - exact) / g->Ez_stderr[i], g->Esz[i],
+                   g->Esz_stderr[i], exact_sz);
+        }
+        fixture_release(scene, &sol);
+    }
+
+    /* A luminous ceiling panel (2 x 1 m, 500 cd/m2, 2.5 m up) and a point
+     * below its corner: E_z = (1 / pi) int L sin(theta) dw over the panel,
+     * here by the midpoint rule on 400 x 200 cells (dw = cos(e) dA / r^2;
+     * smooth integrand, error far below the 2 % target). */
+    const char *panel =
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"area\", \"shape\": {\"type\": \"rect\", \"origin\": [0, 0, 2.5],"
+        " \"u\": [0, 1, 0], \"v\": [2, 0, 0]}, \"luminance_cd_m2\": 500}], \"grids\": [{\"name\": \"c\", \"type\": "
+        "\"points\", \"outputs\": [\"cylindrical\"], \"points\": [{\"p\": [-0.5, -0.3, 1.2], \"n\": [1, 0, 0]}]}],"
+        " \"solver\": {\"quality\": \"draft\"}}";
+    if (fixture_solve(panel, &scene, &sol, 1)) {
+        const cdl_grid_solution *g = &sol.grids[0];
+        double sum = 0.0;
+        cdl_vec3 p = g->grid.points[0];
+        for (int a = 0; a < 400; ++a)
+            for (int b = 0; b < 200; ++b) {
+                double x = 2.0 * (a + 0.5) / 400.0, y = (b + 0.5) / 200.0, dA = (2.0 / 400.0) * (1.0 / 200.0);
+                cdl_vec3 r = cdl_vec3_sub(cdl_vec3_make(x, y, 2.5), p);
+                double r2 = cdl_vec3_dot(r, r), rl = sqrt(r2);
+                double cos_e = r.z / rl, sin_t = sqrt(r.x * r.x + r.y * r.y) / rl; /* panel faces down: cos at it = r.z / r */
+                sum += 500.0 * sin_t * cos_e * dA / r2;
+            }
+        double exact = sum / CDL_PI;
+        CHECK_MSG(g->Ez_stderr && within_sigma(g->Ez[0], g->Ez_stderr[0], exact, 4.0), "panel: Ez %g +- %g, exact %g",
+                  g->Ez[0], g->Ez_stderr ? g->Ez_stderr[0] : 0.0, exact);
+        printf("luminous panel: Ez %.6g lx +- %.3g (quadrature %.6g)\n", g->Ez[0], g->Ez_stderr ? g->Ez_stderr[0] : 0.0,
+               exact);
+        fixture_release(scene, &sol);
+    }
+}
+
+/* A small panel (0.3 x 0.3 m, 2000 cd/m2, facing down at 2.5 m) half
+ * hidden by an opaque plate at 2.3 m: E_z by the midpoint rule on 300 x
+ * 300 cells of the panel, each counted where the segment to the point
+ * misses the plate (tested here, in closed form, at the plate's height). */
+static void test_shadowed_panel(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [-1, -1, 2.3], \"u\": [1.15, 0, 0], "
+        "\"v\": [0, 2, 0], \"reflectance\": 0}], \"luminaires\": [{\"type\": \"area\", \"shape\": {\"type\": "
+        "\"rect\", \"origin\": [0, 0, 2.5], \"u\": [0, 0.3, 0], \"v\": [0.3, 0, 0]}, \"luminance_cd_m2\": 2000}], "
+        "\"grids\": [{\"name\": \"c\", \"type\": \"points\", \"outputs\": [\"cylindrical\", \"semicylindrical\"], "
+        "\"points\": [{\"p\": [0.3, 0.1, 1.0], \"n\": [-1, 0, 0]}, {\"p\": [1.5, -0.4, 0.5], \"n\": [0, 1, 0]}]}], "
+        "\"solver\": {\"quality\": \"draft\"}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!fixture_solve(json, &scene, &sol, 1)) return;
+    const cdl_grid_solution *g = &sol.grids[0];
+    for (size_t i = 0; g->Ez_stderr && i < 2; ++i) {
+        cdl_vec3 p = g->grid.points[i], f = g->grid.normals[i];
+        double ez = 0.0, esz = 0.0, dA = (0.3 / 300.0) * (0.3 / 300.0);
+        for (int a = 0; a < 300; ++a)
+            for (int b = 0; b < 300; ++b) {
+                cdl_vec3 q = cdl_vec3_make(0.3 * (a + 0.5) / 300.0, 0.3 * (b + 0.5) / 300.0, 2.5);
+                cdl_vec3 r = cdl_vec3_sub(q, p);
+                double t = (2.3 - p.z) / r.z; /* where the segment crosses the plate's plane */
+                double x = p.x + t * r.x, y = p.y + t * r.y;
+                if (x >= -1.0 && x <= 0.15 && y >= -1.0 && y <= 1.0) continue;
+                double r2 = cdl_vec3_dot(r, r), rl = sqrt(r2);
+                double w_h = sqrt(r.x * r.x + r.y * r.y) / rl, along = (r.x * f.x + r.y * f.y) / rl;
+                double dw = (r.z / rl) * dA / r2;
+                ez += 2000.0 * w_h * dw / CDL_PI;
+                esz += 2000.0 * (w_h + along) * dw / CDL_PI;
+            }
+        CHECK_MSG(within_sigma(g->Ez[i], g->Ez_stderr[i], ez, 4.0), "half-hidden panel %zu: Ez %g +- %g, exact %g", i,
+                  g->Ez[i], g->Ez_stderr[i], ez);
+        CHECK_MSG(within_sigma(g->Esz[i], g->Esz_stderr[i], esz, 4.0), "half-hidden panel %zu: Esz %g +- %g, exact %g",
+                  i, g->Esz[i], g->Esz_stderr[i], esz);
+        printf("half-hidden panel: Ez %.6g lx +- %.3g (quadrature %.6g, %.2f sigma), Esz %.6g +- %.3g (%.6g)\n", g->Ez[i],
+               g->Ez_stderr[i], ez, (g->Ez[i] - ez) / g->Ez_stderr[i], g->Esz[i], g->Esz_stderr[i], esz);
+    }
+    fixture_release(scene, &sol);
+}
+
+/* Outputs that cannot be computed are refused with the grid's JSON path
+ * and what is missing, never returned as a part. */
 static void expect_refusal(const char *json, const char *fragment)
 {
     cdl_error err;
@@ -206,16 +442,6 @@ static void expect_refusal(const char *json, const char *fragment)
 
 static void test_refusals(void)
 {
-    expect_refusal("{\"version\": 1, \"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 100}],"
-                   " \"grids\": [{\"name\": \"c\", \"type\": \"points\", \"outputs\": [\"cylindrical\"],"
-                   " \"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}]}]}",
-                   "grids[0].outputs: expected lights Candela can give cylindrical illuminance for");
-    expect_refusal("{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [-2, -2, 0], \"u\": [4, 0, 0],"
-                   " \"v\": [0, 4, 0], \"reflectance\": 0.5}],"
-                   " \"luminaires\": [{\"type\": \"point\", \"position\": [0, 0, 2], \"intensity_cd\": 100}],"
-                   " \"grids\": [{\"name\": \"c\", \"type\": \"points\", \"outputs\": [\"semicylindrical\"],"
-                   " \"points\": [{\"p\": [0, 0, 1], \"n\": [1, 0, 0]}]}]}",
-                   "interreflected semicylindrical illuminance is not built yet");
     expect_refusal("{\"version\": 1, \"luminaires\": [{\"type\": \"point\", \"position\": [0, 0, 2], "
                    "\"intensity_cd\": 100}], \"grids\": [{\"name\": \"c\", \"type\": \"points\", "
                    "\"outputs\": [\"semicylindrical\"], \"points\": [{\"p\": [0, 0, 1], \"n\": [0, 0, 1]}]}]}",
@@ -287,6 +513,9 @@ int main(void)
     test_shadowed_spot();
     test_luminance();
     test_refusals();
+    test_vertical_channels();
+    test_sampled_vertical();
+    test_shadowed_panel();
     test_polygon_area_column();
     return check_finish();
 }

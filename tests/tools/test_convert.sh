@@ -28,13 +28,16 @@ check "bad input: exit 1, message, no output" '[ $st -eq 1 ] && [[ "$err" == *"b
 err=$("$CANDELA" convert "$fix/iso_1000cd.ies" "$tmp/no/such/dir/out.ldt" 2>&1); st=$?
 check "unwritable output: exit 1 naming it" '[ $st -eq 1 ] && [[ "$err" == *"no/such/dir/out.ldt"* ]]'
 
-# IES -> EULUMDAT -> IES keeps the flux (to the ten digits the writers print)
+# IES -> EULUMDAT -> IES keeps the light, flux x output factor (to the ten
+# digits the writers print): a ballast factor EULUMDAT cannot hold is folded
+# into its lamp flux, so the table's own flux takes it on.
+light() { awk -v f="$(json_number "$1" flux_lm)" -v k="$(json_number "$1" output_factor)" 'BEGIN { printf "%.17g", f * k }'; }
 for f in iso_1000cd.ies ies_1986_one_per_line.ies ies_crlf_latin1_ctrlz.ies asym_h90_peak.ies ldt_comma_blank_crlf.ldt; do
   base=${f%.*}
   case $f in *.ldt) a=ies; b=ldt ;; *) a=ldt; b=ies ;; esac
   "$CANDELA" convert -q "$fix/$f" "$tmp/$base.1.$a"; st1=$?
   "$CANDELA" convert -q "$tmp/$base.1.$a" "$tmp/$base.2.$b"; st2=$?
-  f0=$(json_number "$fix/$f" flux_lm); f1=$(json_number "$tmp/$base.1.$a" flux_lm); f2=$(json_number "$tmp/$base.2.$b" flux_lm)
+  f0=$(light "$fix/$f"); f1=$(light "$tmp/$base.1.$a"); f2=$(light "$tmp/$base.2.$b")
   check "$f: converts both ways" '[ $st1 -eq 0 ] && [ $st2 -eq 0 ]'
   check "$f: flux kept ($f0 -> $f1 -> $f2)" 'close "$f1" "$f0" 1e-8 && close "$f2" "$f0" 1e-8'
 done
@@ -70,4 +73,30 @@ check "the mapping is ignored (and said so) between two IES files" '[[ "$err" ==
 # no temporary files left behind
 left=$(ls -A "$tmp" | grep -c tmp || true)
 check "no temporary files left" '[ "$left" -eq 0 ]'
+# The ballast factor and the test-lab fields, both ways: IES [TESTLAB],
+# [TEST], [ISSUEDATE] through EULUMDAT and back; a ballast factor 0.855
+# folded into EULUMDAT's lamp flux, and said so.
+"$CANDELA" convert "$fix/ies_crlf_latin1_ctrlz.ies" "$tmp/bf.ldt" > /dev/null 2> "$tmp/bf.err"; st=$?
+check "ballast factor folded into the lamp flux, and said" '[ $st -eq 0 ] && grep -q "ballast factor 0.855 has no EULUMDAT field: folded into the lamp flux" "$tmp/bf.err"'
+# (absolute photometry: line 29 holds the table's own flux, times the factor)
+light_ies=$(light "$fix/ies_crlf_latin1_ctrlz.ies"); lamp_ldt=$(sed -n 29p "$tmp/bf.ldt" | tr -d '\r')
+check "EULUMDAT line 29 = the table's flux x 0.855 ($light_ies, $lamp_ldt)" 'close "$lamp_ldt" "$light_ies" 1e-9'
+check "EULUMDAT has no ballast factor left (1)" '[ "$(json_number "$tmp/bf.ldt" ballast_factor)" = 1 ]'
+cat > "$tmp/lab.ies" <<'IES'
+IESNA:LM-63-2002
+[TEST] REPORT-4711
+[TESTLAB] Independent Photometry Lab GmbH
+[ISSUEDATE] 2026-03-14
+[MANUFAC] Maker
+TILT=NONE
+1 -1 1 3 1 1 2 0 0 0
+1 1 10
+0 45 90
+0
+100 80 50
+IES
+"$CANDELA" convert -q "$tmp/lab.ies" "$tmp/lab.ldt" && "$CANDELA" convert -q "$tmp/lab.ldt" "$tmp/lab2.ies"; st=$?
+check "test lab: IES -> EULUMDAT -> IES converts" '[ $st -eq 0 ]'
+check "test lab: EULUMDAT carries report number and date with the lab" 'grep -q "^REPORT-4711" "$tmp/lab.ldt" && grep -q "^2026-03-14, test lab: Independent Photometry Lab GmbH" "$tmp/lab.ldt"'
+check "test lab: back in IES as [TEST], [TESTLAB], [ISSUEDATE]" 'grep -q "^\[TEST\] REPORT-4711" "$tmp/lab2.ies" && grep -q "^\[TESTLAB\] Independent Photometry Lab GmbH" "$tmp/lab2.ies" && grep -q "^\[ISSUEDATE\] 2026-03-14" "$tmp/lab2.ies"'
 exit $fail

@@ -8,9 +8,9 @@ fail=0
 check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
 
 err=$("$CANDELA" info 2>&1 >/dev/null); st=$?
-check "no argument is a usage error" '[ $st -eq 2 ] && [[ "$err" == *"expected one luminaire file"* ]]'
+check "no argument is a usage error" '[ $st -eq 2 ] && [[ "$err" == *"expected a luminaire file"* ]]'
 "$CANDELA" info a.ies b.ies >/dev/null 2>&1; st=$?
-check "two files is a usage error" '[ $st -eq 2 ]'
+check "two missing files: read as a batch, both failed (exit 1)" '[ $st -eq 1 ]'
 "$CANDELA" info --frobnicate "$fix/iso_1000cd.ies" >/dev/null 2>&1; st=$?
 check "an unknown option is a usage error" '[ $st -eq 2 ]'
 out=$("$CANDELA" info --help); st=$?

@@ -30,7 +30,7 @@ for path in "$dir"/*; do
   fi
   check "$f: info exits 0 ($err)" '[ $st -eq 0 ]'
   json=$("$CANDELA" info --json "$path" | tr -d '\n\t ')
-  check "$f: JSON flux" '[[ "$json" =~ \"flux_lm\":[0-9] ]] && [[ "$json" != *:nan* ]] && [[ "$json" != *:inf* ]] && [[ "$json" != *:-inf* ]]'
+  check "$f: JSON flux (radiant in W for files in W/sr)" '( [[ "$json" =~ \"flux_lm\":[0-9] ]] || [[ "$json" =~ \"radiant_flux_w\":[0-9] ]] ) && [[ "$json" != *:nan* ]] && [[ "$json" != *:inf* ]] && [[ "$json" != *:-inf* ]]'
   case "$f" in *.ldt|*.LDT) other=ies; back=ldt ;; *) other=ldt; back=ies ;; esac
   "$CANDELA" convert -q "$path" "$tmp/a.$other"; st1=$?
   "$CANDELA" convert -q "$tmp/a.$other" "$tmp/b.$back"; st2=$?

@@ -43,6 +43,12 @@ solve mm '{"version": 1, "surfaces": ['"$room"'], "luminaires": [
   "grids": ['"$grid"'], "solver": {"method": "direct"}}'; st=$?
 check "millimetres: exit 0, said so" '[ $st -eq 0 ] && grep -q "luminaires\[0\] adds nothing.*looks like millimetres: the scene is in metres" "$tmp/mm.err"'
 
+# A point light in millimetres with nothing around still lights the desk a
+# little from 3.5 km away: the slip is named all the same.
+solve mm_open '{"version": 1, "luminaires": [{"type": "point", "position": [2000,2000,2950], "intensity_cd": 800},
+  {"type": "point", "position": [2,2,2.9], "intensity_cd": 800}], "grids": ['"$grid"'], "solver": {"method": "direct"}}'; st=$?
+check "millimetres, lit: still warned" '[ $st -eq 0 ] && grep -q "warning: luminaires\[0\]: its position \[2000, 2000, 2950\] lies far outside the scene and looks like millimetres" "$tmp/mm_open.err"'
+
 # 4. No light at all; and a grid in shadow while another is lit.
 solve dark '{"version": 1, "surfaces": ['"$room"'], "grids": ['"$grid"']}'; st=$?
 check "no light: exit 0 but said" '[ $st -eq 0 ] && grep -q "warning: the scene has no luminaire and no emitting surface: every grid is at 0 lx" "$tmp/dark.err"'

@@ -33,8 +33,10 @@ int main(void)
     const cJSON *defs = cJSON_GetObjectItemCaseSensitive(schema, "$defs");
     CHECK(cJSON_IsObject(defs));
 
-    const cdl_scene_key_set *sets = NULL;
-    size_t count = cdl_scene_key_sets(&sets);
+    static cdl_scene_keys known;
+    cdl_scene_keys_collect(&known);
+    const cdl_scene_key_set *sets = known.sets;
+    size_t count = known.count;
     CHECK(count >= 20);
     size_t matched = 0;
     for (size_t s = 0; s < count; ++s) {

@@ -1,0 +1,249 @@
+/* vertical_sampled.c - cylindrical and semicylindrical illuminance from extended emitters, skies and interreflection.
+ *
+ * The exact per-light terms of direct_vertical.c cover delta lights. The
+ * rest of the light reaching a point is a radiance field L(w): extended
+ * emitters and skies seen along w, and the light surfaces reflect towards
+ * the point. Cylindrical and semicylindrical illuminance are its moments
+ * (EN 12464-1:2021, 3.2.6; CIE 136:2000), with theta the angle of w from
+ * the vertical and alpha the horizontal angle between w and the
+ * semicylinder's facing direction f:
+ *     E_z  = (1 / pi) int_S2 L(w) sin(theta) dw
+ *     E_sz = (1 / pi) int_S2 L(w) sin(theta) (1 + cos alpha) dw
+ * (each facet of the cylinder, normal m, receives L max(0, w.m) dw; the
+ * mean of max(0, w.m) over the full circle of m is sin(theta) / pi, over
+ * the half facing f sin(theta) (1 + cos alpha) / pi). Directions are drawn
+ * with pdf sin(theta) / pi^2 (int_S2 sin(theta) dw = 2 pi int_0^pi
+ * sin^2 = pi^2), so one sample of E_z is pi L(w) and of E_sz pi L(w) (1 +
+ * cos alpha); theta by inverting its distribution F(theta) = (theta -
+ * sin theta cos theta) / pi, phi uniform; stratified in (F, phi).
+ *
+ * L(w): a sky's luminance when nothing is hit along w (Embree); and where
+ * interreflection is modelled, one path from the point along w
+ * (transport/path.h) estimates pi times the reflected radiance of the
+ * first surface hit. Area emitters and emitting surfaces, often small,
+ * are sampled on themselves instead (their own samplers, emitter.h),
+ * each sample w with its solid-angle pdf adding L (sin theta / pi) / pdf
+ * to E_z and L (sin theta + w_h . f) / (pi pdf) to E_sz when unshadowed;
+ * the samplers cover one half-space of directions at a time, so each
+ * sample is drawn twice, for the half-spaces either side of the plane
+ * across the direction to the emitter, and the two added (each direction
+ * lies in exactly one). Each point is sampled as the path
+ * tracer samples E: a pilot of 8 x 8 strata decides how many samples the
+ * point needs for the target on E_z, one stage of that many is reported
+ * with its standard error (radiometry/estimate.h).
+ */
+#include "solver/transport/vertical_sampled.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "radiometry/bounds.h"
+#include "radiometry/constants.h"
+#include "radiometry/estimate.h"
+#include "radiometry/rng.h"
+
+#define PILOT_SIDE 8
+
+/* theta in [0, pi] with F(theta) = (theta - sin theta cos theta) / pi = u:
+ * Newton's method on a monotone function, safeguarded by bisection. */
+static double theta_from_uniform(double u)
+{
+    double lo = 0.0, hi = CDL_PI, t = CDL_PI * u;
+    for (int k = 0; k < 60; ++k) {
+        double f = t - sin(t) * cos(t) - CDL_PI * u;
+        if (f > 0.0) hi = t;
+        else lo = t;
+        double d = 2.0 * sin(t) * sin(t);
+        double next = d > 1e-12 ? t - f / d : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        if (fabs(next - t) < 1e-15) break;
+        t = next;
+    }
+    return t;
+}
+
+typedef struct sample_value {
+    double L;          /* radiance along w, cd/m^2 (emitted plus one path's reflected estimate) */
+    double potential;  /* what it could have been with nothing in the way (for dark points) */
+} sample_value;
+
+static sample_value radiance_along(const cdl_vertical_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 w,
+                                   cdl_path_stats *stats)
+{
+    sample_value s = {0.0, 0.0};
+    const cdl_direct_context *d = ctx->path.direct;
+    cdl_ray_hit hit;
+    int hit_any = ctx->path.geometry && cdl_scene_geometry_intersect(ctx->path.geometry, p, w, w, INFINITY, &hit);
+    if (ctx->path.geometry) stats->rays++;
+    for (size_t l = 0; l < d->light_count; ++l) {
+        const cdl_scene_light *light = &d->lights[l];
+        if (!light->is_environment) continue; /* area emitters: emitter_samples */
+        double L = cdl_emitter_radiance(light->emitter, p, w, w, NULL).cd_m2;
+        if (!(L > 0.0)) continue;
+        s.potential += CDL_PI * L;
+        if (!hit_any) s.L += L;
+    }
+    if (ctx->indirect && hit_any) {
+        cdl_path_result r;
+        cdl_transport_path(&ctx->path, key, p, w, w, &r, stats);
+        /* one sample of pi x the reflected radiance of the surface hit */
+        s.L += r.value / CDL_PI;
+        s.potential += r.potential;
+    }
+    return s;
+}
+
+/* The area emitters' part of one sample (u in [0, 1)^2): E_z and E_sz
+ * contributions, and what they would be unshadowed (*potential). */
+static void emitter_samples(const cdl_vertical_context *ctx, cdl_vec3 p, cdl_vec3 facing, const double u[2],
+                            double *fz, double *fsz, double *potential, cdl_path_stats *stats)
+{
+    const cdl_direct_context *d = ctx->path.direct;
+    for (size_t l = 0; l < d->light_count; ++l) {
+        const cdl_scene_light *light = &d->lights[l];
+        if (light->is_environment || cdl_emitter_is_delta(light->emitter)) continue;
+        cdl_vec3 a = cdl_vec3_sub(cdl_bounds3_centre(light->bounds), p);
+        double len = cdl_vec3_length(a);
+        a = len > 0.0 ? cdl_vec3_scale(a, 1.0 / len) : cdl_vec3_make(0, 0, 1);
+        for (int h = 0; h < 2; ++h) {
+            cdl_vec3 n = h ? cdl_vec3_neg(a) : a;
+            cdl_light_sample smp;
+            if (!cdl_emitter_sample(light->emitter, p, n, u[0], u[1], &smp) || !(smp.pdf > 0.0)) continue;
+            if (!(cdl_vec3_dot(n, smp.to_light) > 0.0)) continue;
+            cdl_vec3 w = smp.to_light;
+            double st = sqrt(w.x * w.x + w.y * w.y);
+            double gz = smp.L.cd_m2 * st / (CDL_PI * smp.pdf);
+            double gsz = smp.L.cd_m2 * (st + w.x * facing.x + w.y * facing.y) / (CDL_PI * smp.pdf);
+            *potential += gz;
+            if (ctx->path.geometry) {
+                stats->rays++;
+                if (cdl_scene_geometry_ray_occluded(ctx->path.geometry, p, n, w, smp.distance)) continue;
+            }
+            *fz += gz;
+            *fsz += gsz;
+        }
+    }
+}
+
+/* One round of k x k strata, two samples each. */
+static void vertical_round(const cdl_vertical_context *ctx, uint64_t stream, uint64_t base, cdl_vec3 p,
+                           cdl_vec3 facing, int k, cdl_estimate *ez, cdl_estimate *esz, double *potential_sum,
+                           cdl_path_stats *stats)
+{
+    cdl_round rz = {0.0, 0.0, 0.0, 0}, rsz = {0.0, 0.0, 0.0, 0};
+    for (int j = 0; j < k; ++j)
+        for (int i = 0; i < k; ++i) {
+            double fz[2], fsz[2];
+            for (int s = 0; s < 2; ++s) {
+                uint64_t index = base + (uint64_t)(2 * (j * k + i) + s);
+                cdl_rng_key key = {ctx->path.seed, cdl_rng_stream_id(stream, index, 0x63796c /* "cyl" */)};
+                double u[2];
+                cdl_rng_uniform2(key, 0, u);
+                double theta = theta_from_uniform((i + u[0]) / k), phi = 2.0 * CDL_PI * (j + u[1]) / k;
+                double st = sin(theta);
+                cdl_vec3 w = cdl_vec3_make(st * cos(phi), st * sin(phi), cos(theta));
+                sample_value v = radiance_along(ctx, key, p, w, stats);
+                /* pi L, and pi L (1 + cos alpha) with sin(theta) cos(alpha) = w_h . f */
+                double cos_alpha = st > 0.0 ? (w.x * facing.x + w.y * facing.y) / st : 0.0;
+                fz[s] = CDL_PI * v.L;
+                fsz[s] = CDL_PI * v.L * (1.0 + cos_alpha);
+                *potential_sum += v.potential;
+                /* the area emitters, on the same stratum of their own samplers */
+                double ue[2];
+                cdl_rng_uniform2(key, 1, ue);
+                double ue_s[2] = {(i + ue[0]) / k, (j + ue[1]) / k};
+                emitter_samples(ctx, p, facing, ue_s, &fz[s], &fsz[s], potential_sum, stats);
+            }
+            cdl_round_add_pair(&rz, fz[0], fz[1]);
+            cdl_round_add_pair(&rsz, fsz[0], fsz[1]);
+        }
+    cdl_estimate_add_round(ez, &rz);
+    cdl_estimate_add_round(esz, &rsz);
+}
+
+/* The variance of a mean, at least what samples that all gave nothing
+ * could have missed (estimate.h). */
+static double honest_variance(const cdl_estimate *e, double potential)
+{
+    double v = cdl_estimate_variance(e);
+    if (e->nonzero == 0) v = fmax(v, cdl_estimate_unseen_variance(e->samples, potential));
+    return v;
+}
+
+void cdl_vertical_sampled_point(const cdl_vertical_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 facing,
+                                double Ez_exact, cdl_vertical_estimate *out, cdl_path_stats *stats)
+{
+    cdl_estimate pz = {0.0, 0.0, 0.0, 0}, psz = {0.0, 0.0, 0.0, 0};
+    double potential_sum = 0.0;
+    vertical_round(ctx, stream, 0, p, facing, PILOT_SIDE, &pz, &psz, &potential_sum, stats);
+    double potential = potential_sum / pz.samples;
+    /* E_z = exact + sampled, held to the target; a dark point to a
+     * thousandth of what its samples could carry. */
+    double R = fmax(Ez_exact + cdl_estimate_mean(&pz), 1e-3 * potential);
+    double budget = ctx->target * ctx->target * R * R;
+    cdl_estimate planning = pz;
+    planning.var_num = honest_variance(&pz, potential) * pz.samples * pz.samples;
+    double want = budget > 0.0 ? cdl_estimate_plan(&planning, budget, 2.0 * PILOT_SIDE * PILOT_SIDE)
+                               : 2.0 * PILOT_SIDE * PILOT_SIDE;
+    if (want > ctx->max_samples) want = ctx->max_samples;
+    /* The reported stage, its size fixed by the pilot alone. */
+    cdl_estimate ez = {0.0, 0.0, 0.0, 0}, esz = {0.0, 0.0, 0.0, 0};
+    double stage_potential = 0.0;
+    vertical_round(ctx, stream, (uint64_t)pz.samples, p, facing, cdl_estimate_side_for(want, PILOT_SIDE, 1 << 12), &ez,
+                   &esz, &stage_potential, stats);
+    out->Ez = cdl_estimate_mean(&ez);
+    out->Esz = cdl_estimate_mean(&esz);
+    out->Ez_var = honest_variance(&ez, potential);
+    out->Esz_var = honest_variance(&esz, 2.0 * potential);
+    out->samples = (uint64_t)(pz.samples + ez.samples);
+}
+
+/* ---- a grid on the worker pool ------------------------------------------------ */
+
+typedef struct grid_job {
+    const cdl_vertical_context *ctx;
+    const cdl_grid *grid;
+    size_t grid_index;
+    double *Ez, *Esz, *Ez_stderr, *Esz_stderr;
+} grid_job;
+
+static cdl_status sample_points(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
+{
+    (void)err;
+    const grid_job *job = shared;
+    cdl_path_stats *stats = local;
+    for (size_t i = begin; i < end; ++i) {
+        uint64_t stream = cdl_rng_stream_id((uint64_t)job->grid_index, (uint64_t)i, 0x7665727469 /* "verti" */);
+        cdl_vec3 facing = cdl_vec3_make(1, 0, 0);
+        cdl_direct_facing_direction(job->grid->normals[i], &facing);
+        cdl_vertical_estimate e;
+        cdl_vertical_sampled_point(job->ctx, stream, job->grid->points[i], facing, job->Ez ? job->Ez[i] : 0.0, &e,
+                                   stats);
+        if (job->Ez) {
+            job->Ez[i] += e.Ez;
+            job->Ez_stderr[i] = sqrt(e.Ez_var);
+        }
+        if (job->Esz) {
+            job->Esz[i] += e.Esz;
+            job->Esz_stderr[i] = sqrt(e.Esz_var);
+        }
+    }
+    return CDL_OK;
+}
+
+cdl_status cdl_vertical_sampled_grid(const cdl_vertical_context *ctx, const cdl_grid *grid, size_t grid_index,
+                                     double *Ez, double *Esz, double *Ez_stderr, double *Esz_stderr, int threads,
+                                     const cdl_progress_sink *progress, const char *stage, cdl_path_stats *stats,
+                                     cdl_error *err)
+{
+    if (threads < 1) threads = 1;
+    cdl_path_stats *locals = calloc((size_t)threads, sizeof *locals);
+    if (!locals) return cdl_error_out_of_memory(err);
+    grid_job job = {ctx, grid, grid_index, Ez, Esz, Ez_stderr, Esz_stderr};
+    cdl_pool_task task = {.count = grid->count, .chunk = 2, .run = sample_points, .shared = &job,
+                          .locals = locals, .local_size = sizeof *locals, .stage = stage};
+    cdl_status st = cdl_pool_run(&task, threads, progress, err);
+    for (int t = 0; t < threads; ++t) cdl_path_stats_add(stats, &locals[t]);
+    free(locals);
+    return st;
+}
