@@ -5,7 +5,7 @@
  * refused so the fuzzer never opens files). If it reads, summarise it, write
  * it as IES (2019 and 2002) and EULUMDAT, and read every output back: a
  * writer must never produce a file its own reader rejects, and a type C
- * table must keep its flux. A violated invariant aborts (a finding), as do
+ * table must keep its light (flux x output factor). A violated invariant aborts (a finding), as do
  * crashes, hangs and sanitizer reports. */
 #include <math.h>
 #ifndef M_PI
@@ -46,13 +46,16 @@ static void round_trip(const cdl_photometry *p, int ldt, int version)
     require(st == CDL_OK, "the writer's output reads back", err.message);
     cdl_photometry_table t;
     cdl_photometry_get_table(p, &t);
-    double a = cdl_photometry_flux(p).lm, b = cdl_photometry_flux(q).lm;
+    /* The light kept is the flux times the output factor: a target with no
+     * ballast-factor field (EULUMDAT) folds the factor into its table. */
+    double a = cdl_photometry_flux(p).lm * cdl_photometry_output_factor(p);
+    double b = cdl_photometry_flux(q).lm * cdl_photometry_output_factor(q);
     require(isfinite(b) && b >= 0.0, "finite flux after the round trip", NULL);
     /* Type C data is written, not resampled: ten significant digits, and a
      * partial gamma range padded for LM-63 gains at most two 0.001 degree
      * ramps, each adding less than 2 pi I_max x (0.001 deg) / 2. */
-    double ramps = 2.0 * M_PI * cdl_photometry_max_intensity(p).cd * 0.001 * M_PI / 180.0;
-    if (t.type == CDL_PHOTOMETRIC_TYPE_C) require(fabs(b - a) <= 1e-6 * a + ramps, "flux kept", NULL);
+    double ramps = 2.0 * M_PI * cdl_photometry_max_intensity(p).cd * 0.001 * M_PI / 180.0 * cdl_photometry_output_factor(p);
+    if (t.type == CDL_PHOTOMETRIC_TYPE_C) require(fabs(b - a) <= 1e-6 * a + ramps, "light kept", NULL);
     cdl_photometry_release(q);
     free(text);
 }
