@@ -5,6 +5,7 @@
  *   spot          position, axis, I0, half angle, falloff     2 pi I0 [(1-cos a_f) + smoothstep part]
  *                 start (smoothstep) or exponent n (cos^n)    2 pi I0 / (n + 1)
  *   goniometric   position, rotation, photometry, factors     factor x photometric flux
+ *   (opening)     the same, spread over the file's opening     the same
  *   area          Lambertian, one-sided shape, L (cd/m^2)     pi L A
  *   directional   direction of travel, E normal to the beam   E per m^2 of beam section
  *   environment   uniform L, CIE overcast (L at   see cdl_emitter_flux
@@ -61,7 +62,8 @@ typedef enum cdl_emitter_kind {
     CDL_EMITTER_GONIOMETRIC,
     CDL_EMITTER_AREA,
     CDL_EMITTER_DIRECTIONAL,
-    CDL_EMITTER_ENVIRONMENT
+    CDL_EMITTER_ENVIRONMENT,
+    CDL_EMITTER_GONIOMETRIC_OPENING        /* a goniometric luminaire spread over its luminous opening */
 } cdl_emitter_kind;
 
 typedef struct cdl_emitter cdl_emitter;
@@ -175,6 +177,27 @@ cdl_status cdl_emitter_create_area(const cdl_area_params *p, cdl_emitter **out, 
 cdl_status cdl_emitter_create_directional(const cdl_directional_params *p, cdl_emitter **out, cdl_error *err);
 cdl_status cdl_emitter_create_environment(const cdl_environment_params *p, cdl_emitter **out, cdl_error *err);
 void cdl_emitter_release(cdl_emitter *emitter);
+
+/* Near field: the goniometric luminaire of `p` spread over the luminous
+ * opening of its photometry (metadata.opening; cdl_luminous_opening_is_flat
+ * must hold: a rectangle, circle or ellipse of non-zero size), an extended
+ * emitter. Each element dA of the opening emits I(w) dA / A towards w, so
+ * the opening's luminance is I(w) / (A |cos theta_o|): downward light
+ * (gamma < 90) from its lower face, upward light from its upper face; the
+ * flux and the far-field intensity are the point emitter's. Closed-form
+ * illuminance (cdl_emitter_exact_illuminance) where the table is
+ * I0 cos(gamma) below the horizontal and dark above (within 1e-6 I0 at
+ * every sample) on a rectangle or circle: a Lambertian area emitter of
+ * luminance I0 / A; otherwise sampled (cdl_emitter_sample, exact pdf).
+ * See emitter_opening.c. */
+cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *p, cdl_emitter **out,
+                                                  cdl_error *err);
+
+/* The lower (nadir-facing) face of a goniometric opening emitter in world
+ * coordinates: a CDL_SHAPE_RECT or CDL_SHAPE_DISK, an ellipse as its
+ * bounding rectangle (which contains it). Returns 0 (and sets nothing) for
+ * other kinds. What a solver needs to bound where the light comes from. */
+int cdl_emitter_opening_face(const cdl_emitter *emitter, cdl_shape *face);
 
 /* The kind the emitter was created as. */
 cdl_emitter_kind cdl_emitter_get_kind(const cdl_emitter *emitter);

@@ -188,10 +188,12 @@ static int gamma_cutoff(const cdl_photometry *ph, double *cutoff_deg)
 static const cdl_emitter_ops gonio_ops = {gonio_flux, gonio_intensity, gonio_eval_delta, NULL, NULL, NULL, NULL,
                                           gonio_cone, gonio_eval_delta_many};
 
-/* Columns of Rz(c) Ry(b) Rx(a) (angles in radians), each rotation
- * right-handed about a fixed world axis: R e_k for k = x, y, z. */
-static void rotation_columns(double a, double b, double c, cdl_vec3 col[3])
+/* Columns of Rz(c) Ry(b) Rx(a) (a, b, c the angles about x, y, z), each
+ * rotation right-handed about a fixed world axis: R e_k for k = x, y, z. */
+void cdl_emitter_rotation_columns(const double rotation_deg[3], cdl_vec3 col[3])
 {
+    double a = rotation_deg[0] * CDL_DEG_TO_RAD, b = rotation_deg[1] * CDL_DEG_TO_RAD,
+           c = rotation_deg[2] * CDL_DEG_TO_RAD;
     double ca = cos(a), sa = sin(a), cb = cos(b), sb = sin(b), cc = cos(c), sc = sin(c);
     /* Rz Ry Rx =
      *   [cc cb   cc sb sa - sc ca   cc sb ca + sc sa]
@@ -239,8 +241,7 @@ cdl_status cdl_emitter_create_goniometric(const cdl_goniometric_params *p, cdl_e
     if (!g) return CDL_ERR_INTERNAL;
     g->position = p->position;
     g->photometry = p->photometry;
-    rotation_columns(p->rotation_deg[0] * CDL_DEG_TO_RAD, p->rotation_deg[1] * CDL_DEG_TO_RAD,
-                     p->rotation_deg[2] * CDL_DEG_TO_RAD, g->col);
+    cdl_emitter_rotation_columns(p->rotation_deg, g->col);
     /* Installed tilt: angle between the turned nadir R(-e_z) = -col[2] and
      * world -z, from atan2(|a x b|, a.b), exact at every angle. */
     cdl_vec3 nadir = cdl_vec3_neg(g->col[2]), down = cdl_vec3_make(0.0, 0.0, -1.0);

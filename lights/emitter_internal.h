@@ -59,4 +59,9 @@ typedef cdl_luminous_intensity (*cdl_emitter_intensity_fn)(const cdl_emitter *e,
 int cdl_emitter_eval_positional(const cdl_emitter *e, cdl_vec3 position, cdl_emitter_intensity_fn intensity_towards,
                                 cdl_vec3 p, cdl_vec3 n, cdl_delta_light *out);
 
+/* Columns of world_from_luminaire = Rz Ry Rx for rotations in degrees about
+ * the fixed world x, y, z axes: the luminaire's x, y, z axes in world
+ * (emitter_goniometric.c; shared with emitter_opening.c). */
+void cdl_emitter_rotation_columns(const double rotation_deg[3], cdl_vec3 col[3]);
+
 #endif

@@ -234,6 +234,36 @@ typedef struct cdl_luminous_opening {
     int units_type;                     /* IES units: 1 feet, 2 metres; 0 when not from IES */
 } cdl_luminous_opening;
 
+/* 1 when the opening is flat with a non-zero size (a rectangle, circle or
+ * ellipse): what cdl_emitter_create_goniometric_opening spreads light over. */
+int cdl_luminous_opening_is_flat(const cdl_luminous_opening *opening);
+
+/* The opening's largest dimension in metres (its diagonal for rectangles
+ * and boxes, the longest axis of round shapes, the diagonal of a
+ * cylinder's side view); 0 for a point. Near-field distances are counted
+ * in it. */
+double cdl_luminous_opening_largest_m(const cdl_luminous_opening *opening);
+
+/* The opening's area projected on a plane normal to `dir` (luminaire frame:
+ * x along the length, C0; y along the width, C90; z up; any length > 0),
+ * in m^2, every shape of LM-63 Table 1 (half the summed |n.dir| A of a
+ * convex body's faces; an ellipsoid's pi sqrt(b^2 c^2 x^2 + a^2 c^2 y^2 +
+ * a^2 b^2 z^2)); 0 for points and unknown shapes. */
+double cdl_luminous_opening_projected_area(const cdl_luminous_opening *opening, cdl_vec3 dir);
+
+/* Luminance of the luminous opening seen from the direction (c_deg,
+ * gamma_deg) of the photometric frame (type C angles, whatever the table's
+ * type): average = I / A_projected (the luminance of a source, CIE S 017
+ * 17-21-050), the table's intensity over the opening's projected area in
+ * that direction. maximum = the greatest luminance over the visible part
+ * of the opening in that direction: the near-field model spreads the
+ * intensity evenly over the opening (emitter_opening.c), so it equals the
+ * average. Both 0 where the opening has no projected area (a point, an
+ * unknown shape, a flat opening seen edge-on). Intensities as in the table
+ * (cd, multiplier applied). */
+void cdl_photometry_opening_luminance(const cdl_photometry *photometry, double c_deg, double gamma_deg,
+                                      cdl_luminance *average, cdl_luminance *maximum);
+
 /* One lamp set. An IES file has one (lamp count x lumens per lamp); an
  * EULUMDAT file has 1..20, the first being the measured equipment and the
  * others alternatives. */

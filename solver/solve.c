@@ -74,6 +74,22 @@ const char *cdl_solve_first_reflector(const cdl_scene *scene, double *rho)
 
 /* The method that computes a grid's interreflection, and the point count
  * times the target that chose it under "auto". */
+/* A near-field split light's part of a grid, appended to its plan text:
+ * how many points it lights and why (the opening within
+ * CDL_NEAR_FIELD_DISTANCES opening sizes, the point beyond). */
+static void describe_near_field(const cdl_scene_light *light, const cdl_grid *grid, char *text, size_t size)
+{
+    if (!light->near_part) return;
+    size_t lit = 0;
+    for (size_t i = 0; i < grid->count; ++i) lit += (size_t)cdl_scene_light_applies(light, grid->points[i]);
+    size_t used = strlen(text);
+    snprintf(text + used, size - used,
+             "; near field \"auto\": %s at %zu of %zu points (%s %.3g m = %g x the opening's largest dimension "
+             "from its centre)",
+             light->near_part > 0 ? "spread over its luminous opening" : "a point", lit, grid->count,
+             light->near_part > 0 ? "nearer than" : "at or beyond", light->near_radius, CDL_NEAR_FIELD_DISTANCES);
+}
+
 static cdl_method grid_method(cdl_method method, const cdl_grid *grid, double target, double *score)
 {
     *score = (double)grid->count * target;
@@ -528,6 +544,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
             cdl_direct_route_describe(&routes[l], routes_text, sizeof routes_text);
             snprintf(text, sizeof text, "%s%s%s", cdl_light_strategy_name(strategies[l]), routes_text[0] ? "; " : "",
                      routes_text);
+            describe_near_field(&lights.lights[l], &gs->grid, text, sizeof text);
             cJSON_AddStringToObject(plan_grids[l], spec->name, text);
         }
         if (indirect) {

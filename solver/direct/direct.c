@@ -91,6 +91,8 @@ size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, 
     size_t count = 0;
     for (size_t l = 0; l < ctx->light_count; ++l) {
         const cdl_scene_light *light = &ctx->lights[l];
+        /* The near-field part of a luminaire lights only its ball. */
+        if (light->near_part > 0 && cdl_vec3_distance(center, light->near_center) > radius + light->near_radius) continue;
         if (light->has_cone && light->cone_angle < 0.5 * CDL_PI) {
             /* The ball, seen from the light under the half-angle b with
              * sin b = r / d, meets the cone (half-angle a) iff the angle t
@@ -114,6 +116,7 @@ size_t cdl_direct_select_lights(const cdl_direct_context *ctx, cdl_vec3 center, 
  * distance its shadow ray needs; 0 when the light does not reach p. */
 static double delta_unshadowed(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n, cdl_delta_light *d)
 {
+    if (!cdl_scene_light_applies(light, p)) return 0.0;
     if (light->has_cone) {
         /* Outside the emission cone: no light, no lookup. For cones up to a
          * hemisphere (cos >= 0) the test needs no square root:
@@ -199,6 +202,7 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
             if (!ctx->geometry || !cdl_direct_shadowed(ctx, p, n, d.to_light, d.distance, stats)) E += e;
             continue;
         }
+        if (!cdl_scene_light_applies(light, p)) continue;
         /* One sample of the light: with a closed form E_0, the estimator
          * E_0 - f (1 - V) (exact where the sample is not hidden); without,
          * f V. f = L cos / pdf, V the sample's visibility. */
@@ -288,7 +292,8 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
         if (is_delta(strategy)) {
             cdl_emitter_eval_delta_many(ctx->lights[l].emitter, points, normals, count, delta);
             for (size_t i = 0; i < count; ++i) {
-                double e = delta[i].E.lx > 0.0 ? delta[i].E.lx : 0.0;
+                double e = delta[i].E.lx > 0.0 && cdl_scene_light_applies(&ctx->lights[l], points[i]) ? delta[i].E.lx
+                                                                                                       : 0.0;
                 scratch->contribution[i * lights + a] = e;
                 cdl_ray_record *r = &scratch->rays[pending];
                 if (e > 0.0 && strategy == CDL_STRATEGY_DELTA_SHADOWED &&

@@ -302,6 +302,10 @@ static void term_start(const cdl_direct_context *ctx, term *t, cdl_light_strateg
     t->sky = NULL;
     t->region = NULL;
     t->L_ref = t->L_spread = 0.0;
+    if (!cdl_scene_light_applies(t->light, p)) {
+        t->mode = TERM_EXACT; /* the other part of a near-field split lights p */
+        return;
+    }
     if (st != CDL_STRATEGY_SAMPLED || cdl_emitter_has_exact_illuminance(t->light->emitter)) {
         if (cdl_emitter_exact_illuminance(t->light->emitter, p, n, &exact, NULL) == CDL_OK) {
             t->exact = t->potential = exact.lx > 0.0 ? exact.lx : 0.0;

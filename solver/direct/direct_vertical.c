@@ -59,6 +59,7 @@ void cdl_direct_vertical_point(const cdl_direct_context *ctx, const cdl_light_st
         size_t l = active ? active[a] : a;
         cdl_light_strategy st = strategies[l];
         if (st != CDL_STRATEGY_DELTA_EXACT && st != CDL_STRATEGY_DELTA_SHADOWED) continue;
+        if (!cdl_scene_light_applies(&ctx->lights[l], p)) continue;
         const cdl_emitter *e = ctx->lights[l].emitter;
         /* First the direction to the light (given whatever the plane),
          * then the illuminance on the plane facing it: E_n = I / d^2. */

@@ -88,6 +88,14 @@ typedef enum cdl_luminaire_kind {
     CDL_LUMINAIRE_ENVIRONMENT
 } cdl_luminaire_kind;
 
+/* When a goniometric luminaire is spread over its luminous opening (an
+ * extended emitter, cdl_emitter_create_goniometric_opening) instead of a
+ * point: AUTO at calculation points nearer than CDL_NEAR_FIELD_DISTANCES
+ * times the opening's largest dimension, ALWAYS everywhere, NEVER nowhere.
+ * A file whose opening is not flat with a non-zero size stays a point. */
+typedef enum cdl_near_field_mode { CDL_NEAR_FIELD_AUTO = 0, CDL_NEAR_FIELD_ALWAYS, CDL_NEAR_FIELD_NEVER } cdl_near_field_mode;
+#define CDL_NEAR_FIELD_DISTANCES 5.0
+
 typedef struct cdl_luminaire_spec {
     char json_path[CDL_JSON_PATH_SIZE];  /* "luminaires[2]": the entry it comes from */
     char *name;                          /* NULL when not given */
@@ -119,6 +127,7 @@ typedef struct cdl_luminaire_spec {
     char *file;                          /* resolved path (also environment image) */
     double rotation_deg[3];
     double multiplier;                   /* default 1 */
+    cdl_near_field_mode near_field;      /* spread over the file's luminous opening: default AUTO */
     /* all: default 1 */
     double maintenance_factor;
     /* area: a surface-like shape (rect, disk, polygon or mesh, same keys as

@@ -284,6 +284,50 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
     return CDL_OK;
 }
 
+/* A goniometric luminaire with a flat opening: its opening as an extended
+ * emitter, everywhere ("always", replacing the point `point`) or within
+ * CDL_NEAR_FIELD_DISTANCES opening sizes ("auto", the point beyond). */
+static cdl_status add_near_field(const cdl_scene *scene, const cdl_luminaire_spec *sp, const cdl_goniometric_params *p,
+                                 cdl_emitter *point, const cdl_scene_light *point_proto, cdl_scene_lights *L,
+                                 cdl_error *err)
+{
+    double size = cdl_luminous_opening_largest_m(&cdl_photometry_get_metadata(p->photometry)->opening);
+    cdl_scene_light proto = *point_proto;
+    cdl_status st;
+    if (sp->near_field == CDL_NEAR_FIELD_AUTO) {
+        cdl_scene_light far = *point_proto;
+        far.near_part = -1;
+        far.near_center = sp->position;
+        far.near_radius = CDL_NEAR_FIELD_DISTANCES * size;
+        snprintf(far.label + strlen(far.label), sizeof far.label - strlen(far.label), " (point, far field)");
+        st = add_light(L, point, "goniometric", &far, err);
+        if (st != CDL_OK) return fail_at(err, scene, sp->json_path, st);
+        proto.near_part = 1;
+        proto.near_center = sp->position;
+        proto.near_radius = far.near_radius;
+        snprintf(proto.label + strlen(proto.label), sizeof proto.label - strlen(proto.label),
+                 " (opening, near field)");
+    } else {
+        cdl_emitter_release(point);
+    }
+    cdl_emitter *e = NULL;
+    st = cdl_emitter_create_goniometric_opening(p, &e, err);
+    if (st != CDL_OK) return fail_at(err, scene, sp->json_path, st);
+    proto.bounded = 0;
+    cdl_shape face;
+    cdl_emitter_opening_face(e, &face);
+    st = describe_area(&proto, &face, err);
+    if (st != CDL_OK) {
+        cdl_emitter_release(e);
+        free(proto.outline);
+        return fail_at(err, scene, sp->json_path, st);
+    }
+    /* describe_area bounds the lower face; the opening is flat, so that is all of it */
+    proto.has_closed_form = cdl_emitter_has_exact_illuminance(e);
+    if (!proto.has_closed_form) proto.outline_count = 0;
+    return add_light(L, e, "goniometric opening", &proto, err);
+}
+
 static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geometry *geometry, size_t k,
                                   cdl_scene_lights *L, cdl_error *err)
 {
@@ -379,6 +423,9 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
         p.apply_output_factor = 1;
         st = cdl_emitter_create_goniometric(&p, &e, err);
         bounds_add(&proto, sp->position);
+        if (st == CDL_OK && sp->near_field != CDL_NEAR_FIELD_NEVER &&
+            cdl_luminous_opening_is_flat(&cdl_photometry_get_metadata(ph)->opening))
+            return add_near_field(scene, sp, &p, e, &proto, L, err);
         break;
     }
     case CDL_LUMINAIRE_AREA: {

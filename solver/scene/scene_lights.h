@@ -53,7 +53,23 @@ typedef struct cdl_scene_light {
     double cone_angle;                /* radians */
     double cone_cos, cone_sin;        /* cos and sin of cone_angle */
     double cone_cos2;                 /* cos^2 of cone_angle */
+    /* Near field (a goniometric luminaire with near_field "auto"): the
+     * luminaire is two lights, its opening (near_part 1) at points nearer
+     * than near_radius to near_center, its point model (near_part -1) at
+     * the others; near_part 0 lights every point. */
+    int near_part;
+    cdl_vec3 near_center;
+    double near_radius;               /* CDL_NEAR_FIELD_DISTANCES x the opening's largest dimension */
 } cdl_scene_light;
+
+/* Does the light reach p at all as far as its near-field split goes? */
+static inline int cdl_scene_light_applies(const cdl_scene_light *light, cdl_vec3 p)
+{
+    if (!light->near_part) return 1;
+    cdl_vec3 d = cdl_vec3_sub(p, light->near_center);
+    int near = cdl_vec3_dot(d, d) < light->near_radius * light->near_radius;
+    return light->near_part > 0 ? near : !near;
+}
 
 typedef struct cdl_scene_lights {
     cdl_scene_light *lights;       /* one per emitter, in scene order: luminaires, then emitting surfaces */

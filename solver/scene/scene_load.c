@@ -7,7 +7,8 @@
  *   spot         position, direction; exactly one of intensity_cd, flux_lm;
  *                either half_angle in (0, 180] with falloff_start in
  *                [0, half_angle] (default half_angle), or exponent >= 0
- *   goniometric  file, position; rotation (default [0, 0, 0]), multiplier
+ *   goniometric  file, position; rotation (default [0, 0, 0]), near_field
+ *                ("auto", "always" or "never"; default "auto"), multiplier
  *                (>= 0, default 1), flux_lm (> 0, optional rescale)
  *   area         shape (rect, disk, polygon, mesh); exactly one of
  *                luminance_cd_m2, flux_lm (>= 0); reflectance (default 0)
@@ -134,7 +135,7 @@ static const char *const luminaire_keys[][LUMINAIRE_KEYS_MAX] = {
     {"type", "name", "position", "positions", "array", "direction", "aim", "spin", "intensity_cd", "flux_lm",
      "half_angle", "falloff_start", "exponent", "maintenance_factor", NULL},
     {"type", "name", "file", "position", "positions", "array", "rotation", "aim", "spin", "multiplier", "flux_lm",
-     "maintenance_factor", NULL},
+     "maintenance_factor", "near_field", NULL},
     {"type", "name", "shape", "luminance_cd_m2", "flux_lm", "reflectance", "maintenance_factor", NULL},
     {"type", "name", "direction", "illuminance_lx", "maintenance_factor", NULL},
     {"type", "name", "luminance_cd_m2", "file", "scale", "up", "hemisphere", "maintenance_factor", "sky",
@@ -289,6 +290,12 @@ static cdl_status read_luminaire(const cdl_scene_parse *ctx, const cJSON *node, 
             cdl_scene_json_read_number(ctx, field(node, path, "multiplier", p), p, CDL_RANGE_NONNEGATIVE, 0,
                                        &out->multiplier) != CDL_OK)
             return CDL_ERR_INPUT;
+        /* the order of cdl_near_field_mode */
+        static const char *const near_modes[] = {"auto", "always", "never", NULL};
+        int near = CDL_NEAR_FIELD_AUTO;
+        if (cdl_scene_json_read_choice(ctx, field(node, path, "near_field", p), p, near_modes, 0, &near) != CDL_OK)
+            return CDL_ERR_INPUT;
+        out->near_field = (cdl_near_field_mode)near;
         out->rotation_deg[0] = rotation.x;
         out->rotation_deg[1] = rotation.y;
         out->rotation_deg[2] = rotation.z;

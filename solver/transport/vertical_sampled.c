@@ -101,7 +101,8 @@ static void emitter_samples(const cdl_vertical_context *ctx, cdl_vec3 p, cdl_vec
     const cdl_direct_context *d = ctx->path.direct;
     for (size_t l = 0; l < d->light_count; ++l) {
         const cdl_scene_light *light = &d->lights[l];
-        if (light->is_environment || cdl_emitter_is_delta(light->emitter)) continue;
+        if (light->is_environment || cdl_emitter_is_delta(light->emitter) || !cdl_scene_light_applies(light, p))
+            continue;
         cdl_vec3 a = cdl_vec3_sub(cdl_bounds3_centre(light->bounds), p);
         double len = cdl_vec3_length(a);
         a = len > 0.0 ? cdl_vec3_scale(a, 1.0 / len) : cdl_vec3_make(0, 0, 1);

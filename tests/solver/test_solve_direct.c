@@ -820,7 +820,9 @@ static void test_sky_behind_wall(void)
  * (the angle of the turned nadir from -z), linear between table angles
  * (LM-63-2019, 5.4), multiplies the intensity, as do multiplier and
  * maintenance factor; flux_lm first rescales the table to that flux. Probes
- * on the turned nadir (gamma = 0), facing the luminaire: E = I / d^2. */
+ * on the turned nadir (gamma = 0), facing the luminaire: E = I / d^2, the
+ * point model ("near_field": "never"; the file has a 0.5 x 0.5 m opening,
+ * which "auto" would spread the light over within 3.5 m). */
 static void test_goniometric_tilt_and_flux(void)
 {
     const char *ies = CANDELA_SOURCE_DIR "/tests/data/photometric/ies_tilt_file.ies";
@@ -836,14 +838,14 @@ static void test_goniometric_tilt_and_flux(void)
      * 2: 45 degrees about x turns the nadir towards +y; flux_lm and multiplier. */
     snprintf(json[0], sizeof json[0],
              "{\"version\": 1, \"luminaires\": [{\"type\": \"goniometric\", \"file\": \"%s\", \"position\": [0, 0, 3],"
-             " \"rotation\": [0, -30, 0], \"maintenance_factor\": 0.8}],"
+             " \"rotation\": [0, -30, 0], \"maintenance_factor\": 0.8, \"near_field\": \"never\"}],"
              " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": ["
              " {\"p\": [1, 0, 1.2679491924311228], \"n\": [-0.5, 0, 0.8660254037844386]}]}],"
              " \"solver\": {\"method\": \"direct\"}}",
              ies);
     snprintf(json[1], sizeof json[1],
              "{\"version\": 1, \"luminaires\": [{\"type\": \"goniometric\", \"file\": \"%s\", \"position\": [0, 0, 3],"
-             " \"rotation\": [45, 0, 0], \"flux_lm\": 2400, \"multiplier\": 0.5}],"
+             " \"rotation\": [45, 0, 0], \"flux_lm\": 2400, \"multiplier\": 0.5, \"near_field\": \"never\"}],"
              " \"grids\": [{\"name\": \"p\", \"type\": \"points\", \"points\": ["
              " {\"p\": [0, 1.4142135623730951, 1.5857864376269049], \"n\": [0, -0.70710678118654757, 0.70710678118654757]}]}],"
              " \"solver\": {\"method\": \"direct\"}}",
