@@ -25,7 +25,8 @@
  * illuminance below); otherwise sampled (cdl_emitter_sample): rectangles
  * and circles by the area emitter's samplers of the face p sees (uniform
  * in solid angle near a rectangle, cosine-weighted near a large disk, by
- * area far away), ellipses by area (polar map), each sample's luminance
+ * area far away), ellipses by those of their bounding rectangle (samples
+ * outside the ellipse carry nothing), each sample's luminance
  * I(w) / (A |cos theta_o|).
  */
 #include <math.h>
@@ -44,7 +45,7 @@
 typedef struct opening_emitter {
     cdl_emitter base;
     cdl_emitter *point;        /* the same luminaire as a point: I(w) */
-    cdl_emitter *face[2];      /* unit-luminance area emitters: [0] faces the nadir, [1] up (NULL for ellipses) */
+    cdl_emitter *face[2];      /* unit-luminance area emitters (an ellipse's bounding rectangle): [0] faces the nadir, [1] up */
     cdl_luminous_shape shape;
     cdl_vec3 center;
     cdl_vec3 axis[3];          /* the luminaire's x (length), y (width), z (up) in world */
@@ -95,32 +96,29 @@ static int face_seen(const opening_emitter *o, cdl_vec3 p)
     return s < 0.0 ? 0 : s > 0.0 ? 1 : -1;
 }
 
-/* Polar map of [0,1)^2 onto the ellipse: a uniform point of its area. */
-static cdl_vec3 ellipse_point(const opening_emitter *o, double u1, double u2)
+/* Is the point of the opening's plane that the ray from p along unit dir
+ * meets inside the ellipse? (Rectangles and circles: always, their face
+ * emitters already tested it.) */
+static int inside_opening(const opening_emitter *o, cdl_vec3 p, cdl_vec3 dir)
 {
-    double r = sqrt(u1), phi = CDL_TWO_PI * u2;
-    return cdl_vec3_add(o->center, cdl_vec3_add(cdl_vec3_scale(o->axis[0], o->half_length * r * cos(phi)),
-                                                cdl_vec3_scale(o->axis[1], o->half_width * r * sin(phi))));
+    if (o->shape != CDL_LUMINOUS_SHAPE_ELLIPSE) return 1;
+    double along = cdl_vec3_dot(dir, o->axis[2]);
+    /* the ray meets the plane at t = (c - p).z / dir.z */
+    double t = cdl_vec3_dot(cdl_vec3_sub(o->center, p), o->axis[2]) / along;
+    if (!(t > 0.0) || !isfinite(t)) return 0;
+    cdl_vec3 h = cdl_vec3_sub(cdl_vec3_madd(p, t, dir), o->center);
+    double x = cdl_vec3_dot(h, o->axis[0]) / o->half_length, y = cdl_vec3_dot(h, o->axis[1]) / o->half_width;
+    return x * x + y * y <= 1.0;
 }
 
+/* Samples of the face p sees (an ellipse: of its bounding rectangle, those
+ * outside the ellipse carrying nothing), each with the luminance
+ * I(w) / (A |cos theta_o|) of its direction. */
 static int opening_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1, double u2, cdl_light_sample *out)
 {
     const opening_emitter *o = as_opening(e);
     int f = face_seen(o, p);
-    if (f < 0) return 0;
-    if (o->face[f]) {
-        if (!cdl_emitter_sample(o->face[f], p, n, u1, u2, out)) return 0;
-    } else {
-        cdl_vec3 v = cdl_vec3_sub(ellipse_point(o, u1, u2), p);
-        double d2 = cdl_vec3_dot(v, v), d = sqrt(d2);
-        if (!(d > 0.0)) return 0;
-        out->to_light = cdl_vec3_scale(v, 1.0 / d);
-        out->distance = d;
-        double c = fabs(cdl_vec3_dot(out->to_light, o->axis[2]));
-        if (!(c > 0.0)) return 0;
-        /* area density 1 / A as a solid-angle density: d^2 / (A cos theta_o) */
-        out->pdf = d2 / (o->area * c);
-    }
+    if (f < 0 || !cdl_emitter_sample(o->face[f], p, n, u1, u2, out) || !inside_opening(o, p, out->to_light)) return 0;
     out->L = cdl_nits(opening_luminance_towards(o, cdl_vec3_neg(out->to_light)));
     return out->L.cd_m2 > 0.0 && out->pdf > 0.0;
 }
@@ -130,19 +128,8 @@ static cdl_luminance opening_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3
     const opening_emitter *o = as_opening(e);
     *pdf = 0.0;
     int f = face_seen(o, p);
-    if (f < 0) return cdl_nits(0.0);
-    if (o->face[f]) {
-        if (!(cdl_emitter_radiance(o->face[f], p, n, dir, pdf).cd_m2 > 0.0)) return cdl_nits(0.0);
-    } else {
-        /* the ray meets the plane at t = (c - p).z / dir.z */
-        double along = cdl_vec3_dot(dir, o->axis[2]);
-        double t = cdl_vec3_dot(cdl_vec3_sub(o->center, p), o->axis[2]) / along;
-        if (!(t > 0.0) || !isfinite(t)) return cdl_nits(0.0);
-        cdl_vec3 h = cdl_vec3_sub(cdl_vec3_madd(p, t, dir), o->center);
-        double x = cdl_vec3_dot(h, o->axis[0]) / o->half_length, y = cdl_vec3_dot(h, o->axis[1]) / o->half_width;
-        if (x * x + y * y > 1.0) return cdl_nits(0.0);
-        *pdf = t * t / (o->area * fabs(along));
-    }
+    if (f < 0 || !inside_opening(o, p, dir) || !(cdl_emitter_radiance(o->face[f], p, n, dir, pdf).cd_m2 > 0.0))
+        return cdl_nits(0.0);
     return cdl_nits(opening_luminance_towards(o, cdl_vec3_neg(dir)));
 }
 
@@ -247,19 +234,17 @@ cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *
     /* rectangle L W; circle and ellipse pi a b */
     o->area = op->shape == CDL_LUMINOUS_SHAPE_RECTANGLE ? 4.0 * o->half_length * o->half_width
                                                          : CDL_PI * o->half_length * o->half_width;
-    if (op->shape != CDL_LUMINOUS_SHAPE_ELLIPSE) {
-        for (int up = 0; up < 2 && st == CDL_OK; ++up) st = make_face(o, up, &o->face[up], err);
-        if (st != CDL_OK) {
-            cdl_emitter_release(&o->base);
-            return st;
-        }
-        double I0;
-        if (table_is_lambertian(p->photometry, &I0)) {
-            o->lambertian = 1;
-            o->base.ops = &lambertian_ops;
-            /* the table's I0 with every factor of the placed luminaire */
-            o->lambert_luminance = cdl_emitter_intensity(point, cdl_vec3_neg(o->axis[2])).cd / o->area;
-        }
+    for (int up = 0; up < 2 && st == CDL_OK; ++up) st = make_face(o, up, &o->face[up], err);
+    if (st != CDL_OK) {
+        cdl_emitter_release(&o->base);
+        return st;
+    }
+    double I0;
+    if (op->shape != CDL_LUMINOUS_SHAPE_ELLIPSE && table_is_lambertian(p->photometry, &I0)) {
+        o->lambertian = 1;
+        o->base.ops = &lambertian_ops;
+        /* the table's I0 with every factor of the placed luminaire */
+        o->lambert_luminance = cdl_emitter_intensity(point, cdl_vec3_neg(o->axis[2])).cd / o->area;
     }
     *out = &o->base;
     return CDL_OK;
