@@ -10,6 +10,7 @@
 #include "cli_args.h"
 #include "command.h"
 #include "lights/photometry.h"
+#include "solver/scene/scene.h"
 
 static void print_help(FILE *out)
 {
@@ -130,6 +131,40 @@ static void add_array(cJSON *obj, const char *key, const double *x, size_t n)
     for (size_t i = 0; i < n; ++i) cJSON_AddItemToArray(a, cJSON_CreateNumber(isfinite(x[i]) ? x[i] : 0.0));
 }
 
+/* The viewing angles of the opening's luminance table: the C planes along
+ * and across the luminaire, and the glare zone's gamma (CIE 117 tabulates
+ * luminaire luminance at 45..85 degrees). */
+static const double luminance_c_deg[4] = {0.0, 90.0, 180.0, 270.0};
+static const double luminance_gamma_deg[6] = {0.0, 45.0, 55.0, 65.0, 75.0, 85.0};
+
+/* What near-field light and glare need of the opening: its largest
+ * dimension, the distance within which the solver spreads the light over
+ * it, and its luminance (average and maximum over the visible opening)
+ * at each viewing angle; null luminances for openings without area. */
+static void add_opening_luminance(cJSON *op, const cdl_photometry *p)
+{
+    const cdl_luminous_opening *o = &cdl_photometry_get_metadata(p)->opening;
+    double size = cdl_luminous_opening_largest_m(o);
+    add_number(op, "largest_dimension_m", 1, size);
+    cJSON_AddBoolToObject(op, "spread_by_solver", cdl_luminous_opening_is_flat(o));
+    add_number(op, "near_field_distance_m", cdl_luminous_opening_is_flat(o), CDL_NEAR_FIELD_DISTANCES * size);
+    cJSON *rows = cJSON_AddArrayToObject(op, "luminance");
+    for (int c = 0; c < 4; ++c)
+        for (int g = 0; g < 6; ++g) {
+            cdl_luminance avg, max;
+            cdl_photometry_opening_luminance(p, luminance_c_deg[c], luminance_gamma_deg[g], &avg, &max);
+            cJSON *row = cJSON_CreateObject();
+            cJSON_AddNumberToObject(row, "c_deg", luminance_c_deg[c]);
+            cJSON_AddNumberToObject(row, "gamma_deg", luminance_gamma_deg[g]);
+            int has_area = cdl_luminous_opening_projected_area(
+                               o, cdl_photometry_direction(CDL_PHOTOMETRIC_TYPE_C, luminance_c_deg[c],
+                                                           luminance_gamma_deg[g])) > 0.0;
+            add_number(row, "average_cd_m2", has_area, avg.cd_m2);
+            add_number(row, "maximum_cd_m2", has_area, max.cd_m2);
+            cJSON_AddItemToArray(rows, row);
+        }
+}
+
 static cJSON *info_json(const char *path, const cdl_photometry *p, const cdl_photometry_summary *s)
 {
     const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
@@ -195,6 +230,7 @@ static cJSON *info_json(const char *path, const cdl_photometry *p, const cdl_pho
     add_number(op, "width_m", 1, m->opening.width_m);
     add_number(op, "length_m", 1, m->opening.length_m);
     add_number(op, "height_m", 1, m->opening.height_m);
+    add_opening_luminance(op, p);
     cJSON *kw = cJSON_AddArrayToObject(j, "keywords");
     for (size_t i = 0; i < m->keyword_count; ++i) {
         cJSON *pair = cJSON_CreateObject();
@@ -298,6 +334,17 @@ static void print_text(const char *path, const cdl_photometry *p, const cdl_phot
         printf(", %.4g x %.4g x %.4g m (width x length x height)", m->opening.width_m, m->opening.length_m,
                m->opening.height_m);
     printf("\n");
+    if (cdl_luminous_opening_is_flat(&m->opening))
+        printf("%-16sspread over its opening within %.3g m (%g x its largest dimension %.3g m)\n", "near field",
+               CDL_NEAR_FIELD_DISTANCES * cdl_luminous_opening_largest_m(&m->opening), CDL_NEAR_FIELD_DISTANCES,
+               cdl_luminous_opening_largest_m(&m->opening));
+    cdl_luminance nadir, max, c0, c90;
+    cdl_photometry_opening_luminance(p, 0.0, 0.0, &nadir, &max);
+    cdl_photometry_opening_luminance(p, 0.0, 65.0, &c0, &max);
+    cdl_photometry_opening_luminance(p, 90.0, 65.0, &c90, &max);
+    if (nadir.cd_m2 > 0.0 || c0.cd_m2 > 0.0 || c90.cd_m2 > 0.0)
+        printf("%-16s%.4g cd/m2 at nadir; %.4g (C0) and %.4g (C90) at gamma 65 (average over the opening)\n",
+               "luminance", nadir.cd_m2, c0.cd_m2, c90.cd_m2);
     if (m->tilt_count > 0)
         printf("%-16s%zu angles, geometry %d (factors %.4g..%.4g)\n", "tilt", m->tilt_count, m->tilt_geometry,
                m->tilt_factors[0], m->tilt_factors[m->tilt_count - 1]);

@@ -46,5 +46,42 @@ for m in "ldt_gldf_two_lamp_sets_CRLF.ldt:lamp set 2 (alternative" "ldt_dlip_thr
   check "$f: IES cannot hold the other lamp sets, said on stderr ($err)" '[ $st -eq 0 ] && [[ "$err" == *"IES cannot hold: EULUMDAT $want"* ]] && [[ "$err" == *"direct ratios"* ]]'
   check "$f: lamp set 2 kept as [OTHER]" 'grep -q "^\[OTHER\] Alternative lamp set 2: " "$tmp/sets.ies"'
 done
+# The luminous opening, one real file per shape code of the corpus: read
+# (shape and size in metres in the JSON), shown (the text's opening line;
+# the near-field distance for flat openings, luminance where the opening
+# has area), and carried by convert: kept IES -> IES, EULUMDAT -> IES ->
+# EULUMDAT, and where EULUMDAT has no such shape, said on stderr.
+for m in "ies_lithonia_AF10_bf088.ies:rectangle:0.329184:1.2192:0" \
+         "ies_dlip_1995_relative_mult.ies:circle" \
+         "ies_gldf_H90-270_circle2002.ies:vertical cylinder:0.56:0.56:0.065" \
+         "ldt_road_Isym3_Mc52.ldt:vertical cylinder:0.472:0.472:0.14" \
+         "ies_dlip_1995_sphere.ies:sphere:0.12:0.12:0.12" \
+         "ies_dlip_1995_ellipsoid.ies:ellipsoid:0.12:0.34:0.56" \
+         "ies_lithonia_RV8_oddshape.ies:unknown" \
+         "ies_maxwell_1995_full.IES:point:0:0:0"; do
+  IFS=: read -r f shape w l h <<<"$m"
+  json=$("$CANDELA" info --json "$dir/$f" | tr -d '\n\t ')
+  check "$f: opening shape $shape in the JSON" '[[ "$json" == *"\"opening\":{\"shape\":\"${shape// /}\""* ]]'
+  if [ -n "${w:-}" ]; then
+    check "$f: opening $w x $l x $h m in the JSON" '[[ "$json" == *"\"width_m\":$w,\"length_m\":$l,\"height_m\":$h,"* ]]'
+  fi
+  check "$f: luminance table in the JSON" '[[ "$json" == *"\"luminance\":[{\"c_deg\":0,\"gamma_deg\":0,\"average_cd_m2\":"* ]]'
+  text=$("$CANDELA" info "$dir/$f")
+  check "$f: the opening shown" '[[ "$text" == *"opening         $shape"* ]]'
+  case "$shape" in
+    rectangle|circle) check "$f: the near-field distance shown" '[[ "$text" == *"near field      spread over its opening within"* ]]' ;;
+    *) check "$f: no near field for a $shape" '[[ "$text" != *"near field      "* ]]' ;;
+  esac
+  "$CANDELA" convert -q "$dir/$f" "$tmp/o.ies" && back=$("$CANDELA" info "$tmp/o.ies")
+  check "$f: the opening kept in IES" '[[ "$back" == *"opening         $shape"* ]]'
+  err=$("$CANDELA" convert "$dir/$f" "$tmp/o.ldt" 2>&1 >/dev/null)
+  case "$shape" in
+    point|rectangle|circle|"vertical cylinder")
+      back=$("$CANDELA" info "$tmp/o.ldt")
+      check "$f: the opening kept in EULUMDAT" '[[ "$back" == *"opening         $shape"* ]] && [[ "$err" != *"luminous opening"* ]]' ;;
+    *) check "$f: EULUMDAT cannot hold a $shape, said on stderr ($err)" '[[ "$err" == *"luminous opening '"'"'$shape'"'"' written as its bounding rectangle or circle"* ]]' ;;
+  esac
+done
+
 echo "$count files checked"
 exit $fail
