@@ -184,11 +184,15 @@ void cdl_emitter_release(cdl_emitter *emitter);
  * emitter. Each element dA of the opening emits I(w) dA / A towards w, so
  * the opening's luminance is I(w) / (A |cos theta_o|): downward light
  * (gamma < 90) from its lower face, upward light from its upper face; the
- * flux and the far-field intensity are the point emitter's. Closed-form
- * illuminance (cdl_emitter_exact_illuminance) where the table is
- * I0 cos(gamma) below the horizontal and dark above (within 1e-6 I0 at
- * every sample) on a rectangle or circle: a Lambertian area emitter of
- * luminance I0 / A; otherwise sampled (cdl_emitter_sample, exact pdf).
+ * flux and the far-field intensity are the point emitter's. Exact
+ * unoccluded illuminance (cdl_emitter_exact_illuminance): in closed form
+ * where the table is I0 cos(gamma) below the horizontal and dark above
+ * (within 1e-6 I0 at every sample) on a rectangle or circle (a Lambertian
+ * area emitter of luminance I0 / A); otherwise an adaptive Gauss-Legendre
+ * cubature of the opening converged to 1e-5 relative (it fails, and the
+ * caller samples, where 4096 cells do not reach that: a receiver in the
+ * opening's plane). Samples (cdl_emitter_sample) with their exact pdf for
+ * every opening, for shadows.
  * See emitter_opening.c. */
 cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *p, cdl_emitter **out,
                                                   cdl_error *err);
@@ -198,6 +202,14 @@ cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *
  * bounding rectangle (which contains it). Returns 0 (and sets nothing) for
  * other kinds. What a solver needs to bound where the light comes from. */
 int cdl_emitter_opening_face(const cdl_emitter *emitter, cdl_shape *face);
+
+/* 1 when a goniometric opening emitter's exact illuminance is Lambert's
+ * closed form (a Lambertian table on a rectangle or circle: microseconds);
+ * 0 when it is the adaptive cubature (tenths of a millisecond, more within
+ * a few centimetres of the opening) and for other kinds. Lets a solver
+ * that needs many unshadowed values cheaply (next-event estimation)
+ * sample such an emitter instead. */
+int cdl_emitter_opening_is_lambertian(const cdl_emitter *emitter);
 
 /* The kind the emitter was created as. */
 cdl_emitter_kind cdl_emitter_get_kind(const cdl_emitter *emitter);

@@ -207,7 +207,8 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
          * E_0 - f (1 - V) (exact where the sample is not hidden); without,
          * f V. f = L cos / pdf, V the sample's visibility. */
         cdl_illuminance exact;
-        int closed = cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK;
+        /* (a cubature per path vertex would cost more than the sample) */
+        int closed = !light->costly_exact && cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK;
         if (closed && !(exact.lx > 0.0)) continue;
         double u[2];
         cdl_rng_uniform2(key, (uint64_t)l, u);

@@ -324,7 +324,7 @@ static cdl_status add_near_field(const cdl_scene *scene, const cdl_luminaire_spe
     }
     /* describe_area bounds the lower face; the opening is flat, so that is all of it */
     proto.has_closed_form = cdl_emitter_has_exact_illuminance(e);
-    if (!proto.has_closed_form) proto.outline_count = 0;
+    proto.costly_exact = !cdl_emitter_opening_is_lambertian(e);
     return add_light(L, e, "goniometric opening", &proto, err);
 }
 
