@@ -154,25 +154,22 @@ static void test_cubature(void)
                       "\"position\": [0, 0, 3], \"near_field\": \"always\"}], \"grids\": [{\"name\": \"p\", "
                       "\"type\": \"points\", \"points\": [",
                       path);
-    for (int d = 0; d < 8; ++d)
-        for (int a = 0; a < 8; ++a)
-            at += snprintf(json + at, sizeof json - (size_t)at, "%s{\"p\": [%.17g, %.17g, %.17g], \"n\": [0, 0, 1]}",
-                           d + a ? ", " : "", 0.6 * lateral[a], 0.8 * lateral[a], 3.0 - depths[d]);
+    /* point i: depth i / 8, offset i % 8 */
+    for (int i = 0; i < 64; ++i)
+        at += snprintf(json + at, sizeof json - (size_t)at, "%s{\"p\": [%.17g, %.17g, %.17g], \"n\": [0, 0, 1]}",
+                       i ? ", " : "", 0.6 * lateral[i % 8], 0.8 * lateral[i % 8], 3.0 - depths[i / 8]);
     snprintf(json + at, sizeof json - (size_t)at, "]}], \"solver\": {\"method\": \"direct\", \"quality\": \"high\"}}");
     cdl_scene *scene;
     cdl_solution sol;
     if (!fixture_solve(json, &scene, &sol, 2)) return;
     const cdl_grid_solution *g = &sol.grids[0];
     int exact = 0;
-    for (int d = 0; d < 8; ++d)
-        for (int a = 0; a < 8; ++a) {
-            size_t i = (size_t)(8 * d + a);
-            double want = disk_E(L, 0.3, depths[d], lateral[a]);
-            exact += g->E_stderr[i] == 0.0;
-            CHECK_MSG(fabs(g->E[i] - want) <= 5.0 * g->E_stderr[i] + 5e-5 * want,
-                      "depth %g offset %g: %.7g +- %.3g, expected %.7g", depths[d], lateral[a], g->E[i],
-                      g->E_stderr[i], want);
-        }
+    for (size_t i = 0; i < 64; ++i) {
+        double want = disk_E(L, 0.3, depths[i / 8], lateral[i % 8]);
+        exact += g->E_stderr[i] == 0.0;
+        CHECK_MSG(fabs(g->E[i] - want) <= 5.0 * g->E_stderr[i] + 5e-5 * want, "depth %g offset %g: %.7g +- %.3g, expected %.7g",
+                  depths[i / 8], lateral[i % 8], g->E[i], g->E_stderr[i], want);
+    }
     CHECK(exact >= 56);
     fixture_release(scene, &sol);
 }
