@@ -33,6 +33,7 @@ typedef enum reach { REACH_NONE, REACH_HIDDEN, REACH_LIT } reach;
 static reach light_reaches(const cdl_direct_context *ctx, size_t l, cdl_light_strategy st, cdl_vec3 p, cdl_vec3 n)
 {
     const cdl_scene_light *light = &ctx->lights[l];
+    if (!cdl_scene_light_applies(light, p)) return REACH_NONE; /* the other part of a near-field split */
     cdl_direct_sample_stats stats = {0};
     if (cdl_emitter_is_delta(light->emitter)) {
         cdl_delta_light d;
@@ -117,9 +118,18 @@ cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_conte
                 if (r > best[l]) best[l] = r;
             }
         }
+    /* A luminaire split into its point (far) and its opening (near) parts,
+     * adjacent, reaches what either part reaches; the point part speaks
+     * for both. */
+    for (size_t l = 1; l < ctx->light_count; ++l)
+        if (ctx->lights[l].near_part > 0 && ctx->lights[l - 1].near_part < 0) {
+            reach r = best[l] > best[l - 1] ? best[l] : best[l - 1];
+            best[l] = best[l - 1] = r;
+        }
     cdl_bounds3 box = scene_box(ctx, out);
     for (size_t l = 0; l < ctx->light_count && st == CDL_OK; ++l) {
         const cdl_scene_light *light = &ctx->lights[l];
+        if (light->near_part > 0 && l > 0 && ctx->lights[l - 1].near_part < 0) continue;
         char mm[200] = "";
         int millimetres = light->bounded && looks_like_millimetres(box, cdl_bounds3_centre(light->bounds));
         if (millimetres) {

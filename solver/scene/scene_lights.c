@@ -286,7 +286,9 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
 
 /* A goniometric luminaire with a flat opening: its opening as an extended
  * emitter, everywhere ("always", replacing the point `point`) or within
- * CDL_NEAR_FIELD_DISTANCES opening sizes ("auto", the point beyond). */
+ * CDL_NEAR_FIELD_DISTANCES opening sizes ("auto", the point beyond: two
+ * adjacent lights of the same label, kinds "goniometric" and "goniometric
+ * opening", the point first). */
 static cdl_status add_near_field(const cdl_scene *scene, const cdl_luminaire_spec *sp, const cdl_goniometric_params *p,
                                  cdl_emitter *point, const cdl_scene_light *point_proto, cdl_scene_lights *L,
                                  cdl_error *err)
@@ -299,14 +301,11 @@ static cdl_status add_near_field(const cdl_scene *scene, const cdl_luminaire_spe
         far.near_part = -1;
         far.near_center = sp->position;
         far.near_radius = CDL_NEAR_FIELD_DISTANCES * size;
-        snprintf(far.label + strlen(far.label), sizeof far.label - strlen(far.label), " (point, far field)");
         st = add_light(L, point, "goniometric", &far, err);
         if (st != CDL_OK) return fail_at(err, scene, sp->json_path, st);
         proto.near_part = 1;
         proto.near_center = sp->position;
         proto.near_radius = far.near_radius;
-        snprintf(proto.label + strlen(proto.label), sizeof proto.label - strlen(proto.label),
-                 " (opening, near field)");
     } else {
         cdl_emitter_release(point);
     }
