@@ -224,9 +224,10 @@ static int opening_cubature(const opening_emitter *o, cdl_vec3 p, cdl_vec3 n, do
         nv = ratio < 1.0 ? (int)fmin(32.0, ceil(1.0 / ratio)) : 1;
         u_lo = -o->half_length, u_hi = o->half_length, v_lo = -o->half_width, v_hi = o->half_width;
     }
-    cell *heap = malloc(CUBATURE_MAX_CELLS * sizeof *heap);
-    if (!heap) return 0;
-    int count = 0;
+    /* most points converge in a few dozen cells: the heap starts on the
+     * stack and moves to the heap only when it must grow */
+    cell local[64], *heap = local;
+    int count = 0, capacity = 64;
     double du = (u_hi - u_lo) / nu, dv = (v_hi - v_lo) / nv, sum = 0.0, error = 0.0;
     for (int j = 0; j < nv; ++j)
         for (int i = 0; i < nu; ++i) {
@@ -243,9 +244,17 @@ static int opening_cubature(const opening_emitter *o, cdl_vec3 p, cdl_vec3 n, do
     double floor = d2 > 0.0 ? 1e-3 * cdl_emitter_flux(o->point).lm / (4.0 * CDL_PI * d2) : 0.0;
     int ok = 1;
     while (error > CUBATURE_TOLERANCE * fmax(fabs(sum), floor)) {
-        if (count + 3 > CUBATURE_MAX_CELLS) {
-            ok = 0;
-            break;
+        if (count + 3 > capacity) {
+            int grown = 4 * capacity;
+            cell *bigger = grown <= CUBATURE_MAX_CELLS ? malloc((size_t)grown * sizeof *bigger) : NULL;
+            if (!bigger) {
+                ok = 0; /* past the budget (or out of memory): the caller samples */
+                break;
+            }
+            memcpy(bigger, heap, (size_t)count * sizeof *heap);
+            if (heap != local) free(heap);
+            heap = bigger;
+            capacity = grown;
         }
         cell w = heap_pop(heap, &count);
         sum -= w.value;
@@ -267,7 +276,7 @@ static int opening_cubature(const opening_emitter *o, cdl_vec3 p, cdl_vec3 n, do
             }
         }
     }
-    free(heap);
+    if (heap != local) free(heap);
     if (!ok) return 0;
     *E = sum > 0.0 ? sum : 0.0;
     return 1;
