@@ -74,15 +74,20 @@ const char *cdl_solve_first_reflector(const cdl_scene *scene, double *rho)
 
 /* The method that computes a grid's interreflection, and the point count
  * times the target that chose it under "auto". */
-/* A near-field split light's part of a grid, appended to its plan text:
- * how many points it lights and why (the opening within
+/* A near-field light's part of a grid, appended to its plan text: an
+ * opening everywhere ("always"), or for a split luminaire ("auto") how
+ * many points each part lights and why (the opening within
  * CDL_NEAR_FIELD_DISTANCES opening sizes, the point beyond). */
 static void describe_near_field(const cdl_scene_light *light, const cdl_grid *grid, char *text, size_t size)
 {
-    if (!light->near_part) return;
+    size_t used = strlen(text);
+    if (!light->near_part) {
+        if (cdl_emitter_get_kind(light->emitter) == CDL_EMITTER_GONIOMETRIC_OPENING)
+            snprintf(text + used, size - used, "; near field \"always\": spread over its luminous opening at every point");
+        return;
+    }
     size_t lit = 0;
     for (size_t i = 0; i < grid->count; ++i) lit += (size_t)cdl_scene_light_applies(light, grid->points[i]);
-    size_t used = strlen(text);
     snprintf(text + used, size - used,
              "; near field \"auto\": %s at %zu of %zu points (%s %.3g m = %g x the opening's largest dimension "
              "from its centre)",

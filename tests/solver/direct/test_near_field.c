@@ -131,6 +131,9 @@ static void test_modes(void)
         const char *near_text = strstr(sol.plan_json, "spread over its luminous opening at 1 of 3 points");
         CHECK_MSG((m == 0) == (near_text != NULL), "mode %s: plan %s the near-field split", modes[m],
                   near_text ? "names" : "does not name");
+        const char *always_text = strstr(sol.plan_json, "near field \\\"always\\\": spread over its luminous opening");
+        CHECK_MSG((m == 1) == (always_text != NULL), "mode %s: plan %s the opening everywhere", modes[m],
+                  always_text ? "names" : "does not name");
         fixture_release(scene, &sol);
     }
     CHECK(near_ext < 0.95 * near_pt); /* the probe is truly in the near field */
