@@ -27,8 +27,8 @@ cdl_status cdl_bench_report_write_csv(const char *path, const cdl_bench_row *row
 cdl_status cdl_bench_report_write_svg(const char *path, const cdl_bench_row *rows, size_t count,
                                       double reference_rms, cdl_error *err);
 
-/* The same plot as bench.png (760 x 500, drawn with bitmap_font.h: the
- * y axis's title stands above the axis, in lower case). */
+/* The same plot as bench.png (760 x 500; lines drawn pixel by pixel, text
+ * by pango, graphics/raster_canvas.h; the y axis's title stands above the axis). */
 cdl_status cdl_bench_report_write_png(const char *path, const cdl_bench_row *rows, size_t count,
                                       double reference_rms, cdl_error *err);
 
