@@ -33,6 +33,39 @@ static cairo_status_t append(void *closure, const unsigned char *data, unsigned 
     return CAIRO_STATUS_SUCCESS;
 }
 
+/* The title, XML-escaped (bytes outside ASCII dropped: their encoding is
+ * unknown), as <title> right after the <svg ...> start tag. */
+static cdl_status insert_title(svg_buffer *b, const char *title)
+{
+    char *svg_tag = strstr(b->data, "<svg");
+    char *tag_end = svg_tag ? strchr(svg_tag, '>') : NULL;
+    if (!tag_end) return CDL_OK;
+    size_t at = (size_t)(tag_end + 1 - b->data);
+    size_t n = strlen(title);
+    char *text = malloc(6 * n + 32);
+    if (!text) return CDL_ERR_INTERNAL;
+    size_t k = (size_t)sprintf(text, "\n<title>");
+    for (const char *c = title; *c; ++c) {
+        unsigned char u = (unsigned char)*c;
+        if (u == '&') k += (size_t)sprintf(text + k, "&amp;");
+        else if (u == '<') k += (size_t)sprintf(text + k, "&lt;");
+        else if (u == '>') k += (size_t)sprintf(text + k, "&gt;");
+        else if (u >= 0x20 && u < 0x7F) text[k++] = (char)u;
+    }
+    k += (size_t)sprintf(text + k, "</title>");
+    cairo_status_t grown = append(b, (const unsigned char *)text, (unsigned int)k); /* room at the end */
+    if (grown != CAIRO_STATUS_SUCCESS) {
+        free(text);
+        return CDL_ERR_INTERNAL;
+    }
+    size_t tail = b->size - k - at;
+    memmove(b->data + at + k, b->data + at, tail);
+    memcpy(b->data + at, text, k);
+    b->data[b->size] = '\0';
+    free(text);
+    return CDL_OK;
+}
+
 cdl_status cdl_figure_svg(const cdl_figure *figure, char **svg, size_t *size, cdl_error *err)
 {
     *svg = NULL;
@@ -54,6 +87,13 @@ cdl_status cdl_figure_svg(const cdl_figure *figure, char **svg, size_t *size, cd
         free(b.data);
         return cdl_error_set(err, CDL_ERR_INTERNAL, "drawing an SVG figure failed: %s",
                              cairo_status_to_string(drawn != CAIRO_STATUS_SUCCESS ? drawn : finished));
+    }
+    if (figure->title && *figure->title) {
+        cdl_status st = insert_title(&b, figure->title);
+        if (st != CDL_OK) {
+            free(b.data);
+            return cdl_error_out_of_memory(err);
+        }
     }
     *svg = b.data;
     *size = b.size;

@@ -4,7 +4,9 @@
  * that draws it on a cairo context whose origin is the figure's top-left
  * corner. The same function draws it on a report's PDF page (translated
  * there) and into SVG: as a file written atomically, or as text in memory
- * for an HTML page. Errors: CDL_ERR_INTERNAL naming what cairo reported,
+ * for an HTML page. Cairo draws text as glyph outlines, so the figure's
+ * title is also written as the SVG's <title> element: what screen readers
+ * say and what a search finds. Errors: CDL_ERR_INTERNAL naming what cairo reported,
  * or the atomic file's errors. Thread safety: none needed (no state).
  */
 #ifndef CANDELA_GRAPHICS_FIGURE_H
@@ -17,6 +19,7 @@
 
 typedef struct cdl_figure {
     double width, height;                 /* points */
+    const char *title;                    /* the SVG's <title> (its accessible name), or NULL */
     void (*draw)(cairo_t *cr, const void *user);
     const void *user;
 } cdl_figure;
