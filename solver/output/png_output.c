@@ -11,6 +11,7 @@
 
 #include "graphics/raster_canvas.h"
 #include "solver/output/display_transform.h"
+#include "solver/output/false_colour.h"
 #include "solver/output/png_write.h"
 
 /* Layout, in image pixels. */
@@ -200,28 +201,6 @@ static void fill_rect(uint8_t *img, int width, int x0, int y0, int w, int h, con
         for (int x = x0; x < x0 + w; ++x) memcpy(img + 3 * ((size_t)y * (size_t)width + (size_t)x), colour, 3);
 }
 
-/* Display-referred float in [0, 1] to an 8-bit code value, rounded to nearest. */
-static uint8_t to_8bit(float v)
-{
-    if (!(v > 0.0f)) return 0;
-    if (v >= 1.0f) return 255;
-    return (uint8_t)(v * 255.0f + 0.5f);
-}
-
-/* Colours of n positions t in [0, 1] through the false-colour view, as 8-bit RGB. */
-static cdl_status false_colours(const cdl_display_transform *view, const double *t, size_t n, uint8_t *out,
-                                cdl_error *err)
-{
-    float *rgb = malloc((n ? n : 1) * 3 * sizeof(float));
-    if (!rgb) return cdl_error_out_of_memory(err);
-    /* The view's input is a grey value; its 1D LUT gives each channel its own ramp. */
-    for (size_t i = 0; i < n; ++i) rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = (float)t[i];
-    cdl_status st = cdl_display_transform_apply(view, rgb, n, err);
-    for (size_t i = 0; st == CDL_OK && i < 3 * n; ++i) out[i] = to_8bit(rgb[i]);
-    free(rgb);
-    return st;
-}
-
 /* Row of the bar where position t sits (top = 1, bottom = 0). */
 static int bar_row(const cdl_png_layout *L, double t)
 {
@@ -360,7 +339,7 @@ static cdl_status render(const cdl_grid_result *result, const cdl_png_layout *L,
     }
     for (size_t i = 0; i < n; ++i) t[i] = cdl_lux_scale_position(&L->scale, cdl_lux(result->E[i]));
     for (size_t r = 0; r < bar_n; ++r) t[n + r] = bar_n > 1 ? 1.0 - (double)r / (double)(bar_n - 1) : 1.0;
-    cdl_status st = false_colours(view, t, n + bar_n, colour, err);
+    cdl_status st = cdl_false_colour_rgb8(view, t, n + bar_n, colour, err);
     if (st == CDL_OK) {
         fill_rect(img, L->width, 0, 0, L->width, L->height, white);
         for (int r = 0; r < grid->raster_height; ++r)
