@@ -4,6 +4,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "solver/grid/grid.h"
+
 typedef struct segment_list {
     cdl_contour_segment *items;
     size_t count, capacity;
@@ -87,6 +89,24 @@ cdl_status cdl_contour_trace(const double *v, int width, int height, double leve
     *segments = l.items;
     *count = l.count;
     return CDL_OK;
+}
+
+cdl_status cdl_contour_trace_grid(const cdl_grid *g, const double *E, double level, cdl_contour_segment **segments,
+                                  size_t *count, cdl_error *err)
+{
+    size_t pixels = (size_t)g->raster_width * (size_t)g->raster_height;
+    double *values = malloc((pixels ? pixels : 1) * sizeof *values);
+    if (!values) return cdl_error_out_of_memory(err);
+    for (size_t k = 0; k < pixels; ++k) values[k] = g->raster_index[k] < 0 ? NAN : E[g->raster_index[k]];
+    cdl_status st = cdl_contour_trace(values, g->raster_width, g->raster_height, level, segments, count, err);
+    free(values);
+    return st;
+}
+
+cdl_vec3 cdl_contour_world_position(const cdl_grid *g, double x, double y)
+{
+    cdl_vec3 p = cdl_vec3_madd(g->raster_corner, x * g->pixel_width_m, g->raster_right);
+    return cdl_vec3_madd(p, (g->raster_height - y) * g->pixel_height_m, g->raster_up);
 }
 
 size_t cdl_contour_levels(double lo, double hi, double *levels, size_t max_levels)

@@ -20,6 +20,7 @@
 #include <stddef.h>
 
 #include "radiometry/error.h"
+#include "radiometry/vec3.h"
 
 typedef struct cdl_contour_segment {
     double x0, y0, x1, y1;   /* raster units */
@@ -30,6 +31,17 @@ typedef struct cdl_contour_segment {
  * to free (NULL when *count = 0). CDL_ERR_INTERNAL for memory. */
 cdl_status cdl_contour_trace(const double *values, int width, int height, double level,
                              cdl_contour_segment **segments, size_t *count, cdl_error *err);
+
+struct cdl_grid;
+/* The same over a grid's raster (grid.h) with one value per point (E,
+ * grid->count values): each pixel takes its point's value, pixels outside
+ * the grid none. */
+cdl_status cdl_contour_trace_grid(const struct cdl_grid *grid, const double *E, double level,
+                                  cdl_contour_segment **segments, size_t *count, cdl_error *err);
+
+/* The world point at raster position (x, y) (x right, y down, in pixels)
+ * on the grid's plane. */
+cdl_vec3 cdl_contour_world_position(const struct cdl_grid *grid, double x, double y);
 
 /* Round levels between lo and hi (exclusive) into levels[0 .. return). */
 size_t cdl_contour_levels(double lo, double hi, double *levels, size_t max_levels);

@@ -97,17 +97,11 @@ static cdl_status make_image(cdl_grid_map *m, cdl_error *err)
 
 static cdl_status trace_contours(cdl_grid_map *m, cdl_error *err)
 {
-    const cdl_grid *g = &m->grid->grid;
-    size_t pixels = (size_t)g->raster_width * (size_t)g->raster_height;
-    double *values = malloc((pixels ? pixels : 1) * sizeof *values);
-    if (!values) return cdl_error_out_of_memory(err);
-    for (size_t k = 0; k < pixels; ++k) values[k] = g->raster_index[k] < 0 ? NAN : m->grid->E[g->raster_index[k]];
     m->level_count = cdl_contour_levels(m->grid->Emin, m->grid->Emax, m->levels, CDL_GRID_MAP_MAX_LEVELS);
     cdl_status st = CDL_OK;
     for (size_t k = 0; k < m->level_count && st == CDL_OK; ++k)
-        st = cdl_contour_trace(values, g->raster_width, g->raster_height, m->levels[k], &m->segments[k],
-                               &m->segment_count[k], err);
-    free(values);
+        st = cdl_contour_trace_grid(&m->grid->grid, m->grid->E, m->levels[k], &m->segments[k], &m->segment_count[k],
+                                    err);
     return st;
 }
 
