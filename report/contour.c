@@ -91,13 +91,55 @@ cdl_status cdl_contour_trace(const double *v, int width, int height, double leve
     return CDL_OK;
 }
 
+/* A polygon grid's raster shows each triangle's point over the whole
+ * triangle (several pixels a point): contours of that would follow the
+ * triangles' edges in steps. There each pixel centre takes the inverse
+ * distance weighted mean (Shepard 1968, weights 1 / d^2) of the points
+ * shown within one spacing of it, which passes through every point's
+ * value at the point and varies smoothly between them. Rasters of one
+ * pixel a point (rect grids) are contoured as they are; so are rasters too
+ * large to smooth quickly (beyond 4 million pixels). */
+#define SMOOTH_MAX_PIXELS ((size_t)4 << 20)
+#define SMOOTH_MAX_NEIGHBOURS 64
+
+static double smoothed_value(const cdl_grid *g, const double *E, int c, int r, int reach)
+{
+    int32_t seen[SMOOTH_MAX_NEIGHBOURS];
+    int n = 0;
+    cdl_vec3 centre = cdl_contour_world_position(g, c + 0.5, r + 0.5);
+    double sum_w = 0.0, sum = 0.0;
+    for (int dr = -reach; dr <= reach; ++dr)
+        for (int dc = -reach; dc <= reach; ++dc) {
+            int cc = c + dc, rr = r + dr;
+            if (cc < 0 || rr < 0 || cc >= g->raster_width || rr >= g->raster_height) continue;
+            int32_t idx = g->raster_index[(size_t)rr * (size_t)g->raster_width + (size_t)cc];
+            int known = idx < 0;
+            for (int k = 0; k < n && !known; ++k) known = seen[k] == idx;
+            if (known || n == SMOOTH_MAX_NEIGHBOURS) continue;
+            seen[n++] = idx;
+            double d2 = cdl_vec3_length_squared(cdl_vec3_sub(g->points[idx], centre));
+            if (d2 < 1e-18) return E[idx];
+            sum_w += 1.0 / d2;
+            sum += E[idx] / d2;
+        }
+    return sum / sum_w;
+}
+
 cdl_status cdl_contour_trace_grid(const cdl_grid *g, const double *E, double level, cdl_contour_segment **segments,
                                   size_t *count, cdl_error *err)
 {
     size_t pixels = (size_t)g->raster_width * (size_t)g->raster_height;
     double *values = malloc((pixels ? pixels : 1) * sizeof *values);
     if (!values) return cdl_error_out_of_memory(err);
-    for (size_t k = 0; k < pixels; ++k) values[k] = g->raster_index[k] < 0 ? NAN : E[g->raster_index[k]];
+    int smooth = pixels > g->count + g->count / 2 && pixels <= SMOOTH_MAX_PIXELS && g->pixel_width_m > 0.0;
+    int reach = smooth ? (int)ceil(g->spacing_m / g->pixel_width_m) : 0;
+    if (reach > 8) reach = 8;
+    for (int r = 0; r < g->raster_height; ++r)
+        for (int c = 0; c < g->raster_width; ++c) {
+            size_t k = (size_t)r * (size_t)g->raster_width + (size_t)c;
+            int32_t idx = g->raster_index[k];
+            values[k] = idx < 0 ? NAN : smooth ? smoothed_value(g, E, c, r, reach) : E[idx];
+        }
     cdl_status st = cdl_contour_trace(values, g->raster_width, g->raster_height, level, segments, count, err);
     free(values);
     return st;

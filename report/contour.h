@@ -34,8 +34,10 @@ cdl_status cdl_contour_trace(const double *values, int width, int height, double
 
 struct cdl_grid;
 /* The same over a grid's raster (grid.h) with one value per point (E,
- * grid->count values): each pixel takes its point's value, pixels outside
- * the grid none. */
+ * grid->count values): each pixel takes its point's value (rect grids: one
+ * pixel a point), or on a polygon grid's finer raster the inverse distance
+ * weighted mean of the points within one spacing (contour.c); pixels
+ * outside the grid none. */
 cdl_status cdl_contour_trace_grid(const struct cdl_grid *grid, const double *E, double level,
                                   cdl_contour_segment **segments, size_t *count, cdl_error *err);
 

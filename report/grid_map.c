@@ -295,7 +295,7 @@ static void draw_contours(cairo_t *cr, const cdl_grid_map *m)
         double x, y;
         to_page(m, 0.5 * (seg->x0 + seg->x1), 0.5 * (seg->y0 + seg->y1), &x, &y);
         char label[32];
-        snprintf(label, sizeof label, "%g", m->levels[k]);
+        snprintf(label, sizeof label, "%g lx", m->levels[k]);
         boxed_label(cr, x, y, label, 8.0);
     }
     cairo_restore(cr);

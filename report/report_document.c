@@ -94,6 +94,7 @@ static void cell(builder *b, cdl_report_block *t, size_t row, size_t column, con
     if (!t || !t->cells) return;
     va_list ap;
     va_start(ap, fmt);
+    free(t->cells[row * t->columns + column]); /* a cell may be written again */
     t->cells[row * t->columns + column] = vformat(b, fmt, ap);
     va_end(ap);
 }
