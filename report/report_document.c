@@ -185,12 +185,12 @@ static void summary(builder *b, const cdl_report_input *in, const char *requirem
                "relative standard errors of E per point (mean and worst over the points); every number is printed "
                "to the decimal place of its own stated error (Em: Em x the mean error, Emin and Emax: x the worst, "
                "U0 and Ud: the sum of their parts' relative errors), so no digit is shown that the error does not "
-               "support.%s%s%s",
+               "support.%s%s%s%s",
                any_requirements ? " Requirements (maintained illuminance Em and uniformity U0 for the task area) "
                                   "come from the scene's grids"
                                 : "",
                any_requirements && requirements_path ? " and from " : "",
-               any_requirements && requirements_path ? requirements_path : "");
+               any_requirements && requirements_path ? requirements_path : "", any_requirements ? "." : "");
 }
 
 /* ---- 3. maps ------------------------------------------------------------------------ */

@@ -130,6 +130,17 @@ static void column_widths(page_flow *f, const cdl_report_block *b, const cdl_tex
     }
 }
 
+/* Headings, a facts table's first column and verdicts in bold; wrapped to the column. */
+static cdl_text_style cell_style(const cdl_report_block *b, size_t r, size_t c, const cdl_text_style *plain,
+                                 const cdl_text_style *bold, double width)
+{
+    int strong = (b->header && r == 0) || (!b->header && c == 0) ||
+                 cdl_report_cell_verdict(b->cells[r * b->columns + c]) != 0;
+    cdl_text_style s = strong ? *bold : *plain;
+    s.wrap_width = width - 2.0 * CELL_PAD;
+    return s;
+}
+
 static void table(page_flow *f, const cdl_report_block *b)
 {
     double size = b->columns >= 8 ? 7.0 : 8.5;
@@ -142,8 +153,7 @@ static void table(page_flow *f, const cdl_report_block *b)
         /* the row's height: its tallest wrapped cell */
         double h = 0.0;
         for (size_t c = 0; c < b->columns; ++c) {
-            cdl_text_style s = head_row || (!b->header && c == 0) ? bold : plain;
-            s.wrap_width = width[c] - 2.0 * CELL_PAD;
+            cdl_text_style s = cell_style(b, r, c, &plain, &bold, width[c]);
             double w = 0.0, ch = 0.0;
             cdl_text_measure(f->cr, b->cells[r * b->columns + c], &s, &w, &ch);
             h = fmax(h, ch + 2.0 * CELL_PAD);
@@ -162,8 +172,7 @@ static void table(page_flow *f, const cdl_report_block *b)
             cairo_set_line_width(f->cr, 0.5);
             cairo_rectangle(f->cr, x, f->y, width[c], h);
             cairo_stroke(f->cr);
-            cdl_text_style s = head_row || (!b->header && c == 0) || verdict ? bold : plain;
-            s.wrap_width = width[c] - 2.0 * CELL_PAD;
+            cdl_text_style s = cell_style(b, r, c, &plain, &bold, width[c]);
             if (verdict > 0) cairo_set_source_rgb(f->cr, 0.0, 0.4, 0.2);
             else if (verdict < 0) cairo_set_source_rgb(f->cr, 0.7, 0.0, 0.0);
             else cairo_set_source_rgb(f->cr, 0.0, 0.0, 0.0);
