@@ -81,7 +81,8 @@ static cdl_status make_image(cdl_grid_map *m, cdl_error *err)
             for (int y = 0; y < h; ++y) {
                 uint32_t *row = (uint32_t *)(void *)(data + (size_t)y * (size_t)stride);
                 for (int x = 0; x < w; ++x) {
-                    int32_t idx = g->raster_index[(size_t)(y / m->zoom) * (size_t)g->raster_width + (size_t)(x / m->zoom)];
+                    size_t pixel = (size_t)(y / m->zoom) * (size_t)g->raster_width + (size_t)(x / m->zoom);
+                    int32_t idx = g->raster_index[pixel];
                     const uint8_t *c = rgb + 3 * (size_t)(idx < 0 ? 0 : idx);
                     /* ARGB32, premultiplied: transparent outside the grid. */
                     row[x] = idx < 0 ? 0u : 0xFF000000u | (uint32_t)c[0] << 16 | (uint32_t)c[1] << 8 | c[2];

@@ -264,9 +264,9 @@ static void schedule_row(builder *b, cdl_report_block *t, size_t r, const cdl_re
     char maker[160], catalogue[160], lamp[160];
     first_line(maker, sizeof maker, ldt ? m->ldt_company : cdl_photometry_keyword_value(p, "MANUFAC"));
     first_line(catalogue, sizeof catalogue, ldt ? m->ldt_luminaire_number : cdl_photometry_keyword_value(p, "LUMCAT"));
-    first_line(lamp, sizeof lamp,
-               ldt ? m->lamp_sets[0].type : cdl_photometry_keyword_value(p, "LAMP") ? cdl_photometry_keyword_value(p, "LAMP")
-                                                                                  : cdl_photometry_keyword_value(p, "LAMPCAT"));
+    const char *lamp_keyword = cdl_photometry_keyword_value(p, "LAMP");
+    if (!lamp_keyword) lamp_keyword = cdl_photometry_keyword_value(p, "LAMPCAT");
+    first_line(lamp, sizeof lamp, ldt ? m->lamp_sets[0].type : lamp_keyword);
     const char *slash = strrchr(l->file, '/');
     cell(b, t, r, 0, "%s", slash ? slash + 1 : l->file);
     cell(b, t, r, 1, "%s", maker[0] ? maker : "-");
@@ -318,14 +318,15 @@ static cdl_status schedule(builder *b, const cdl_report_input *in, cdl_error *er
  * (light, grid) pairs took it. */
 static void direct_routes(builder *b, const cdl_report_input *in)
 {
-    const cJSON *direct = cJSON_GetObjectItemCaseSensitive(cJSON_GetObjectItemCaseSensitive(in->summary, "plan"), "direct");
+    const cJSON *plan = cJSON_GetObjectItemCaseSensitive(in->summary, "plan");
+    const cJSON *direct = cJSON_GetObjectItemCaseSensitive(plan, "direct");
     if (!cJSON_IsArray(direct)) return;
     enum { MAX_ROUTES = 32 };
     const char *route[MAX_ROUTES];
     size_t uses[MAX_ROUTES], n = 0, others = 0;
-    for (const cJSON *light = direct->child; light; light = light->next)
-        for (const cJSON *g = cJSON_GetObjectItemCaseSensitive(light, "grids") ? cJSON_GetObjectItemCaseSensitive(light, "grids")->child : NULL;
-             g; g = g->next) {
+    for (const cJSON *light = direct->child; light; light = light->next) {
+        const cJSON *grids = cJSON_GetObjectItemCaseSensitive(light, "grids");
+        for (const cJSON *g = cJSON_IsObject(grids) ? grids->child : NULL; g; g = g->next) {
             if (!cJSON_IsString(g)) continue;
             size_t k = 0;
             while (k < n && strcmp(route[k], g->valuestring) != 0) ++k;
@@ -339,6 +340,7 @@ static void direct_routes(builder *b, const cdl_report_input *in)
             }
             ++uses[k];
         }
+    }
     if (n == 0) return;
     text_block(b, CDL_BLOCK_PARAGRAPH, 0, "Direct light, as the plan chose it for each light and grid:");
     cdl_report_block *t = table(b, 2, n + 1 + (others ? 1 : 0), 1);

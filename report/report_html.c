@@ -75,7 +75,9 @@ static cdl_status put_figure(FILE *fp, const cdl_report_block *b, cdl_error *err
     size_t size = 0;
     cdl_status st = cdl_figure_svg(&b->figure, &svg, &size, err);
     if (st != CDL_OK) return st;
-    fprintf(fp, "<img width=\"%.0f\" height=\"%.0f\" alt=\"", b->figure.width * 4.0 / 3.0, b->figure.height * 4.0 / 3.0);
+    /* CSS pixels are 3/4 of a point */
+    fprintf(fp, "<img width=\"%.0f\" height=\"%.0f\" alt=\"", b->figure.width * 4.0 / 3.0,
+            b->figure.height * 4.0 / 3.0);
     put_escaped(fp, b->figure.title);
     fputs("\" src=\"data:image/svg+xml;base64,", fp);
     put_base64(fp, (const unsigned char *)svg, size);

@@ -88,7 +88,9 @@ static cdl_status load_scene(cdl_report_input *in, cdl_error *err)
     const char *given = cdl_report_summary_string(in, "scene");
     struct stat sb;
     const char *path = absolute && stat(absolute, &sb) == 0 ? absolute : given;
-    if (!path) return cdl_error_set(err, CDL_ERR_INPUT, "%s: scene: missing (expected the scene file's path)", in->summary_path);
+    if (!path)
+        return cdl_error_set(err, CDL_ERR_INPUT, "%s: scene: missing (expected the scene file's path)",
+                             in->summary_path);
     if (stat(path, &sb) != 0)
         return cdl_error_set(err, CDL_ERR_INPUT, "%s: the scene it names, %s, is missing", in->summary_path, path);
     cdl_status st = cdl_scene_load(path, &in->scene, err);
@@ -130,9 +132,10 @@ static cdl_status read_summary_grid(const cdl_report_input *in, cdl_report_grid 
     g->count = (size_t)count;
     const cJSON *spacing = cJSON_GetObjectItemCaseSensitive(o, "spacing_m");
     g->spacing_m = cJSON_IsNumber(spacing) ? spacing->valuedouble : g->grid.spacing_m;
-    const cJSON *plan = cJSON_GetObjectItemCaseSensitive(member(member(in->summary, "plan"), "interreflection"), "grids");
+    const cJSON *plan = member(member(in->summary, "plan"), "interreflection.grids");
     const cJSON *gp = cJSON_GetObjectItemCaseSensitive(plan, name);
-    const cJSON *method = cJSON_GetObjectItemCaseSensitive(gp, "method"), *why = cJSON_GetObjectItemCaseSensitive(gp, "why");
+    const cJSON *method = cJSON_GetObjectItemCaseSensitive(gp, "method");
+    const cJSON *why = cJSON_GetObjectItemCaseSensitive(gp, "why");
     g->interreflection_method = cJSON_IsString(method) ? method->valuestring : NULL;
     g->interreflection_why = cJSON_IsString(why) ? why->valuestring : NULL;
     return CDL_OK;
@@ -177,7 +180,8 @@ static cdl_status read_csv(const char *path, cdl_report_grid *g, cdl_error *err)
         for (int k = 0; k < 10 && ok; ++k) {
             const char *start = end;
             v[k] = strtod(start, &end);
-            ok = end != start && isfinite(v[k]) && (k == 9 ? (*end == '\n' || *end == ',' || *end == '\0') : *end == ',');
+            int separated = k == 9 ? *end == '\n' || *end == ',' || *end == '\0' : *end == ',';
+            ok = end != start && isfinite(v[k]) && separated;
             if (ok && k < 9) ++end;
         }
         if (!ok) {

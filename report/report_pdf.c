@@ -35,7 +35,8 @@ static void footer(page_flow *f)
     cairo_set_source_rgb(f->cr, 0.35, 0.35, 0.35);
     cdl_text_style small = {.size = 7.5, .wrap_width = CONTENT_W - 60.0};
     cdl_text_draw(f->cr, MARGIN, PAGE_H - MARGIN - 8.0, f->title, &small);
-    cdl_text_draw(f->cr, PAGE_W - MARGIN, PAGE_H - MARGIN - 8.0, text, &(cdl_text_style){.size = 7.5, .align = CDL_TEXT_RIGHT});
+    cdl_text_draw(f->cr, PAGE_W - MARGIN, PAGE_H - MARGIN - 8.0, text,
+                  &(cdl_text_style){.size = 7.5, .align = CDL_TEXT_RIGHT});
     cairo_set_source_rgb(f->cr, 0.0, 0.0, 0.0);
 }
 

@@ -63,4 +63,5 @@ static int run(int argc, char **argv)
     return CDL_EXIT_OK;
 }
 
-const cdl_command cdl_command_report = {"report", "lighting-design report (HTML and PDF) from a solve", run, print_help};
+const cdl_command cdl_command_report = {"report", "lighting-design report (HTML and PDF) from a solve", run,
+                                        print_help};
