@@ -6,7 +6,8 @@
  * inverse square law times the cosine of incidence, cos = h / d). A rect
  * grid of 40 x 40 points over [-4, 4]^2 m (spacing s = 0.2 m) is built as
  * the solver builds it (cdl_grid_build), its points given the closed-form
- * E, and the contours traced as the report traces them.
+ * E, and the contours traced as the report traces them, at the levels it
+ * labels (cdl_contour_levels between the grid's Emin and Emax).
  *
  * Tolerance: a contour's vertex lies on the segment between two
  * neighbouring points A and B, where the linear interpolation of E(A) and
@@ -89,14 +90,20 @@ int main(void)
     if (!E) return check_finish();
     for (size_t i = 0; i < g.count; ++i) E[i] = E_point(g.points[i]);
 
-    /* The levels the report would choose between Emin and Emax. */
+    /* The levels the report labels, between the grid's Emin and Emax: 50,
+     * 100, 150 and 200 lx, whose circles (r = 2.77, 1.84, 1.26, 0.80 m) lie
+     * inside the grid. */
+    double lo = E[0], hi = E[0];
+    for (size_t i = 1; i < g.count; ++i) {
+        lo = fmin(lo, E[i]);
+        hi = fmax(hi, E[i]);
+    }
     double levels[8];
-    size_t n = cdl_contour_levels(9.0, 250.0, levels, 8);
-    CHECK_MSG(n >= 3 && n <= 8, "%zu levels", n);
+    size_t n = cdl_contour_levels(lo, hi, levels, 8);
+    CHECK_MSG(n == 4 && levels[0] == 50.0 && levels[3] == 200.0, "%zu levels from %g to %g lx", n, lo, hi);
 
-    const double checked[] = {50.0, 100.0, 200.0};
-    for (int l = 0; l < 3; ++l) {
-        double level = checked[l];
+    for (size_t l = 0; l < n; ++l) {
+        double level = levels[l];
         /* r where E = level: (h^2 + r^2)^(3/2) = I h / level */
         double r_level = sqrt(pow(I * h / level, 2.0 / 3.0) - h * h);
         cdl_contour_segment *seg = NULL;
