@@ -107,6 +107,13 @@ static void figure(builder *b, cdl_figure f)
 
 /* ---- 1. cover ----------------------------------------------------------------------- */
 
+/* The scene as the solve was given it (the file read may be its absolute path). */
+static const char *scene_name(const cdl_report_input *in)
+{
+    const char *given = cdl_report_summary_string(in, "scene");
+    return given ? given : in->scene->path;
+}
+
 static void cover(builder *b, const cdl_report_input *in)
 {
     text_block(b, CDL_BLOCK_HEADING, 1, "%s", b->doc->title);
@@ -130,7 +137,7 @@ static void cover(builder *b, const cdl_report_input *in)
     const char *quality = cdl_report_summary_string(in, "quality");
     size_t r = 0;
     cell(b, t, r, 0, "Scene");
-    cell(b, t, r++, 1, "%s", in->scene->path);
+    cell(b, t, r++, 1, "%s", scene_name(in));
     cell(b, t, r, 0, "Results");
     cell(b, t, r++, 1, "%s", in->out_dir);
     cell(b, t, r, 0, "Solved");
@@ -418,9 +425,9 @@ cdl_status cdl_report_document_build(const cdl_report_input *in, const char *tit
     if (title) {
         d->title = strdup(title);
     } else {
-        size_t n = strlen(in->scene->path) + 32;
+        size_t n = strlen(scene_name(in)) + 32;
         d->title = malloc(n);
-        if (d->title) snprintf(d->title, n, "Lighting report: %s", in->scene->path);
+        if (d->title) snprintf(d->title, n, "Lighting report: %s", scene_name(in));
     }
     if (!d->title) b.failed = 1;
     cdl_status st = CDL_OK;
