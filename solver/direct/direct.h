@@ -197,12 +197,13 @@ int cdl_direct_facing_direction(cdl_vec3 n, cdl_vec3 *facing);
 
 /* Cylindrical and semicylindrical illuminance (lux) at p from the delta
  * lights among `active` (NULL: all), each shadowed as for E (n: the
- * point's normal, for its rays). Lights of other strategies are skipped:
- * the caller refuses these outputs when such lights are present. Either
- * output may be NULL. */
+ * point's normal, for its rays). on_surface: p lies on a surface, which
+ * hides every light behind n. Lights of other strategies are skipped (the
+ * caller samples them: transport/vertical_sampled.h). Either output may
+ * be NULL. */
 void cdl_direct_vertical_point(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
                                const uint32_t *active, size_t active_count, cdl_vec3 p, cdl_vec3 n, cdl_vec3 facing,
-                               double *Ez, double *Esz, cdl_direct_sample_stats *stats);
+                               int on_surface, double *Ez, double *Esz, cdl_direct_sample_stats *stats);
 
 /* Cosine-weighted unoccluded fraction of the hemisphere about n at p. */
 double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
