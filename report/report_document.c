@@ -99,10 +99,12 @@ static void cell(builder *b, cdl_report_block *t, size_t row, size_t column, con
     va_end(ap);
 }
 
-static void figure(builder *b, cdl_figure f)
+static void figure(builder *b, cdl_figure f, double scale)
 {
     cdl_report_block *block = add_block(b, CDL_BLOCK_FIGURE);
-    if (block) block->figure = f;
+    if (!block) return;
+    block->figure = f;
+    block->figure_scale = scale;
 }
 
 /* ---- 1. cover ----------------------------------------------------------------------- */
@@ -226,7 +228,7 @@ static cdl_status maps(builder *b, const cdl_report_input *in, cdl_error *err)
         text_block(b, CDL_BLOCK_PARAGRAPH, 0, "%s grid, %zu points: Em %s lx, Emin %s lx, Emax %s lx, U0 %s.",
                    grid->spec->kind == CDL_GRID_RECT ? "Rectangular" : "Polygon", grid->count, row.Em, row.Emin,
                    row.Emax, row.U0);
-        figure(b, cdl_grid_map_figure(m));
+        figure(b, cdl_grid_map_figure(m), 1.0);
     }
     return CDL_OK;
 }
@@ -314,7 +316,7 @@ static cdl_status schedule(builder *b, const cdl_report_input *in, cdl_error *er
         const char *slash = strrchr(in->types[k].first->file, '/');
         pd->photometry = in->types[k].photometry;
         pd->title = slash ? slash + 1 : in->types[k].first->file;
-        figure(b, cdl_polar_diagram_figure(pd));
+        figure(b, cdl_polar_diagram_figure(pd), 0.6); /* two to an A4 page */
     }
     return CDL_OK;
 }
@@ -372,10 +374,10 @@ static void method(builder *b, const cdl_report_input *in)
     const cJSON *why = cJSON_GetObjectItemCaseSensitive(ir, "why");
     const cJSON *modelled = cJSON_GetObjectItemCaseSensitive(ir, "modelled");
     const cJSON *bounces = cJSON_GetObjectItemCaseSensitive(ir, "bounces");
-    text_block(b, CDL_BLOCK_PARAGRAPH, 0, "Interreflection: %s%s%s%s%s",
-               cJSON_IsTrue(modelled) ? "modelled" : "not modelled", cJSON_IsString(why) ? ": " : ".",
+    text_block(b, CDL_BLOCK_PARAGRAPH, 0, "Interreflection: %s%s%s%s%s%s",
+               cJSON_IsTrue(modelled) ? "modelled" : "not modelled", cJSON_IsString(why) ? ": " : "",
                cJSON_IsString(why) ? why->valuestring : "", cJSON_IsString(bounces) ? ". Bounces: " : "",
-               cJSON_IsString(bounces) ? bounces->valuestring : "");
+               cJSON_IsString(bounces) ? bounces->valuestring : "", ".");
     int any = 0;
     for (size_t g = 0; g < in->grid_count; ++g) any |= in->grids[g].interreflection_method != NULL;
     if (any) {

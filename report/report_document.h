@@ -42,6 +42,7 @@ typedef struct cdl_report_block {
     char **cells;
     int header;
     cdl_figure figure;
+    double figure_scale;    /* the figure shown at this fraction of its size (at most 1) */
 } cdl_report_block;
 
 typedef struct cdl_report_document {

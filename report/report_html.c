@@ -76,8 +76,8 @@ static cdl_status put_figure(FILE *fp, const cdl_report_block *b, cdl_error *err
     cdl_status st = cdl_figure_svg(&b->figure, &svg, &size, err);
     if (st != CDL_OK) return st;
     /* CSS pixels are 3/4 of a point */
-    fprintf(fp, "<img width=\"%.0f\" height=\"%.0f\" alt=\"", b->figure.width * 4.0 / 3.0,
-            b->figure.height * 4.0 / 3.0);
+    fprintf(fp, "<img width=\"%.0f\" height=\"%.0f\" alt=\"", b->figure.width * b->figure_scale * 4.0 / 3.0,
+            b->figure.height * b->figure_scale * 4.0 / 3.0);
     put_escaped(fp, b->figure.title);
     fputs("\" src=\"data:image/svg+xml;base64,", fp);
     put_base64(fp, (const unsigned char *)svg, size);

@@ -55,7 +55,7 @@ static void need(page_flow *f, double h)
 }
 
 static double paragraph_height(page_flow *f, const cdl_report_block *b);
-static double figure_scale(const cdl_figure *fig);
+static double figure_scale(const cdl_report_block *b);
 
 /* The height of what must stay with a heading: the paragraph and the
  * figure right after it (a map's caption and the map), or a table's first
@@ -68,7 +68,7 @@ static double kept_with(page_flow *f, const cdl_report_block *next, const cdl_re
             h += paragraph_height(f, next);
             continue;
         }
-        if (next->kind == CDL_BLOCK_FIGURE) h += next->figure.height * figure_scale(&next->figure);
+        if (next->kind == CDL_BLOCK_FIGURE) h += next->figure.height * figure_scale(next);
         else if (next->kind == CDL_BLOCK_TABLE) h += 60.0;
         break;
     }
@@ -187,16 +187,17 @@ static void table(page_flow *f, const cdl_report_block *b)
     free(width);
 }
 
-/* Figures are drawn at their size, or smaller to fit the page's width and height. */
-static double figure_scale(const cdl_figure *fig)
+/* Figures are drawn at the size the document asks, or smaller to fit the page's width and height. */
+static double figure_scale(const cdl_report_block *b)
 {
-    return fmin(fmin(1.0, CONTENT_W / fig->width), (bottom() - MARGIN) / fig->height);
+    const cdl_figure *fig = &b->figure;
+    return fmin(fmin(b->figure_scale, CONTENT_W / fig->width), (bottom() - MARGIN) / fig->height);
 }
 
 static void figure(page_flow *f, const cdl_report_block *b)
 {
     const cdl_figure *fig = &b->figure;
-    double scale = figure_scale(fig);
+    double scale = figure_scale(b);
     need(f, fig->height * scale);
     cairo_save(f->cr);
     cairo_translate(f->cr, MARGIN + 0.5 * (CONTENT_W - fig->width * scale), f->y);
