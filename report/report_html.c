@@ -40,10 +40,11 @@ static const char style[] =
     "@page{size:A4;margin:14mm;}\n"
     "@media print{body{margin:0;max-width:none;}}\n";
 
-/* A cell is numeric when it starts with a digit or a sign and a digit. */
+/* A cell is a number (right-aligned) when it starts with a digit, or a sign
+ * and a digit, and is short with at most a unit after it ("2118 lm", "0.36 %"). */
 static int numeric(const char *s)
 {
-    if (!s) return 0;
+    if (!s || strlen(s) > 16 || strchr(s, ' ') != strrchr(s, ' ')) return 0;
     if (*s == '-' || *s == '+') ++s;
     return *s >= '0' && *s <= '9';
 }
