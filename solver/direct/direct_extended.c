@@ -172,12 +172,12 @@ static double stratum_sample(const cdl_direct_context *ctx, term *t, const doubl
         /* (L - L_ref) cos / pdf; what a feature the samples missed could
          * change a sample by, (L_hi - L_lo) cos / pdf, stands as the jump. */
         cdl_vec3 w;
-        double weight, pdf;
+        double weight;
         if (!cdl_sky_region_sample(t->region, lo[0] + u[0] * (hi[0] - lo[0]), lo[1] + u[1] * (hi[1] - lo[1]), &w,
                                    &weight))
             return 0.0;
         *unoccluded = t->L_spread * weight;
-        return (cdl_emitter_radiance(t->light->emitter, p, n, w, &pdf).cd_m2 - t->L_ref) * weight;
+        return (cdl_sky_region_luminance(t->region, w) - t->L_ref) * weight;
     }
     cdl_light_sample ls;
     if (!term_sample(t, p, n, lo[0] + u[0] * (hi[0] - lo[0]), lo[1] + u[1] * (hi[1] - lo[1]), &ls) ||
@@ -320,7 +320,7 @@ static void term_start(const cdl_direct_context *ctx, term *t, cdl_light_strateg
                 t->mode = TERM_REGION;
                 t->L_ref = cdl_sky_region_reference_luminance(t->region);
                 t->L_spread = hi - lo;
-                t->exact = t->L_ref * cdl_sky_region_projected_solid_angle(t->region);
+                t->exact = cdl_sky_region_exact_part(t->region);
             } else if (route >= 0) {
                 if (route == 1) t->exact = visible;
                 stats->exact_evaluations++;
