@@ -138,8 +138,9 @@ static void faces_release(cdl_visible_face faces[5])
 
 /* A sky past the occluders: a uniform one exact, E = L Omega_p of the
  * visible faces; an image or overcast sky as the region to integrate over
- * (sky_region.h), exact too where its luminance bounds over the region
- * meet (one luminance there). */
+ * (sky_region.h), an image's sun (its pixels above the cut) summed exactly
+ * over it, exact too where the bounds of the rest over the region meet
+ * (one luminance there). *region is set where the rest is sampled. */
 static cdl_direct_route sky_route(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n, double near,
                                   const cdl_occluder_triangle *occ, size_t count, double unoccluded, double *E,
                                   cdl_sky_region **region)
@@ -172,7 +173,7 @@ static cdl_direct_route sky_route(const cdl_scene_light *light, cdl_vec3 p, cdl_
         /* one luminance over R but for the bright pixels, summed exactly */
         *E = omega > 0.0 ? fmax(0.0, cdl_sky_region_exact_part(r)) : 0.0;
         cdl_sky_region_release(r);
-        return CDL_ROUTE_VISIBLE_POLYGON;
+        return sun ? CDL_ROUTE_SKY_SUN : CDL_ROUTE_VISIBLE_POLYGON;
     }
     if (hi - lo > SKY_SPREAD_MAX * fmax(cdl_sky_region_reference_luminance(r), unoccluded / CDL_PI)) {
         cdl_sky_region_release(r);
@@ -295,7 +296,9 @@ int cdl_direct_exact_term(const cdl_direct_context *ctx, const cdl_scene_light *
             occluders > tally->most_occluders)
             tally->most_occluders = occluders;
     }
-    return route == CDL_ROUTE_VISIBLE_POLYGON ? 1 : route == CDL_ROUTE_SKY_REGION || route == CDL_ROUTE_SKY_SUN ? 2 : -1;
+    if (route == CDL_ROUTE_VISIBLE_POLYGON) return 1;
+    if (route == CDL_ROUTE_SKY_REGION || route == CDL_ROUTE_SKY_SUN) return *region ? 2 : 1;
+    return -1;
 }
 
 void cdl_direct_stats_add(cdl_direct_sample_stats *a, const cdl_direct_sample_stats *b, size_t light_count)
@@ -350,8 +353,8 @@ void cdl_direct_route_describe(const cdl_direct_route_tally *t, char *out, size_
     }
     if (t->points[CDL_ROUTE_SKY_SUN]) {
         APPEND("%sa sun within the visible sky: the sky's pixels above " STRINGIFY(SKY_PEAK_CUT) " times its mean "
-               "luminance exact over their visible part, the rest sampled within the visible sky (no shadow rays) "
-               "past up to %" PRIu32 " occluders at %" PRIu64 " points",
+               "luminance exact over their visible part, the rest exact where it is one luminance, else sampled "
+               "within the visible sky (no shadow rays), past up to %" PRIu32 " occluders at %" PRIu64 " points",
                sep, t->most_occluders, t->points[CDL_ROUTE_SKY_SUN]);
         sep = "; ";
     }

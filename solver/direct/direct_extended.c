@@ -69,6 +69,19 @@
  * sum is 4/3 of the last, which is 1/16 to 1/4 of the stage). */
 #define PLAN_REACH 16.0
 
+/* ... but from a pilot round of fewer than PLAN_SMALL_PILOT samples (sides
+ * 6 to 48: "draft" and the first rounds of the others) at most
+ * PLAN_REACH_SMALL times beyond it. Why: the stated sigma scatters about
+ * its plan by the pilot's error and the stage's own (each a count of
+ * differing pairs, a few dozen at these sizes), and a 16-fold reach from a
+ * small pilot adds the error in alpha on top. Measured on the four scenes
+ * of test_direct_calibration at "draft": sigma within a factor 1.5 of the
+ * target at 374 of 404 points with 16 (0.53 .. 2.53), 389 with 4 (0.53 ..
+ * 1.98), for 4.5 % more samples at "draft", 7.6 % at "normal" and 0.3 %
+ * at "high" (whose plans mostly come from pilots of 18432). */
+#define PLAN_REACH_SMALL 4.0
+#define PLAN_SMALL_PILOT 18432.0
+
 /* A stage is planned from a pilot round that measured its variance from
  * at least PLAN_PAIRS differing pairs in effect (term.pairs), unless the
  * next pilot round would be larger than the stage. The variance of a step
@@ -110,6 +123,17 @@
  * alone keep the image wells within 0.72-1.34. */
 #define ALPHA_STEP 1.5
 #define ALPHA_IMAGE 1.2
+
+/* Within the visible sky (TERM_REGION) the integrand is the sky's own
+ * variation less L_ref: smooth where the sky is (stratified, Var ~ N^-2 in
+ * two dimensions), a step at each pixel's edge and at the sky's dark or
+ * bright features (N^-1.5). Planned with 1.5, a smooth remainder came out
+ * at 0.61 of the target (the sun scene of test_sun_opening, "draft"); with
+ * 1.75 the scenes of test_sun_opening, test_overcast_opening and
+ * test_environment_direct's cap sky lie within 0.65 .. 1.38 of it at
+ * every preset (but for the overcast hole at "draft", whose least stage of
+ * 72 samples already beats 2 %). */
+#define ALPHA_REGION 1.75
 
 /* How a light's contribution is formed at a point: exact, E_0 less a
  * sampled hidden part, sampled plainly, or (an image or overcast sky whose
@@ -387,7 +411,7 @@ static void plan_stage(const cdl_direct_context *ctx, term *terms, size_t count,
             v[j] = term_variance(st[j]);
             V += v[j];
             pilot[j] = st[j]->est.samples;
-            alpha[j] = st[j]->sky && st[j]->mode != TERM_REGION ? ALPHA_IMAGE : ALPHA_STEP;
+            alpha[j] = st[j]->mode == TERM_REGION ? ALPHA_REGION : st[j]->sky ? ALPHA_IMAGE : ALPHA_STEP;
             room[j] = stage_room(st[j]);
         }
         /* The pilot's E may be well off (a point that sees the light through
@@ -403,7 +427,8 @@ static void plan_stage(const cdl_direct_context *ctx, term *terms, size_t count,
         int more = 0;
         for (int j = 0; j < sampled; ++j) {
             int next = 2 * st[j]->side;
-            int far = want[j] > PLAN_REACH * pilot[j] && PLAN_REACH * pilot[j] < CDL_DIRECT_MAX_SAMPLES;
+            double reach = pilot[j] < PLAN_SMALL_PILOT ? PLAN_REACH_SMALL : PLAN_REACH;
+            int far = want[j] > reach * pilot[j] && reach * pilot[j] < CDL_DIRECT_MAX_SAMPLES;
             int thin = st[j]->pairs < PLAN_PAIRS && want[j] >= 2.0 * next * next;
             if ((far || thin) && next <= PILOT_MAX_SIDE) {
                 term_restart(st[j]);
