@@ -137,8 +137,9 @@
 
 /* How a light's contribution is formed at a point: exact, E_0 less a
  * sampled hidden part, sampled plainly, or (an image or overcast sky whose
- * visible part the exact route found) L_ref Omega_p(R) plus the sampled
- * integral of (L - L_ref) cos over that part (sky_region.h). */
+ * visible part the exact route found) L_ref Omega_p(R), plus an image's
+ * sun summed exactly over that part, plus the sampled integral of
+ * (L' - L_ref) cos over it, L' the sky without its sun (sky_region.h). */
 enum { TERM_EXACT, TERM_HIDDEN, TERM_PLAIN, TERM_REGION };
 
 typedef struct term {
