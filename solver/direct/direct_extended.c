@@ -124,17 +124,6 @@
 #define ALPHA_STEP 1.5
 #define ALPHA_IMAGE 1.2
 
-/* Within the visible sky (TERM_REGION) the integrand is the sky's own
- * variation less L_ref: smooth where the sky is (stratified, Var ~ N^-2 in
- * two dimensions), a step at each pixel's edge and at the sky's dark or
- * bright features (N^-1.5). Planned with 1.5, a smooth remainder came out
- * at 0.61 of the target (the sun scene of test_sun_opening, "draft"); with
- * 1.75 the scenes of test_sun_opening, test_overcast_opening and
- * test_environment_direct's cap sky lie within 0.65 .. 1.38 of it at
- * every preset (but for the overcast hole at "draft", whose least stage of
- * 72 samples already beats 2 %). */
-#define ALPHA_REGION 1.75
-
 /* How a light's contribution is formed at a point: exact, E_0 less a
  * sampled hidden part, sampled plainly, or (an image or overcast sky whose
  * visible part the exact route found) L_ref Omega_p(R), plus an image's
@@ -412,7 +401,7 @@ static void plan_stage(const cdl_direct_context *ctx, term *terms, size_t count,
             v[j] = term_variance(st[j]);
             V += v[j];
             pilot[j] = st[j]->est.samples;
-            alpha[j] = st[j]->mode == TERM_REGION ? ALPHA_REGION : st[j]->sky ? ALPHA_IMAGE : ALPHA_STEP;
+            alpha[j] = st[j]->sky && st[j]->mode != TERM_REGION ? ALPHA_IMAGE : ALPHA_STEP;
             room[j] = stage_room(st[j]);
         }
         /* The pilot's E may be well off (a point that sees the light through

@@ -89,7 +89,7 @@ cdl_status cdl_sky_region_create(const cdl_visible_face *faces, int face_count, 
                 r->psa += t.psa;
                 t.cdf = r->psa;
                 piece_psa += t.psa;
-                if (t.psa > r->tri[largest].psa || r->count == 0) largest = r->count;
+                if (r->count == 0 || t.psa > r->tri[largest].psa) largest = r->count;
                 r->tri[r->count++] = t;
             }
             if (!(piece_psa > 0.0)) continue;

@@ -258,7 +258,8 @@ int main(void)
     for (int q = 0; q < 4; ++q) test_preset(presets[q], (const double(*)[2])pts, exact, &all, &below);
     calibration_check(&all, "image sky with a sun through an opening, every preset");
     /* Below the target a point is only more accurate than asked: a few may
-     * be (a plan is a prediction; 1 of 192 measured, at "draft"). */
+     * be (a plan is a prediction, and a smooth rest of the sky converges faster
+     * than the N^-1.5 it is planned with: 3 of 192 measured, at "draft"). */
     CHECK_MSG(below <= 4 * POINTS / 20, "%d of %d points below 1 / 1.5 of the target", below, 4 * POINTS);
     test_threads((const double(*)[2])pts);
     return check_finish();
