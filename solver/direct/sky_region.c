@@ -97,8 +97,9 @@ cdl_status cdl_sky_region_create(const cdl_visible_face *faces, int face_count, 
             if (cdl_emitter_luminance_bounds(sky, dirs, piece->count, &lo, &hi)) {
                 /* L' is at most the cut (brighter pixels stand at L_ref,
                  * which lies within these bounds) */
+                /* (no pixel above the cut where the bound is below it) */
                 double rest_hi = L_cut;
-                if (isfinite(L_cut) && !r->too_bright &&
+                if (hi.cd_m2 > L_cut && !r->too_bright &&
                     !cdl_env_peaks_add(sky, dirs, piece->count, n, L_cut, max_bright, &r->bright, &rest_hi))
                     r->too_bright = 1;
                 r->L_lo = fmin(r->L_lo, fmin(lo.cd_m2, L_cut));
