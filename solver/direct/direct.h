@@ -87,11 +87,12 @@ typedef enum cdl_direct_route {
     CDL_ROUTE_FULL_VIEW,              /* nothing in the way: the closed form */
     CDL_ROUTE_VISIBLE_POLYGON,        /* exact: the visible polygon past planar occluders */
     CDL_ROUTE_SKY_REGION,             /* an image or overcast sky sampled within its visible polygon */
+    CDL_ROUTE_SKY_SUN,                /* as SKY_REGION, the sky's brightest pixels (a sun) exact over it */
     CDL_ROUTE_TOO_MANY,               /* sampled: more than CDL_EXACT_ROUTE_MAX_OCCLUDERS occluders */
     CDL_ROUTE_CURVED_OCCLUDER,        /* sampled: a sphere or a disk may be in the way */
     CDL_ROUTE_CURVED_EMITTER,         /* sampled: a disk, sphere or non-planar emitter */
     CDL_ROUTE_TOO_COMPLEX,            /* sampled: the visible part had too many pieces */
-    CDL_ROUTE_SKY_PEAK,               /* sampled: a sky far brighter in spots (a sun) over the visible part */
+    CDL_ROUTE_SKY_PEAK,               /* sampled: a sky far brighter in too many pixels over the visible part */
     CDL_ROUTE_DISABLED,               /* sampled: the context asked for it (no_exact_route) */
     CDL_ROUTE_COUNT
 } cdl_direct_route;
