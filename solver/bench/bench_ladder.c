@@ -40,7 +40,8 @@ double cdl_bench_stated_rms(const cdl_solution *sol)
 }
 
 /* The measured quantities of one point: the rung's E and stated error
- * against the reference's. */
+ * against the reference's. y is the point's squared error with the
+ * reference's noise taken out. */
 typedef struct point_tally {
     double sum_y, sum_y2, ref2, worst;
     size_t n, within;
@@ -65,17 +66,22 @@ static void tally_point(point_tally *t, double E, double s, double E_ref, double
  * Processes, ch. 6), so each point's y = rel^2 - (s_ref/E_ref)^2 has the
  * rung's own squared error as its mean, and their mean is never taken
  * below zero. Within-2-sigma uses the combined sigma sqrt(s_x^2 + s_r^2).
- * Over a simple random sample of n of N points, the mean of y estimates
+ *
+ * Over a simple random sample of n of N points, the mean m of y estimates
  * the mean over all points with variance (1 - n/N) S_y^2 / n (S_y^2 the
  * sample variance; Cochran, Sampling Techniques, 3rd ed., 1977, theorem
- * 2.2); the RMS's standard error follows by the delta method,
- * sd(sqrt m) = sd(m) / (2 sqrt m). */
+ * 2.2). A small sample can understate S_y^2 (y is skewed: a square), so
+ * it is held to at least 2 m^2, what n squares of normal errors of one
+ * variance have (chi-square of one degree). The RMS's standard error
+ * follows by the delta method, sd(sqrt m) = sd(m) / (2 sqrt m). The
+ * rung's stated errors, known at every point, are not used as a ratio
+ * estimator's auxiliary: the irradiance cache's are conservative by
+ * orders of magnitude at a few points, and would inflate the estimate. */
 void cdl_bench_rung_measure(const cdl_solution *sol, const cdl_solution *ref, const cdl_bench_sample *sample,
                             cdl_bench_rung *r)
 {
     point_tally t;
     memset(&t, 0, sizeof t);
-    size_t total = 0;
     for (size_t g = 0; g < ref->grid_count; ++g) {
         const cdl_grid_solution *b = &ref->grids[g];
         const cdl_grid_solution *a = &sol->grids[sample ? sample->grid_of[g] : g];
@@ -83,19 +89,17 @@ void cdl_bench_rung_measure(const cdl_solution *sol, const cdl_solution *ref, co
             size_t i = sample ? sample->index[g][j] : j;
             tally_point(&t, a->E[i], a->E_stderr[i], b->E[j], b->E_stderr[j]);
         }
-        if (!sample) total += b->grid.count;
     }
-    if (sample) total = sample->total;
-    double mean = t.n ? t.sum_y / (double)t.n : 0.0;
+    double n = (double)t.n, mean = t.n ? t.sum_y / n : 0.0;
     r->rms = sqrt(fmax(mean, 0.0));
     r->rms_sd = 0.0;
-    if (t.n > 1 && total > t.n && r->rms > 0.0) {
-        double S2 = fmax(t.sum_y2 - (double)t.n * mean * mean, 0.0) / (double)(t.n - 1);
-        double var_mean = (1.0 - (double)t.n / (double)total) * S2 / (double)t.n;
+    if (sample && sample->total > t.n && t.n > 1 && r->rms > 0.0) {
+        double S2 = fmax((t.sum_y2 - n * mean * mean) / (n - 1.0), 2.0 * mean * mean);
+        double var_mean = (1.0 - n / (double)sample->total) * S2 / n;
         r->rms_sd = sqrt(var_mean) / (2.0 * r->rms);
     }
     r->worst = t.worst;
-    r->within2 = t.n ? (double)t.within / (double)t.n : 0.0;
+    r->within2 = t.n ? (double)t.within / n : 0.0;
     r->seconds = sol->seconds;
     r->rays = sol->rays;
     r->records = sol->records;
