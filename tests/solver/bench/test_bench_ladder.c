@@ -29,6 +29,16 @@ static void fake_solution(cdl_solution *s, cdl_grid_solution *g, double *E, doub
     s->records = 7;
 }
 
+/* A sample of `count` of `total` points of one grid, at index[0]. */
+static void fake_sample(cdl_bench_sample *s, size_t *grid_of, size_t **index, size_t total, size_t count)
+{
+    memset(s, 0, sizeof *s);
+    s->total = total;
+    s->count = count;
+    s->grid_of = grid_of;
+    s->index = index;
+}
+
 static void test_measure(void)
 {
     double Er[4] = {100, 100, 100, 100}, sr[4] = {0, 0, 0, 0};
@@ -74,11 +84,7 @@ static void test_measure_sample(void)
     size_t idx[2] = {1, 2}, grid_of[1] = {0};
     size_t *index[1] = {idx};
     cdl_bench_sample sample;
-    memset(&sample, 0, sizeof sample);
-    sample.total = 4;
-    sample.count = 2;
-    sample.grid_of = grid_of;
-    sample.index = index;
+    fake_sample(&sample, grid_of, index, 4, 2);
     cdl_bench_rung r;
     cdl_bench_rung_measure(&sol, &ref, &sample, &r);
     /* points 1 and 2: rel -0.01 and 0.02, the reference's 0.005 each:
@@ -169,11 +175,7 @@ static void test_measure_sample_calibrated(double spread)
         size_t grid_of[1] = {0};
         size_t *index[1] = {idx};
         cdl_bench_sample sample;
-        memset(&sample, 0, sizeof sample);
-        sample.total = N;
-        sample.count = n;
-        sample.grid_of = grid_of;
-        sample.index = index;
+        fake_sample(&sample, grid_of, index, N, n);
         cdl_bench_rung r;
         cdl_bench_rung_measure(&sol, &ref, &sample, &r);
         within += fabs(r.rms - truth) <= 2.0 * r.rms_sd;
