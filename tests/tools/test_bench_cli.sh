@@ -121,6 +121,15 @@ check "dim sphere: bench.csv says <ref in place of every RMS, the other fields n
   'awk -F, "NR > 1 { n++; if (\$8 != \"<ref\") bad++; for (i = 4; i <= 10; ++i) if (i != 8 && \$i !~ /^[0-9.e+-]+\$/) bad++ } END { exit !(n == 10 && !bad) }" G/bench.csv'
 check "dim sphere: the recommendation prints no RMS figure for a rung below the reference" \
   '! grep -Eq "below the reference.s resolution.*[0-9] %" out8.txt'
+# A sample of 5 of its 24 points: the same sample, reference and bench.csv
+# (but for seconds) from two runs.
+"$CANDELA" bench dim.json -o S1 --reference-points 5 --quiet > /dev/null 2>&1; st1=$?
+"$CANDELA" bench dim.json -o S2 --reference-points 5 --quiet > /dev/null 2>&1; st2=$?
+check "sampled reference: both runs exit 0, 5 points each" \
+  '[ $st1 -eq 0 ] && [ $st2 -eq 0 ] && [ "$(wc -l < S1/reference/wall.csv)" -eq 6 ]'
+check "sampled reference: the same points and values in both runs" 'cmp -s S1/reference/wall.csv S2/reference/wall.csv'
+check "sampled reference: the same bench.csv apart from seconds" \
+  'cmp -s <(cut -d, -f5 --complement S1/bench.csv) <(cut -d, -f5 --complement S2/bench.csv)'
 
 # The furnace: a closed 4 m box whose walls emit L = 100 cd/m2 and reflect
 # rho = 0.5 gives E = pi L / (1 - rho) at every point inside, whatever its
