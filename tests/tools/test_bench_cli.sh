@@ -148,6 +148,8 @@ check "furnace: the reference at 4 of the 16 points, said so" \
   'grep -q "^reference points: 4 of the grids. 16, a simple random sample" out9.txt && [ "$(wc -l < H/reference/probes.csv)" -eq 5 ] && grep -q "^points 4 of 16" H/reference/reference.key'
 check "furnace: each RMS given +- its standard error as an estimate over all points" \
   '[ "$(grep -Ec "^(icache|pathtrace)_[a-z0-9.]+ .*[0-9]% \+-[0-9.]+%" out9.txt)" -eq 10 ]'
+check "furnace: bench.svg valid XML with an error bar (a plain line in a method's colour) per rung" \
+  'xmllint --noout H/bench.svg && [ "$(grep -Ec "<line [^>]*stroke=\"#(1f77b4|d62728)\"/>" H/bench.svg)" -eq 10 ]'
 check "furnace: every rung solved at all 16 points" \
   'for d in H/runs/*/; do [ "$(wc -l < $d/probes.csv)" -eq 17 ] || exit 1; done'
 # The reference's points are the scene's, and within 4 sigma of pi L / (1 - rho).
@@ -175,6 +177,8 @@ check "budget spent: bench.csv keeps only the header" '[ "$(wc -l < B/bench.csv)
 # Usage.
 "$CANDELA" bench sphere.json > /dev/null 2>&1; st=$?
 check "no -o: usage error" '[ $st -eq 2 ]'
+"$CANDELA" bench sphere.json -o F --reference-points -3 > /dev/null 2> err10.txt; st=$?
+check "negative --reference-points: usage error naming it" '[ $st -eq 2 ] && grep -q "reference-points: expected a count" err10.txt'
 "$CANDELA" bench sphere.json -o F --methods frob > /dev/null 2> err6.txt; st=$?
 check "unknown method: usage error naming it" '[ $st -eq 2 ] && grep -q "frob" err6.txt'
 exit $fail
