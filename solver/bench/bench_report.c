@@ -21,9 +21,14 @@ cdl_status cdl_bench_report_write_csv(const char *path, const cdl_bench_row *row
     for (size_t k = 0; k < count; ++k) {
         const cdl_bench_row *r = &rows[k];
         if (r->skipped) continue;
-        fprintf(f.fp, "%s,%s,%s,%.6g,%.3f,%llu,%llu,%.6g,%.6g,%.6g\n", r->label, cdl_method_name(r->rung.method),
+        char rms[32];
+        if (r->below_reference)
+            snprintf(rms, sizeof rms, "<ref");
+        else
+            snprintf(rms, sizeof rms, "%.6g", r->rung.rms);
+        fprintf(f.fp, "%s,%s,%s,%.6g,%.3f,%llu,%llu,%s,%.6g,%.6g\n", r->label, cdl_method_name(r->rung.method),
                 r->quality, r->rung.target, r->rung.seconds, (unsigned long long)r->rung.rays,
-                (unsigned long long)r->rung.records, r->rung.rms, r->rung.worst, r->rung.within2);
+                (unsigned long long)r->rung.records, rms, r->rung.worst, r->rung.within2);
     }
     return cdl_atomic_file_commit(&f, err);
 }
@@ -50,6 +55,18 @@ static void rung_point(const cdl_bench_row *r, double floor_percent, double *s, 
 {
     *s = fmax(r->rung.seconds, 1e-4);
     *p = fmax(100.0 * r->rung.rms, 0.5 * floor_percent);
+}
+
+/* A rung's RMS +- its standard error as an estimate over all points (its
+ * error bar, in %); 0 when it has none (a reference at every point, or a
+ * rung the reference cannot resolve). The lower end is kept above 0 for
+ * the log axis. */
+static int rung_bar(const cdl_bench_row *r, double floor_percent, double *lo, double *hi)
+{
+    if (r->below_reference || !(r->rung.rms_sd > 0.0)) return 0;
+    *hi = 100.0 * (r->rung.rms + r->rung.rms_sd);
+    *lo = fmax(100.0 * (r->rung.rms - r->rung.rms_sd), 0.5 * floor_percent);
+    return 1;
 }
 
 /* One colour a method, as hex for the SVG and as bytes for the PNG. */
@@ -98,8 +115,9 @@ static plot_frame frame_for(const cdl_bench_row *rows, size_t count, double floo
     double s_min = INFINITY, s_max = 0.0, p_min = floor_percent, p_max = floor_percent;
     for (size_t k = 0; k < count; ++k) {
         if (rows[k].skipped) continue;
-        double s, p;
+        double s, p, lo, hi;
         rung_point(&rows[k], floor_percent, &s, &p);
+        if (rung_bar(&rows[k], floor_percent, &lo, &hi)) p = hi;
         s_min = fmin(s_min, s);
         s_max = fmax(s_max, s);
         p_min = fmin(p_min, p);
@@ -150,8 +168,11 @@ cdl_status cdl_bench_report_write_svg(const char *path, const cdl_bench_row *row
         fputs("\"/>\n", fp);
         for (size_t k = 0; k < count; ++k) {
             if (rows[k].skipped || rows[k].rung.method != methods[m]) continue;
-            double s, p;
+            double s, p, lo, hi;
             rung_point(&rows[k], floor_percent, &s, &p);
+            if (rung_bar(&rows[k], floor_percent, &lo, &hi))
+                fprintf(fp, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\"/>\n", plot_x(&f, s),
+                        plot_y(&f, lo), plot_x(&f, s), plot_y(&f, hi), method_colour(methods[m]));
             fprintf(fp,
                     "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\"/>\n"
                     "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\">%s%s</text>\n",
@@ -296,10 +317,12 @@ cdl_status cdl_bench_report_write_png(const char *path, const cdl_bench_row *row
         int any = 0;
         for (size_t k = 0; k < count; ++k) {
             if (rows[k].skipped || rows[k].rung.method != methods[m]) continue;
-            double s, p;
+            double s, p, lo, hi;
             rung_point(&rows[k], floor_percent, &s, &p);
             double x = plot_x(&f, s), y = plot_y(&f, p);
             if (any) draw_line(img, px, py, x, y, 2, 0, c);
+            if (rung_bar(&rows[k], floor_percent, &lo, &hi))
+                draw_line(img, x, plot_y(&f, lo), x, plot_y(&f, hi), 1, 0, c);
             for (int dy = -3; dy <= 3; ++dy)
                 for (int dx = -3; dx <= 3; ++dx)
                     if (dx * dx + dy * dy <= 10) put_pixel(img, (int)lround(x) + dx, (int)lround(y) + dy, c);
