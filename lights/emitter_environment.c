@@ -310,6 +310,13 @@ const cdl_env_pixels *cdl_emitter_environment_pixels(const cdl_emitter *emitter)
     return env->image ? &env->px : NULL;
 }
 
+const cdl_env_range *cdl_emitter_environment_range(const cdl_emitter *emitter)
+{
+    if (!emitter || emitter->ops != &environment_ops) return NULL;
+    const environment_emitter *env = as_env(emitter);
+    return env->image ? &env->range : NULL;
+}
+
 /* Bounds over a region (environment_bounds.h): an image's least and
  * greatest pixel over the rows and columns the region touches; a sky
  * model's from the region's range of cos(theta) (uniform: L; overcast:

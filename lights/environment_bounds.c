@@ -195,33 +195,42 @@ static void fold_rect(const cdl_env_range *r, const cdl_env_pixels *px, int leve
         }
 }
 
-void cdl_env_range_query(const cdl_env_range *r, const cdl_env_pixels *px, const cdl_env_extent *e, double *L_lo,
-                         double *L_hi)
+int cdl_env_extent_pixels(const cdl_env_pixels *px, const cdl_env_extent *e, int *j0, int *j1, int *i0, int *ni,
+                          int *dark)
 {
     int W = px->width, H = px->height;
     /* Rows: theta_j = pi j / H; one row of margin each way. */
     double t_lo = acos(fmin(1.0, fmax(-1.0, e->cos_hi))), t_hi = acos(fmin(1.0, fmax(-1.0, e->cos_lo)));
-    int j0 = (int)floor(t_lo * H / CDL_PI) - 1, j1 = (int)floor(t_hi * H / CDL_PI) + 1;
-    if (j0 < 0) j0 = 0;
-    if (j1 > H - 1) j1 = H - 1;
-    int dark = j1 >= px->rows || (px->upper_only && e->cos_lo <= 0.0);
-    if (j1 > px->rows - 1) j1 = px->rows - 1;
-    if (j0 > j1 || r->levels == 0) {
-        *L_lo = *L_hi = 0.0;
-        return;
-    }
+    *j0 = (int)floor(t_lo * H / CDL_PI) - 1;
+    *j1 = (int)floor(t_hi * H / CDL_PI) + 1;
+    if (*j0 < 0) *j0 = 0;
+    if (*j1 > H - 1) *j1 = H - 1;
+    *dark = *j1 >= px->rows || (px->upper_only && e->cos_lo <= 0.0);
+    if (*j1 > px->rows - 1) *j1 = px->rows - 1;
     /* Columns: phi = pi + 2 pi u, one column of margin each way. */
-    int i0 = 0, ni = W;
+    *i0 = 0;
+    *ni = W;
     if (!e->full_azimuth) {
         double u = (e->phi_lo - CDL_PI) / CDL_TWO_PI;
         u -= floor(u);
-        i0 = (int)floor(u * W) - 1;
-        ni = (int)ceil(e->phi_span / CDL_TWO_PI * W) + 3;
-        if (ni >= W) {
-            i0 = 0;
-            ni = W;
+        *i0 = (int)floor(u * W) - 1;
+        *ni = (int)ceil(e->phi_span / CDL_TWO_PI * W) + 3;
+        if (*ni >= W) {
+            *i0 = 0;
+            *ni = W;
         }
-        i0 = ((i0 % W) + W) % W;
+        *i0 = ((*i0 % W) + W) % W;
+    }
+    return *j0 <= *j1;
+}
+
+void cdl_env_range_query(const cdl_env_range *r, const cdl_env_pixels *px, const cdl_env_extent *e, double *L_lo,
+                         double *L_hi)
+{
+    int W = px->width, j0, j1, i0, ni, dark;
+    if (!cdl_env_extent_pixels(px, e, &j0, &j1, &i0, &ni, &dark) || r->levels == 0) {
+        *L_lo = *L_hi = 0.0;
+        return;
     }
     int rows = j1 - j0 + 1, reach = rows > ni ? rows : ni, level = -1;
     if ((double)rows * ni > SCAN_PIXELS) {

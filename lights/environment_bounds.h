@@ -59,4 +59,15 @@ void cdl_env_range_free(cdl_env_range *range);
 void cdl_env_range_query(const cdl_env_range *range, const cdl_env_pixels *px, const cdl_env_extent *extent,
                          double *L_lo, double *L_hi);
 
+/* The pixels an extent touches, with one of margin each way: rows j0 ..
+ * j1 (of those that carry light), columns i0 .. i0 + ni - 1 modulo the
+ * width; *dark when the extent reaches where the sky carries no light.
+ * Returns 0 when it touches no row that carries light. */
+int cdl_env_extent_pixels(const cdl_env_pixels *px, const cdl_env_extent *e, int *j0, int *j1, int *i0, int *ni,
+                          int *dark);
+
+/* The block pyramid of an image environment; NULL for any other emitter
+ * (emitter_environment.c). */
+const cdl_env_range *cdl_emitter_environment_range(const cdl_emitter *emitter);
+
 #endif

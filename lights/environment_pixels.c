@@ -62,17 +62,20 @@ static void edge_height(const cell_edge *e, cdl_vec3 n, double *A, double *B, do
 /* int n . (w x dw) along the edge from parameter a to b (formulas above;
  * sin b - sin a = 2 cos m sin h, cos b - cos a = -2 sin m sin h with m the
  * mean and h the half difference, which keeps short pieces accurate). */
+double cdl_env_parallel_flux(double cos_t0, double sin_t0, double phi1, double phi2, cdl_vec3 n)
+{
+    double m = 0.5 * (phi1 + phi2), sh = sin(0.5 * (phi2 - phi1));
+    double dsin = 2.0 * cos(m) * sh, dcos = -2.0 * sin(m) * sh;
+    return -cos_t0 * sin_t0 * (n.x * dsin - n.y * dcos) + n.z * sin_t0 * sin_t0 * (phi2 - phi1);
+}
+
 static double edge_flux(const cell_edge *e, cdl_vec3 n, double a, double b)
 {
     if (!e->parallel) return (n.y * e->fc - n.x * e->fs) * (b - a);
-    double m = 0.5 * (a + b), sh = sin(0.5 * (b - a));
-    double dsin = 2.0 * cos(m) * sh, dcos = -2.0 * sin(m) * sh;
-    return -e->fc * e->fs * (n.x * dsin - n.y * dcos) + n.z * e->fs * e->fs * (b - a);
+    return cdl_env_parallel_flux(e->fc, e->fs, a, b, n);
 }
 
-/* Roots of A cos t + B sin t + C strictly inside (lo, hi), hi - lo <= 2 pi,
- * ascending; returns their count (0 to 2). */
-static int edge_roots(double A, double B, double C, double lo, double hi, double *out)
+int cdl_env_sinusoid_roots(double A, double B, double C, double lo, double hi, double *out)
 {
     double R = hypot(A, B);
     if (!(R > fabs(C))) return 0;
@@ -165,7 +168,7 @@ double cdl_env_cell_projected_solid_angle(double theta_a, double theta_b, double
         double A, B, C, roots[2];
         edge_height(e, n, &A, &B, &C);
         int forward = e->t1 >= e->t0;
-        int r = edge_roots(A, B, C, forward ? e->t0 : e->t1, forward ? e->t1 : e->t0, roots);
+        int r = cdl_env_sinusoid_roots(A, B, C, forward ? e->t0 : e->t1, forward ? e->t1 : e->t0, roots);
         double cut[4];
         int m = 0;
         cut[m++] = e->t0;

@@ -75,6 +75,15 @@ double cdl_env_pixels_illuminance(const cdl_env_pixels *px, cdl_vec3 n, double *
 double cdl_env_cell_projected_solid_angle(double theta_a, double theta_b, double phi_a, double phi_b,
                                           cdl_vec3 n_local);
 
+/* int n . (w x dw) along the parallel at polar angle theta0 (its cosine and
+ * sine given) from azimuth phi1 to phi2 (radians, either order), n in the
+ * emitter's frame: the parallel's part of a boundary integral (above). */
+double cdl_env_parallel_flux(double cos_t0, double sin_t0, double phi1, double phi2, cdl_vec3 n);
+
+/* Roots of A cos t + B sin t + C strictly inside (lo, hi), hi - lo <= 2 pi,
+ * ascending in out[0 .. 2); returns their count (0 to 2). */
+int cdl_env_sinusoid_roots(double A, double B, double C, double lo, double hi, double *out);
+
 /* The pixel geometry of an image environment; NULL for any other emitter
  * (emitter_environment.c). */
 const cdl_env_pixels *cdl_emitter_environment_pixels(const cdl_emitter *emitter);

@@ -447,9 +447,9 @@ cdl_status cdl_photometry_format_ldt(const cdl_photometry *photometry, const cdl
 
 /* ---- plotting (photometry_plot.c) ---------------------------------------- */
 
-/* The polar intensity diagram as SVG at `path` (atomically): the C0-C180
- * (solid) and C90-C270 (dashed) planes in cd/klm, nadir down, `title` on
- * top. */
+/* The polar intensity diagram as SVG at `path` (atomically), drawn by
+ * cairo: the C0-C180 (solid) and C90-C270 (dashed) planes in cd/klm, nadir
+ * down, `title` on top and in the SVG's <title>. */
 cdl_status cdl_photometry_write_polar_svg(const cdl_photometry *photometry, const char *title, const char *path,
                                           cdl_error *err);
 /* The diagram's scale: its outer ring's value (a 1-2-5 value at or above

@@ -11,6 +11,8 @@ packages=(
   clang libclang-rt-14-dev
   libxml2-utils
   python3-jsonschema
+  libcairo2-dev libpango1.0-dev
+  fonts-dejavu-core chromium poppler-utils
 )
 
 missing=()

@@ -39,7 +39,8 @@ run_fuzz() {
   shift
   local work
   work=$(mktemp -d)
-  if ! "$fuzz_dir/tests/fuzz/$name" -max_total_time=100 -timeout=10 -rss_limit_mb=2048 "${opts[@]}" \
+  # (LeakSanitizer: the suppressions of the tests, fontconfig's process-wide configuration)
+  if ! LSAN_OPTIONS="suppressions=$root/tests/lsan.supp:print_suppressions=0" "$fuzz_dir/tests/fuzz/$name" -max_total_time=100 -timeout=10 -rss_limit_mb=2048 "${opts[@]}" \
        -artifact_prefix="$fuzz_dir/artifacts/" "$work" "$@" >"$fuzz_log" 2>&1; then
     tail -n 60 "$fuzz_log" >&2
     echo "test.sh: $name found a problem; the input is in $fuzz_dir/artifacts/" >&2

@@ -408,6 +408,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     memset(&lights, 0, sizeof lights);
     cdl_light_strategy *strategies = NULL;
     cdl_direct_route_tally *routes = NULL;
+    unsigned char *on_surface = NULL;   /* the grid's points lying on a surface, for its vertical outputs */
     cJSON **plan_grids = NULL;
     cache_use cache;
     memset(&cache, 0, sizeof cache);
@@ -536,7 +537,20 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                                     &score);
         int ao_from_records = indirect && gm == CDL_METHOD_ICACHE;
         /* E_stderr holds the variance until the grid is done. */
-        cdl_direct_vertical_out vertical = {gs->Ez, gs->Esz};
+        /* A point lying on a surface sees nothing behind it: the vertical
+         * outputs, which look all round, are the limit from the side the
+         * point's normal faces (a floor grid's cylinders stand on the floor). */
+        size_t on_surface_count = 0;
+        if (gs->Ez || gs->Esz) {
+            unsigned char *mask = realloc(on_surface, gs->grid.count ? gs->grid.count : 1);
+            if (!mask) {
+                st = cdl_error_out_of_memory(err);
+                goto fail;
+            }
+            on_surface = mask;
+            if (pieces > 0) on_surface_count = cdl_grid_surface_mask(&gs->grid, geometry, occluders, on_surface);
+        }
+        cdl_direct_vertical_out vertical = {gs->Ez, gs->Esz, on_surface_count ? on_surface : NULL};
         st = cdl_direct_solve_grid(&ctx, strategies, &gs->grid, (size_t)grid_key(spec->name), gs->E_direct, gs->E_stderr,
                                    ao_from_records ? NULL : gs->ao, threads,
                                    &opts.progress, &vertical, stage_name, &total, err);
@@ -599,9 +613,9 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
             snprintf(stage_name, sizeof stage_name, "grid %s: cylindrical illuminance", spec->name);
             tc = cdl_pool_now_seconds();
             cdl_path_stats before = vt_stats;
-            st = cdl_vertical_sampled_grid(&vctx, &gs->grid, (size_t)grid_key(spec->name), gs->Ez, gs->Esz,
-                                           gs->Ez_stderr, gs->Esz_stderr, threads, &opts.progress, stage_name,
-                                           &vt_stats, err);
+            st = cdl_vertical_sampled_grid(&vctx, &gs->grid, (size_t)grid_key(spec->name), vertical.on_surface,
+                                           gs->Ez, gs->Esz, gs->Ez_stderr, gs->Esz_stderr, threads, &opts.progress,
+                                           stage_name, &vt_stats, err);
             out->compute_seconds += cdl_pool_now_seconds() - tc;
             if (st != CDL_OK) goto fail;
             char why[300];
@@ -685,6 +699,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     release_records(records, scene->grid_count);
     free(cache.grids);
     free(routes);
+    free(on_surface);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);
     cdl_scene_geometry_release(geometry);
@@ -698,6 +713,7 @@ fail:
     release_records(records, scene->grid_count);
     free(cache.grids);
     free(routes);
+    free(on_surface);
     cdl_scene_lights_release(&lights);
     cdl_occluder_index_release(occluders);
     cdl_scene_geometry_release(geometry);

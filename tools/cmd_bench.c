@@ -17,36 +17,44 @@
 
 static void print_help(FILE *out)
 {
-    fputs("usage: candela bench SCENE.json -o DIR [--budget SECONDS] [--methods LIST] [--threads N] [--quiet]\n"
+    fputs("usage: candela bench SCENE.json -o DIR [--budget SECONDS] [--methods LIST]\n"
+          "                     [--reference-points N] [--threads N] [--quiet]\n"
           "\n"
           "Solves the scene with a ladder of settings for each method and reports the\n"
           "error of each against a converged reference, with the time it took.\n"
           "\n"
           "  reference  path tracing to the \"reference\" quality (0.02 % relative standard\n"
-          "             error per point), written to DIR/reference/ with the hash of what\n"
-          "             it depends on (DIR/reference/reference.key: geometry, materials,\n"
-          "             lights and their files, grids' points, seed, bounces,\n"
-          "             direct_samples). A later run reuses it when the hash matches and\n"
-          "             refuses it (exit 1) when not: remove DIR/reference to start anew.\n"
+          "             error per point) at a simple random sample of the grids' points\n"
+          "             (--reference-points, default 24; every point when the grids have\n"
+          "             no more), with a seed of its own so that its noise is independent\n"
+          "             of the rungs'. Written to DIR/reference/ as `candela solve` writes\n"
+          "             a scene whose grids are points grids of the sampled points, with\n"
+          "             the hash of what it depends on (DIR/reference/reference.key:\n"
+          "             geometry, materials, lights and their files, the sampled points,\n"
+          "             seed, bounces, direct_samples). A later run reuses it when the\n"
+          "             hash matches and refuses it (exit 1) when not: remove\n"
+          "             DIR/reference to start anew.\n"
           "  ladder     icache and pathtrace: draft (2 %), 1 %, normal (0.5 %), 0.25 %,\n"
           "             high (0.1 %); direct: draft, normal, high. Each a whole solve with\n"
           "             the scene's seed, its files in DIR/runs/LABEL/ as `candela solve`\n"
           "             writes them. direct leaves out interreflected light: on a scene\n"
           "             that reflects, its error is mostly that.\n"
           "\n"
-          "For each rung: seconds (wall, whole solve), rays, cache records, the RMS and\n"
-          "largest relative error of E against the reference over every point of every\n"
-          "grid (the reference's own noise removed from the RMS in quadrature), and the\n"
-          "share of points within 2 combined sigma. An RMS not above 2x the reference's\n"
-          "own stated RMS cannot be resolved: bench.csv keeps the figure, the table\n"
-          "marks it \"<ref\" and a note says so.\n"
+          "Each rung solves every point of the scene. For each: seconds (wall, whole\n"
+          "solve), rays, cache records, the RMS and largest relative error of E against\n"
+          "the reference at the reference's points (the reference's own noise removed\n"
+          "from the RMS in quadrature), and the share of those points within 2 combined\n"
+          "sigma. Over a sample the RMS estimates the RMS over all points; the table\n"
+          "gives its standard error as that estimate (\"+-\"). An RMS not above 2x the\n"
+          "reference's own stated RMS cannot be resolved: bench.csv has \"<ref\" in\n"
+          "place of the figure, the table and the plot mark it and a note says so.\n"
           "\n"
           "Writes DIR/bench.csv (label,method,quality,target_error,seconds,rays,records,\n"
-          "rms_rel_error,max_rel_error,within_2_sigma; errors as fractions; skipped rungs\n"
-          "left out), DIR/bench.svg and DIR/bench.png (RMS error against seconds,\n"
-          "log-log, the reference's error as a floor), and on stdout a table ending with the cheapest rung that\n"
-          "reaches each preset's target. The same scene, seed and threads give the same\n"
-          "bench.csv apart from its seconds column.\n"
+          "rms_rel_error,max_rel_error,within_2_sigma; errors as fractions, or \"<ref\";\n"
+          "skipped rungs left out), DIR/bench.svg and DIR/bench.png (RMS error against\n"
+          "seconds, log-log, the reference's error as a floor), and on stdout a table\n"
+          "ending with the cheapest rung that reaches each preset's target. The same\n"
+          "scene, seed and threads give the same bench.csv apart from its seconds column.\n"
           "\n"
           "options:\n"
           "  -o, --output DIR     folder for the results (required; created when missing)\n"
@@ -56,8 +64,10 @@ static void print_help(FILE *out)
           "                       a reference that would not fit is exit 1, saying how long\n"
           "                       it needs (pilot solves from 2 %, tightened by 4x while\n"
           "                       cheap, the last scaled by (its target / 0.02 %)^2)\n"
+          "  --reference-points N points the reference is path traced at (default 24, a\n"
+          "                       simple random sample; 0 = every point of every grid)\n"
           "  --methods LIST       comma-separated from icache, pathtrace, direct (default\n"
-          "                       icache,pathtrace; direct only when nothing reflects light)\n"
+          "                       icache,pathtrace; direct only when nothing reflects)\n"
           "  --threads N          worker threads (default: the scene's; 0 = all cores)\n"
           "  --quiet              no progress lines on stderr\n"
           "\n"
@@ -73,11 +83,21 @@ typedef struct bench_args {
     int methods[3];              /* direct, icache, pathtrace asked for */
     int threads;
     int quiet;
+    size_t reference_points;     /* 0: every point */
 } bench_args;
 
 /* The whole run's bound when --budget is not given: nine minutes, so that
  * a bench of a room-sized scene ends within ten. */
 #define BENCH_DEFAULT_BUDGET 540.0
+
+/* The reference's points when --reference-points is not given. Path
+ * tracing the example office's (data/office) 24 to 0.02 % took 225
+ * CPU-seconds, about 4 of the 20 CPU-minutes that ten minutes on two cores
+ * give; the rest is the ladder's, whose 0.25 % path-tracing rung alone
+ * takes about 2 (and its 0.1 % rung would take 11). The RMS of 24 points
+ * estimates the RMS over all points to about 15 % (1/sqrt(2n) for errors
+ * alike from point to point). */
+#define BENCH_DEFAULT_REFERENCE_POINTS 24
 
 static const cdl_method method_of[3] = {CDL_METHOD_DIRECT, CDL_METHOD_ICACHE, CDL_METHOD_PATHTRACE};
 
@@ -102,7 +122,7 @@ static int parse_args(int argc, char **argv, bench_args *a)
 {
     cdl_cli_option opts[] = {
         {"output", 'o', 1, 0, NULL}, {"budget", 0, 1, 0, NULL},  {"methods", 0, 1, 0, NULL},
-        {"threads", 0, 1, 0, NULL},  {"quiet", 'q', 0, 0, NULL},
+        {"threads", 0, 1, 0, NULL},  {"quiet", 'q', 0, 0, NULL},  {"reference-points", 0, 1, 0, NULL},
     };
     const size_t n = sizeof opts / sizeof opts[0];
     cdl_cli_result r;
@@ -135,6 +155,18 @@ static int parse_args(int argc, char **argv, bench_args *a)
         }
     }
     if (cdl_cli_parse_threads("bench", cdl_cli_find(opts, n, "threads"), &a->threads)) return CDL_EXIT_USAGE;
+    a->reference_points = BENCH_DEFAULT_REFERENCE_POINTS;
+    o = cdl_cli_find(opts, n, "reference-points");
+    if (o->present) {
+        char *end = NULL;
+        long v = strtol(o->value, &end, 10);
+        if (!end || *end || end == o->value || v < 0 || v > 100000000L) {
+            fprintf(stderr, "candela bench: --reference-points: expected a count of points (0 = every point), found '%s'\n",
+                    o->value);
+            return CDL_EXIT_USAGE;
+        }
+        a->reference_points = (size_t)v;
+    }
     o = cdl_cli_find(opts, n, "methods");
     if (o->present) {
         if (!parse_methods(o->value, a->methods)) return CDL_EXIT_USAGE;
@@ -182,14 +214,16 @@ static cdl_status estimate_reference(const cdl_scene *scene, const bench_args *a
     }
 }
 
-#define KEY_HEADER "candela bench reference 1"
+#define KEY_HEADER "candela bench reference 2"
 
 /* The reference: read from DIR/reference when its key matches (refused
- * when not), else path traced to `target` (within the budget) and
- * written there with its key. Read back from its CSV either way, so a
- * fresh and a reused reference give the same figures. */
-static int get_reference(const cdl_scene *scene, const bench_args *a, double target, double t0, cdl_solution *ref)
+ * when not), else path traced to `target` (within the budget) at the
+ * sample's points and written there with its key. Read back from its CSV
+ * either way, so a fresh and a reused reference give the same figures. */
+static int get_reference(const cdl_bench_sample *sample, const bench_args *a, double target, double t0,
+                         cdl_solution *ref)
 {
+    const cdl_scene *scene = &sample->scene;
     cdl_error err;
     cdl_error_clear(&err);
     char dir[4096], keypath[4200];
@@ -211,7 +245,8 @@ static int get_reference(const cdl_scene *scene, const bench_args *a, double tar
         if (!ok || stored != key) {
             fprintf(stderr,
                     "candela bench: %s: the reference there was made for another scene or other settings (its hash "
-                    "%016llx, this scene's %016llx: geometry, materials, lights, grids, seed or bounces changed); "
+                    "%016llx, this scene's %016llx: geometry, materials, lights, grids, the sampled points, seed or "
+                    "bounces changed); "
                     "remove %s to compute a new one\n",
                     dir, stored, (unsigned long long)key, dir);
             return CDL_EXIT_INPUT;
@@ -229,10 +264,10 @@ static int get_reference(const cdl_scene *scene, const bench_args *a, double tar
             if (spent + need > a->budget) {
                 fprintf(stderr,
                         "candela bench: --budget %g s is too small: the reference (path tracing to %g %%) needs about "
-                        "%.3g s (a pilot to %g %% took %.3g s of computing, scaled by (%g/%g)^2), after the %.3g s "
-                        "the pilots took\n",
-                        a->budget, 100.0 * target, need, 100.0 * pilot_target, pilot_compute, pilot_target, target,
-                        spent);
+                        "%.3g s at %zu points (a pilot to %g %% took %.3g s of computing, scaled by (%g/%g)^2), after "
+                        "the %.3g s the pilots took; give a larger --budget or fewer --reference-points\n",
+                        a->budget, 100.0 * target, need, sample->count, 100.0 * pilot_target, pilot_compute,
+                        pilot_target, target, spent);
                 return CDL_EXIT_INPUT;
             }
         }
@@ -243,9 +278,9 @@ static int get_reference(const cdl_scene *scene, const bench_args *a, double tar
             printf("reference: path traced to %g %% in %.2f s, %llu rays; written to %s\n", 100.0 * target,
                    sol.seconds, (unsigned long long)sol.rays, dir);
             cdl_solution_release(&sol);
-            char text[128];
-            int len = snprintf(text, sizeof text, KEY_HEADER "\nkey %016llx\ntarget %.17g\n", (unsigned long long)key,
-                               target);
+            char text[256];
+            int len = snprintf(text, sizeof text, KEY_HEADER "\nkey %016llx\ntarget %.17g\npoints %zu of %zu\n",
+                               (unsigned long long)key, target, sample->count, sample->total);
             st = cdl_atomic_file_write_all(keypath, text, (size_t)len, &err);
         }
         if (st != CDL_OK) {
@@ -273,8 +308,8 @@ static const rung_spec gi_rungs[] = {{"draft", "draft", 0.02},    {"custom", "t0
 static const rung_spec direct_rungs[] = {{"draft", "draft", 0.02}, {"normal", "normal", 0.005}, {"high", "high", 0.001}};
 
 /* Run one method's ladder into rows (appended at *count). */
-static int run_ladder(const cdl_scene *scene, const bench_args *a, int m, const cdl_solution *ref, double ref_rms,
-                      double t0, cdl_bench_row *rows, size_t *count)
+static int run_ladder(const cdl_scene *scene, const bench_args *a, int m, const cdl_bench_sample *sample,
+                      const cdl_solution *ref, double ref_rms, double t0, cdl_bench_row *rows, size_t *count)
 {
     const rung_spec *specs = m == 0 ? direct_rungs : gi_rungs;
     int n = m == 0 ? 3 : 5;
@@ -307,7 +342,7 @@ static int run_ladder(const cdl_scene *scene, const bench_args *a, int m, const 
             fprintf(stderr, "candela bench: %s: %s\n", row->label, err.message);
             return (int)st;
         }
-        cdl_bench_rung_measure(&sol, ref, &row->rung);
+        cdl_bench_rung_measure(&sol, ref, sample, &row->rung);
         cdl_solution_release(&sol);
         /* an exact reference (no stated error) resolves everything */
         row->below_reference = ref_rms > 0.0 && row->rung.rms <= CDL_BENCH_RESOLVABLE * ref_rms;
@@ -318,7 +353,7 @@ static int run_ladder(const cdl_scene *scene, const bench_args *a, int m, const 
 
 static void print_table(const cdl_bench_row *rows, size_t count, double ref_rms)
 {
-    printf("\n%-18s %-9s %-7s %8s %9s %12s %8s %10s %10s %9s %9s\n", "label", "method", "quality", "target",
+    printf("\n%-18s %-9s %-7s %8s %9s %12s %8s %17s %10s %9s %9s\n", "label", "method", "quality", "target",
            "seconds", "rays", "records", "rms_rel", "max_rel", "within_2s", "stated");
     int flagged = 0;
     for (size_t k = 0; k < count; ++k) {
@@ -328,20 +363,22 @@ static void print_table(const cdl_bench_row *rows, size_t count, double ref_rms)
                    cdl_method_name(r->rung.method), r->quality, 100.0 * r->rung.target);
             continue;
         }
-        char rms[32];
+        char rms[48];
         if (r->below_reference)
             snprintf(rms, sizeof rms, "<ref");
+        else if (r->rung.rms_sd > 0.0)
+            snprintf(rms, sizeof rms, "%.3f%% +-%.3f%%", 100.0 * r->rung.rms, 100.0 * r->rung.rms_sd);
         else
             snprintf(rms, sizeof rms, "%.3f%%", 100.0 * r->rung.rms);
         flagged |= r->below_reference;
-        printf("%-18s %-9s %-7s %7.3g%% %9.3f %12llu %8llu %10s %9.3f%% %8.1f%% %8.3f%%\n", r->label,
+        printf("%-18s %-9s %-7s %7.3g%% %9.3f %12llu %8llu %17s %9.3f%% %8.1f%% %8.3f%%\n", r->label,
                cdl_method_name(r->rung.method), r->quality, 100.0 * r->rung.target, r->rung.seconds,
                (unsigned long long)r->rung.rays, (unsigned long long)r->rung.records, rms, 100.0 * r->rung.worst,
                100.0 * r->rung.within2, 100.0 * r->rung.stated_rms);
     }
     if (flagged)
         printf("note: \"<ref\": the RMS error is not above %g x the reference's own stated RMS (%.4f %%), so the "
-               "reference cannot resolve it; bench.csv keeps the figure measured\n",
+               "reference cannot resolve it (bench.csv says \"<ref\" in place of a figure)\n",
                CDL_BENCH_RESOLVABLE, 100.0 * ref_rms);
     printf("\nrecommendation (cheapest rung whose measured RMS error reaches the preset's target on this scene):\n");
     static const cdl_quality presets[3] = {CDL_QUALITY_DRAFT, CDL_QUALITY_NORMAL, CDL_QUALITY_HIGH};
@@ -353,13 +390,27 @@ static void print_table(const cdl_bench_row *rows, size_t count, double ref_rms)
             if (r->skipped || r->rung.rms > t) continue;
             if (!best || r->rung.seconds < best->rung.seconds) best = r;
         }
-        if (best)
-            printf("  %-7s (%g %%): %s, %.2f s, RMS %s%.3f %%\n", cdl_quality_name(presets[q]), 100.0 * t, best->label,
-                   best->rung.seconds, best->below_reference ? "below the reference's resolution, " : "",
-                   100.0 * best->rung.rms);
+        if (best && best->below_reference)
+            printf("  %-7s (%g %%): %s, %.2f s, RMS below the reference's resolution (<ref)\n",
+                   cdl_quality_name(presets[q]), 100.0 * t, best->label, best->rung.seconds);
+        else if (best)
+            printf("  %-7s (%g %%): %s, %.2f s, RMS %.3f %%\n", cdl_quality_name(presets[q]), 100.0 * t, best->label,
+                   best->rung.seconds, 100.0 * best->rung.rms);
         else
             printf("  %-7s (%g %%): no rung run reached it\n", cdl_quality_name(presets[q]), 100.0 * t);
     }
+}
+
+/* Say where the reference is computed and what that means for the RMS. */
+static void print_sample(const cdl_bench_sample *sample)
+{
+    if (sample->count < sample->total)
+        printf("reference points: %zu of the grids' %zu, a simple random sample; each rung is solved at every point "
+               "and measured at these, so its RMS estimates the RMS over all points, given +- its standard error as "
+               "that estimate (max_rel and within_2s are over the sample)\n",
+               sample->count, sample->total);
+    else
+        printf("reference points: every one of the grids' %zu\n", sample->total);
 }
 
 static int bench(const bench_args *a, cdl_scene *scene)
@@ -390,9 +441,17 @@ static int bench(const bench_args *a, cdl_scene *scene)
         return (int)st;
     }
     double ref_target = cdl_quality_target_error(CDL_QUALITY_REFERENCE);
+    cdl_bench_sample sample;
+    st = cdl_bench_sample_build(scene, a->reference_points, &sample, &err);
+    if (st != CDL_OK) {
+        fprintf(stderr, "candela bench: %s\n", err.message);
+        return (int)st;
+    }
+    print_sample(&sample);
     cdl_solution ref;
-    int rc = get_reference(scene, a, ref_target, t0, &ref);
+    int rc = get_reference(&sample, a, ref_target, t0, &ref);
     if (rc != CDL_EXIT_OK) {
+        cdl_bench_sample_release(&sample);
         /* folders this run made and left empty go (rmdir refuses others) */
         rmdir(path);
         snprintf(path, sizeof path, "%s/reference", a->dir);
@@ -406,8 +465,9 @@ static int bench(const bench_args *a, cdl_scene *scene)
     cdl_bench_row rows[16];
     size_t count = 0;
     for (int m = 0; m < 3 && rc == CDL_EXIT_OK; ++m)
-        if (methods[m]) rc = run_ladder(scene, a, m, &ref, ref_rms, t0, rows, &count);
+        if (methods[m]) rc = run_ladder(scene, a, m, &sample, &ref, ref_rms, t0, rows, &count);
     cdl_solution_release(&ref);
+    cdl_bench_sample_release(&sample);
     if (rc != CDL_EXIT_OK) return rc;
 
     snprintf(path, sizeof path, "%s/bench.csv", a->dir);

@@ -26,9 +26,4 @@ extern const cdl_command cdl_command_bench;
 /* Exit statuses, identical to cdl_status values. */
 enum { CDL_EXIT_OK = 0, CDL_EXIT_INPUT = 1, CDL_EXIT_USAGE = 2, CDL_EXIT_INTERNAL = 3 };
 
-
-
-/* For a subcommand that is declared but not built yet: --help works, anything
- * else says so on stderr and returns CDL_EXIT_USAGE. */
-int cdl_command_not_built(const cdl_command *command, int argc, char **argv);
 #endif

@@ -7,8 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "graphics/raster_canvas.h"
 #include "radiometry/atomic_file.h"
-#include "solver/output/bitmap_font.h"
 #include "solver/output/png_write.h"
 #include "solver/solve.h"
 
@@ -21,9 +21,14 @@ cdl_status cdl_bench_report_write_csv(const char *path, const cdl_bench_row *row
     for (size_t k = 0; k < count; ++k) {
         const cdl_bench_row *r = &rows[k];
         if (r->skipped) continue;
-        fprintf(f.fp, "%s,%s,%s,%.6g,%.3f,%llu,%llu,%.6g,%.6g,%.6g\n", r->label, cdl_method_name(r->rung.method),
+        char rms[32];
+        if (r->below_reference)
+            snprintf(rms, sizeof rms, "<ref");
+        else
+            snprintf(rms, sizeof rms, "%.6g", r->rung.rms);
+        fprintf(f.fp, "%s,%s,%s,%.6g,%.3f,%llu,%llu,%s,%.6g,%.6g\n", r->label, cdl_method_name(r->rung.method),
                 r->quality, r->rung.target, r->rung.seconds, (unsigned long long)r->rung.rays,
-                (unsigned long long)r->rung.records, r->rung.rms, r->rung.worst, r->rung.within2);
+                (unsigned long long)r->rung.records, rms, r->rung.worst, r->rung.within2);
     }
     return cdl_atomic_file_commit(&f, err);
 }
@@ -50,6 +55,18 @@ static void rung_point(const cdl_bench_row *r, double floor_percent, double *s, 
 {
     *s = fmax(r->rung.seconds, 1e-4);
     *p = fmax(100.0 * r->rung.rms, 0.5 * floor_percent);
+}
+
+/* A rung's RMS +- its standard error as an estimate over all points (its
+ * error bar, in %); 0 when it has none (a reference at every point, or a
+ * rung the reference cannot resolve). The lower end is kept above 0 for
+ * the log axis. */
+static int rung_bar(const cdl_bench_row *r, double floor_percent, double *lo, double *hi)
+{
+    if (r->below_reference || !(r->rung.rms_sd > 0.0)) return 0;
+    *hi = 100.0 * (r->rung.rms + r->rung.rms_sd);
+    *lo = fmax(100.0 * (r->rung.rms - r->rung.rms_sd), 0.5 * floor_percent);
+    return 1;
 }
 
 /* One colour a method, as hex for the SVG and as bytes for the PNG. */
@@ -98,8 +115,9 @@ static plot_frame frame_for(const cdl_bench_row *rows, size_t count, double floo
     double s_min = INFINITY, s_max = 0.0, p_min = floor_percent, p_max = floor_percent;
     for (size_t k = 0; k < count; ++k) {
         if (rows[k].skipped) continue;
-        double s, p;
+        double s, p, lo, hi;
         rung_point(&rows[k], floor_percent, &s, &p);
+        if (rung_bar(&rows[k], floor_percent, &lo, &hi)) p = hi;
         s_min = fmin(s_min, s);
         s_max = fmax(s_max, s);
         p_min = fmin(p_min, p);
@@ -150,8 +168,11 @@ cdl_status cdl_bench_report_write_svg(const char *path, const cdl_bench_row *row
         fputs("\"/>\n", fp);
         for (size_t k = 0; k < count; ++k) {
             if (rows[k].skipped || rows[k].rung.method != methods[m]) continue;
-            double s, p;
+            double s, p, lo, hi;
             rung_point(&rows[k], floor_percent, &s, &p);
+            if (rung_bar(&rows[k], floor_percent, &lo, &hi))
+                fprintf(fp, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\"/>\n", plot_x(&f, s),
+                        plot_y(&f, lo), plot_x(&f, s), plot_y(&f, hi), method_colour(methods[m]));
             fprintf(fp,
                     "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\"/>\n"
                     "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\">%s%s</text>\n",
@@ -165,7 +186,7 @@ cdl_status cdl_bench_report_write_svg(const char *path, const cdl_bench_row *row
     return cdl_atomic_file_commit(&file, err);
 }
 
-/* ---- the same plot as a PNG, drawn pixel by pixel ---------------------- */
+/* ---- the same plot as a PNG: lines pixel by pixel, text by pango ------- */
 
 enum { PLOT_WIDTH = 760, PLOT_HEIGHT = 500 };
 
@@ -202,15 +223,47 @@ static void draw_line(uint8_t *img, double fx0, double fy0, double fx1, double f
     }
 }
 
-static void draw_text(uint8_t *img, double x, double y, const char *text, int anchor, const uint8_t c[3])
+/* The labels, kept while the lines are drawn pixel by pixel and then laid
+ * out by pango over them (at most one per rung, axis tick and legend line). */
+enum { PLOT_LABELS_MAX = 128 };
+typedef struct plot_label {
+    double x, y;              /* y is the text's top */
+    cdl_text_align align;
+    uint8_t colour[3];
+    char text[96];
+} plot_label;
+typedef struct plot_labels {
+    plot_label item[PLOT_LABELS_MAX];
+    int count;
+} plot_labels;
+
+static void draw_text(plot_labels *labels, double x, double y, const char *text, cdl_text_align align,
+                      const uint8_t c[3])
 {
-    /* anchor: 0 left, 1 centre, 2 right of x; y is the text's top */
-    int w = cdl_bitmap_font_text_width(text, 1);
-    int left = (int)lround(x) - (anchor == 1 ? w / 2 : anchor == 2 ? w : 0);
-    cdl_bitmap_font_draw_text(img, PLOT_WIDTH, PLOT_HEIGHT, left, (int)lround(y), text, 1, c);
+    if (labels->count >= PLOT_LABELS_MAX) return;
+    plot_label *l = &labels->item[labels->count++];
+    l->x = x;
+    l->y = y;
+    l->align = align;
+    memcpy(l->colour, c, 3);
+    snprintf(l->text, sizeof l->text, "%s", text);
 }
 
-static void draw_png_axes(uint8_t *img, const plot_frame *f)
+static cdl_status put_labels(uint8_t *img, const plot_labels *labels, cdl_error *err)
+{
+    cdl_raster_canvas *canvas = NULL;
+    cdl_status st = cdl_raster_canvas_begin(img, PLOT_WIDTH, PLOT_HEIGHT, &canvas, err);
+    if (st != CDL_OK) return st;
+    for (int k = 0; k < labels->count; ++k) {
+        const plot_label *l = &labels->item[k];
+        cdl_text_style style = {.size = 10.0, .align = l->align};
+        cdl_raster_canvas_text(canvas, l->x, l->y - 2.0, l->text, &style, l->colour);
+    }
+    cdl_raster_canvas_end(canvas);
+    return CDL_OK;
+}
+
+static void draw_png_axes(uint8_t *img, plot_labels *labels, const plot_frame *f)
 {
     static const uint8_t black[3] = {0, 0, 0}, grey[3] = {221, 221, 221};
     char label[32];
@@ -218,20 +271,21 @@ static void draw_png_axes(uint8_t *img, const plot_frame *f)
         double x = plot_x(f, pow(10.0, k));
         draw_line(img, x, f->top, x, f->bottom, 1, 0, grey);
         snprintf(label, sizeof label, "%g", pow(10.0, k));
-        draw_text(img, x, f->bottom + 8, label, 1, black);
+        draw_text(labels, x, f->bottom + 8, label, CDL_TEXT_CENTRE, black);
     }
     for (int k = (int)f->y_lo; k <= (int)f->y_hi; ++k) {
         double y = plot_y(f, pow(10.0, k));
         draw_line(img, f->left, y, f->right, y, 1, 0, grey);
         snprintf(label, sizeof label, "%g", pow(10.0, k));
-        draw_text(img, f->left - 6, y - 3, label, 2, black);
+        draw_text(labels, f->left - 6, y - 3, label, CDL_TEXT_RIGHT, black);
     }
     draw_line(img, f->left, f->top, f->right, f->top, 1, 0, black);
     draw_line(img, f->left, f->bottom, f->right, f->bottom, 1, 0, black);
     draw_line(img, f->left, f->top, f->left, f->bottom, 1, 0, black);
     draw_line(img, f->right, f->top, f->right, f->bottom, 1, 0, black);
-    draw_text(img, 0.5 * (f->left + f->right), f->bottom + 30, "wall time of the whole solve (s)", 1, black);
-    draw_text(img, f->left, f->top - 16, "rms relative error of e against the reference (%)", 0, black);
+    draw_text(labels, 0.5 * (f->left + f->right), f->bottom + 30, "wall time of the whole solve (s)", CDL_TEXT_CENTRE,
+              black);
+    draw_text(labels, f->left, f->top - 16, "rms relative error of E against the reference (%)", CDL_TEXT_LEFT, black);
 }
 
 cdl_status cdl_bench_report_write_png(const char *path, const cdl_bench_row *rows, size_t count,
@@ -241,14 +295,19 @@ cdl_status cdl_bench_report_write_png(const char *path, const cdl_bench_row *row
     plot_frame f = frame_for(rows, count, floor_percent);
     uint8_t *img = malloc((size_t)PLOT_WIDTH * PLOT_HEIGHT * 3);
     if (!img) return cdl_error_out_of_memory(err);
+    plot_labels *labels = calloc(1, sizeof *labels);
+    if (!labels) {
+        free(img);
+        return cdl_error_out_of_memory(err);
+    }
     memset(img, 255, (size_t)PLOT_WIDTH * PLOT_HEIGHT * 3);
-    draw_png_axes(img, &f);
+    draw_png_axes(img, labels, &f);
     static const uint8_t floor_grey[3] = {85, 85, 85};
     double yf = plot_y(&f, floor_percent);
     char label[96];
     draw_line(img, f.left, yf, f.right, yf, 1, 6, floor_grey);
     snprintf(label, sizeof label, "reference error %.3g %%", floor_percent);
-    draw_text(img, f.left + 6, yf - 11, label, 0, floor_grey);
+    draw_text(labels, f.left + 6, yf - 11, label, CDL_TEXT_LEFT, floor_grey);
     const cdl_method methods[3] = {CDL_METHOD_DIRECT, CDL_METHOD_ICACHE, CDL_METHOD_PATHTRACE};
     int legend = 0;
     for (int m = 0; m < 3; ++m) {
@@ -258,23 +317,28 @@ cdl_status cdl_bench_report_write_png(const char *path, const cdl_bench_row *row
         int any = 0;
         for (size_t k = 0; k < count; ++k) {
             if (rows[k].skipped || rows[k].rung.method != methods[m]) continue;
-            double s, p;
+            double s, p, lo, hi;
             rung_point(&rows[k], floor_percent, &s, &p);
             double x = plot_x(&f, s), y = plot_y(&f, p);
             if (any) draw_line(img, px, py, x, y, 2, 0, c);
+            if (rung_bar(&rows[k], floor_percent, &lo, &hi))
+                draw_line(img, x, plot_y(&f, lo), x, plot_y(&f, hi), 1, 0, c);
             for (int dy = -3; dy <= 3; ++dy)
                 for (int dx = -3; dx <= 3; ++dx)
                     if (dx * dx + dy * dy <= 10) put_pixel(img, (int)lround(x) + dx, (int)lround(y) + dy, c);
             snprintf(label, sizeof label, "%s%s", rows[k].label, rows[k].below_reference ? " (<ref)" : "");
-            draw_text(img, x + 6, y - 12, label, 0, c);
+            draw_text(labels, x + 6, y - 12, label, CDL_TEXT_LEFT, c);
             px = x;
             py = y;
             any = 1;
         }
-        if (any) draw_text(img, 640, 45 + 14 * legend++, cdl_method_name(methods[m]), 0, c);
+        if (any) draw_text(labels, 640, 45 + 14 * legend++, cdl_method_name(methods[m]), CDL_TEXT_LEFT, c);
     }
-    cdl_status st = cdl_png_write_rgb(path, img, PLOT_WIDTH, PLOT_HEIGHT,
-                                      "candela bench: RMS relative error of E (%) against wall seconds, log-log", err);
+    cdl_status st = put_labels(img, labels, err);
+    if (st == CDL_OK)
+        st = cdl_png_write_rgb(path, img, PLOT_WIDTH, PLOT_HEIGHT,
+                               "candela bench: RMS relative error of E (%) against wall seconds, log-log", err);
+    free(labels);
     free(img);
     return st;
 }

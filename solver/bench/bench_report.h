@@ -3,15 +3,17 @@
  * bench.csv: a header line
  *   label,method,quality,target_error,seconds,rays,records,rms_rel_error,max_rel_error,within_2_sigma
  * then one row a measured rung (skipped rungs are left out: every field
- * parses as a number past the third column). Errors and within_2_sigma are
- * fractions; target_error, errors and shares with 6 significant digits,
- * seconds with 3 decimals. A rung below what the reference resolves keeps
- * its figure here (the command's table flags it).
+ * past the third column parses as a number, but for rms_rel_error of a
+ * rung below what the reference resolves, which is "<ref" in place of a
+ * figure that would say little). Errors and within_2_sigma are fractions;
+ * target_error, errors and shares with 6 significant digits, seconds with
+ * 3 decimals.
  *
  * bench.svg (and bench.png): RMS relative error (%) against wall seconds, both axes
  * logarithmic with decade ticks, one polyline per method through its
- * rungs (each labelled), and the reference's own stated RMS as a dashed
- * horizontal floor. Both files are written atomically (atomic_file.h).
+ * rungs (each labelled, with a bar of +- the RMS's standard error when
+ * the reference is a sample of the points), and the reference's own
+ * stated RMS as a dashed horizontal floor. Both files are written atomically (atomic_file.h).
  */
 #ifndef CANDELA_SOLVER_BENCH_REPORT_H
 #define CANDELA_SOLVER_BENCH_REPORT_H
@@ -27,8 +29,8 @@ cdl_status cdl_bench_report_write_csv(const char *path, const cdl_bench_row *row
 cdl_status cdl_bench_report_write_svg(const char *path, const cdl_bench_row *rows, size_t count,
                                       double reference_rms, cdl_error *err);
 
-/* The same plot as bench.png (760 x 500, drawn with bitmap_font.h: the
- * y axis's title stands above the axis, in lower case). */
+/* The same plot as bench.png (760 x 500; lines drawn pixel by pixel, text
+ * by pango, graphics/raster_canvas.h; the y axis's title stands above the axis). */
 cdl_status cdl_bench_report_write_png(const char *path, const cdl_bench_row *rows, size_t count,
                                       double reference_rms, cdl_error *err);
 

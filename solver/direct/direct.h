@@ -87,11 +87,12 @@ typedef enum cdl_direct_route {
     CDL_ROUTE_FULL_VIEW,              /* nothing in the way: the closed form */
     CDL_ROUTE_VISIBLE_POLYGON,        /* exact: the visible polygon past planar occluders */
     CDL_ROUTE_SKY_REGION,             /* an image or overcast sky sampled within its visible polygon */
+    CDL_ROUTE_SKY_SUN,                /* as SKY_REGION, the sky's brightest pixels (a sun) exact over it */
     CDL_ROUTE_TOO_MANY,               /* sampled: more than CDL_EXACT_ROUTE_MAX_OCCLUDERS occluders */
     CDL_ROUTE_CURVED_OCCLUDER,        /* sampled: a sphere or a disk may be in the way */
     CDL_ROUTE_CURVED_EMITTER,         /* sampled: a disk, sphere or non-planar emitter */
     CDL_ROUTE_TOO_COMPLEX,            /* sampled: the visible part had too many pieces */
-    CDL_ROUTE_SKY_PEAK,               /* sampled: a sky far brighter in spots (a sun) over the visible part */
+    CDL_ROUTE_SKY_PEAK,               /* sampled: a sky far brighter in too many pixels over the visible part */
     CDL_ROUTE_DISABLED,               /* sampled: the context asked for it (no_exact_route) */
     CDL_ROUTE_COUNT
 } cdl_direct_route;
@@ -197,12 +198,13 @@ int cdl_direct_facing_direction(cdl_vec3 n, cdl_vec3 *facing);
 
 /* Cylindrical and semicylindrical illuminance (lux) at p from the delta
  * lights among `active` (NULL: all), each shadowed as for E (n: the
- * point's normal, for its rays). Lights of other strategies are skipped:
- * the caller refuses these outputs when such lights are present. Either
- * output may be NULL. */
+ * point's normal, for its rays). on_surface: p lies on a surface, which
+ * hides every light behind n. Lights of other strategies are skipped (the
+ * caller samples them: transport/vertical_sampled.h). Either output may
+ * be NULL. */
 void cdl_direct_vertical_point(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
                                const uint32_t *active, size_t active_count, cdl_vec3 p, cdl_vec3 n, cdl_vec3 facing,
-                               double *Ez, double *Esz, cdl_direct_sample_stats *stats);
+                               int on_surface, double *Ez, double *Esz, cdl_direct_sample_stats *stats);
 
 /* Cosine-weighted unoccluded fraction of the hemisphere about n at p. */
 double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,

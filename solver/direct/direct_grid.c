@@ -71,7 +71,8 @@ static cdl_status solve_chunk(void *shared, void *local, size_t start, size_t en
             cdl_vec3 facing = cdl_vec3_make(1, 0, 0);
             cdl_direct_facing_direction(grid->normals[i], &facing);
             cdl_direct_vertical_point(job->ctx, job->strategies, w->active, active, at[i - start], grid->normals[i],
-                                      facing, v->Ez ? &v->Ez[i] : NULL, v->Esz ? &v->Esz[i] : NULL, &w->stats);
+                                      facing, v->on_surface && v->on_surface[i], v->Ez ? &v->Ez[i] : NULL,
+                                      v->Esz ? &v->Esz[i] : NULL, &w->stats);
         }
     return CDL_OK;
 }

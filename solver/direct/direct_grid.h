@@ -24,6 +24,7 @@ uint64_t cdl_direct_point_stream(size_t grid_index, size_t index);
  * horizontal part (cdl_direct_facing_direction; the caller checks there is one). */
 typedef struct cdl_direct_vertical_out {
     double *Ez, *Esz;
+    const unsigned char *on_surface;  /* per point, 1 where it lies on a surface (NULL: none does) */
 } cdl_direct_vertical_out;
 
 /* Direct illuminance (lux) at every point of `grid`, the variance of each

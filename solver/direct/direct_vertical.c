@@ -19,9 +19,11 @@
  * (sin theta = 0) adds nothing to either.
  *
  * Delta lights only (point, spot, goniometric, directional), each with the
- * shadow ray E uses when its strategy has one; the solve refuses these
- * outputs where extended emitters or interreflection would have to be
- * integrated over directions (not built yet), rather than leave them out.
+ * shadow ray E uses when its strategy has one; extended emitters, skies and
+ * interreflected light are sampled over directions (transport/
+ * vertical_sampled.c). A point lying on a surface (a floor grid) sees
+ * nothing behind it: that surface hides the lights below its plane, which
+ * the plan's strategy, made for E's hemisphere, does not shadow-test.
  */
 #include "solver/direct/direct.h"
 #include "solver/direct/direct_internal.h"
@@ -51,7 +53,7 @@ int cdl_direct_facing_direction(cdl_vec3 n, cdl_vec3 *facing)
 
 void cdl_direct_vertical_point(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
                                const uint32_t *active, size_t active_count, cdl_vec3 p, cdl_vec3 n, cdl_vec3 facing,
-                               double *Ez_out, double *Esz_out, cdl_direct_sample_stats *stats)
+                               int on_surface, double *Ez_out, double *Esz_out, cdl_direct_sample_stats *stats)
 {
     size_t count = active ? active_count : ctx->light_count;
     double Ez = 0.0, Esz = 0.0;
@@ -66,6 +68,7 @@ void cdl_direct_vertical_point(const cdl_direct_context *ctx, const cdl_light_st
         cdl_delta_light d;
         cdl_emitter_eval_delta(e, p, cdl_vec3_make(0, 0, 1), &d);
         if (!(cdl_vec3_dot(d.to_light, d.to_light) > 0.5)) continue;
+        if (on_surface && !(cdl_vec3_dot(d.to_light, n) > 0.0)) continue;
         if (!cdl_emitter_eval_delta(e, p, d.to_light, &d) || !(d.E.lx > 0.0)) continue;
         if (st == CDL_STRATEGY_DELTA_SHADOWED && cdl_direct_shadowed(ctx, p, n, d.to_light, d.distance, stats))
             continue;

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "lights/environment_peaks.h"
 #include "lights/projected_solid_angle.h"
 
 typedef struct region_triangle {
@@ -21,6 +22,10 @@ struct cdl_sky_region {
     size_t count;
     double psa;
     double L_lo, L_hi, L_ref;
+    const cdl_emitter *sky;
+    double cut;            /* pixels brighter than this are summed exactly */
+    cdl_env_peaks bright;  /* their sums over R */
+    int too_bright;
 };
 
 void cdl_sky_region_release(cdl_sky_region *r)
@@ -38,7 +43,8 @@ static cdl_vec3 face_point(const cdl_visible_face *f, const double *xy)
 }
 
 cdl_status cdl_sky_region_create(const cdl_visible_face *faces, int face_count, cdl_vec3 p, cdl_vec3 n,
-                                 const cdl_emitter *sky, cdl_sky_region **out, cdl_error *err)
+                                 const cdl_emitter *sky, double L_cut, int max_bright, cdl_sky_region **out,
+                                 cdl_error *err)
 {
     *out = NULL;
     size_t cap = 0;
@@ -52,6 +58,8 @@ cdl_status cdl_sky_region_create(const cdl_visible_face *faces, int face_count, 
     }
     r->p = p;
     r->n = n;
+    r->sky = sky;
+    r->cut = L_cut;
     r->L_lo = INFINITY;
     r->L_hi = 0.0;
     size_t largest = 0;
@@ -81,14 +89,21 @@ cdl_status cdl_sky_region_create(const cdl_visible_face *faces, int face_count, 
                 r->psa += t.psa;
                 t.cdf = r->psa;
                 piece_psa += t.psa;
-                if (t.psa > r->tri[largest].psa || r->count == 0) largest = r->count;
+                if (r->count == 0 || t.psa > r->tri[largest].psa) largest = r->count;
                 r->tri[r->count++] = t;
             }
             if (!(piece_psa > 0.0)) continue;
             cdl_luminance lo, hi;
             if (cdl_emitter_luminance_bounds(sky, dirs, piece->count, &lo, &hi)) {
-                r->L_lo = fmin(r->L_lo, lo.cd_m2);
-                r->L_hi = fmax(r->L_hi, hi.cd_m2);
+                /* L' is at most the cut (brighter pixels stand at L_ref,
+                 * which lies within these bounds) */
+                /* (no pixel above the cut where the bound is below it) */
+                double rest_hi = L_cut;
+                if (hi.cd_m2 > L_cut && !r->too_bright &&
+                    !cdl_env_peaks_add(sky, dirs, piece->count, n, L_cut, max_bright, &r->bright, &rest_hi))
+                    r->too_bright = 1;
+                r->L_lo = fmin(r->L_lo, fmin(lo.cd_m2, L_cut));
+                r->L_hi = fmax(r->L_hi, fmin(hi.cd_m2, rest_hi));
             } else {
                 r->L_lo = 0.0;
                 r->L_hi = INFINITY;
@@ -100,8 +115,8 @@ cdl_status cdl_sky_region_create(const cdl_visible_face *faces, int face_count, 
     } else {
         const region_triangle *t = &r->tri[largest];
         cdl_vec3 mid = cdl_vec3_add(t->a, cdl_vec3_scale(cdl_vec3_add(t->ab, t->ac), 1.0 / 3.0));
-        double pdf;
-        r->L_ref = cdl_emitter_radiance(sky, p, n, cdl_vec3_normalize(cdl_vec3_sub(mid, p)), &pdf).cd_m2;
+        r->L_ref = r->L_hi; /* what a middle in a bright pixel stands for */
+        r->L_ref = cdl_sky_region_luminance(r, cdl_vec3_normalize(cdl_vec3_sub(mid, p)));
         /* A reference outside the bounds (a pixel at the edge of the
          * region) is still exact as a control variate; keep it within
          * them so that a region of one luminance is exact. */
@@ -109,6 +124,29 @@ cdl_status cdl_sky_region_create(const cdl_visible_face *faces, int face_count, 
     }
     *out = r;
     return CDL_OK;
+}
+
+int cdl_sky_region_too_bright(const cdl_sky_region *r)
+{
+    return r->too_bright;
+}
+
+double cdl_sky_region_bright_solid_angle(const cdl_sky_region *r)
+{
+    return r->bright.Q;
+}
+
+double cdl_sky_region_exact_part(const cdl_sky_region *r)
+{
+    /* L_ref Omega_p(R) + sum_b (L_b - L_ref) Q_b(R) (the header) */
+    return r->L_ref * r->psa + r->bright.LQ - r->L_ref * r->bright.Q;
+}
+
+double cdl_sky_region_luminance(const cdl_sky_region *r, cdl_vec3 w)
+{
+    double pdf;
+    double L = cdl_emitter_radiance(r->sky, r->p, r->n, w, &pdf).cd_m2;
+    return L > r->cut ? r->L_ref : L;
 }
 
 double cdl_sky_region_projected_solid_angle(const cdl_sky_region *r)

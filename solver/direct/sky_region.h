@@ -23,6 +23,15 @@
  * the apex (dA = d^2 dw / cos alpha, cos alpha = h / d). Its weight
  * cos(theta) / pdf varies across a triangle only as cos(theta) h / d^3
  * does, about its mean Omega_p,k / A_k.
+ *
+ * A sun: pixels of an image sky brighter than a cut L_c (the caller's:
+ * several times the sky's typical luminance) are taken out of the sampled
+ * integral and summed exactly over their part of R (lights/
+ * environment_peaks.h):
+ *     E = L_ref Omega_p(R) + sum_b (L_b - L_ref) Q_b(R) + int_R (L' - L_ref) cos dw,
+ * L' the sky with those pixels at L_ref (cdl_sky_region_luminance), so
+ * the sampled part sees the sky without its sun and its bounds are those
+ * of L' (at most L_c).
  */
 #ifndef CANDELA_SOLVER_SKY_REGION_H
 #define CANDELA_SOLVER_SKY_REGION_H
@@ -35,16 +44,34 @@ typedef struct cdl_sky_region cdl_sky_region;
 
 /* The region of faces[0 .. face_count) (their pieces, as left by
  * subtraction) seen from p with unit normal n, under `sky` (an
- * environment). CDL_ERR_OUT_OF_MEMORY on failure. A region that holds
- * nothing has Omega_p = 0 and must not be sampled. */
+ * environment, borrowed: it must outlive the region). Pixels of an image
+ * sky brighter than L_cut (cd/m^2; INFINITY: none) are summed exactly,
+ * at most max_bright of them over the region's pieces (beyond that
+ * cdl_sky_region_too_bright says so and the region must not be used).
+ * CDL_ERR_OUT_OF_MEMORY on failure. A region that holds nothing has
+ * Omega_p = 0 and must not be sampled. */
 cdl_status cdl_sky_region_create(const cdl_visible_face *faces, int face_count, cdl_vec3 p, cdl_vec3 n,
-                                 const cdl_emitter *sky, cdl_sky_region **out, cdl_error *err);
+                                 const cdl_emitter *sky, double L_cut, int max_bright, cdl_sky_region **out,
+                                 cdl_error *err);
 void cdl_sky_region_release(cdl_sky_region *region);
 
 /* Omega_p(R), sr. */
 double cdl_sky_region_projected_solid_angle(const cdl_sky_region *region);
 
-/* Bounds on the sky's luminance over R, cd/m^2. */
+/* 1 when more than max_bright pixels above the cut were met. */
+int cdl_sky_region_too_bright(const cdl_sky_region *region);
+
+/* Q of the bright pixels' part of R, sr: > 0 when R sees some of them. */
+double cdl_sky_region_bright_solid_angle(const cdl_sky_region *region);
+
+/* The exact part of E: L_ref Omega_p(R) + sum_b (L_b - L_ref) Q_b(R), lx. */
+double cdl_sky_region_exact_part(const cdl_sky_region *region);
+
+/* L'(w): the sky's luminance towards w (cd/m^2), L_ref where its pixel is
+ * brighter than the cut. */
+double cdl_sky_region_luminance(const cdl_sky_region *region, cdl_vec3 w);
+
+/* Bounds on L' over R, cd/m^2. */
 void cdl_sky_region_luminance_bounds(const cdl_sky_region *region, double *lo, double *hi);
 
 /* L_ref: the sky's luminance towards the middle of R's largest triangle. */

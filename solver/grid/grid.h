@@ -72,6 +72,13 @@ struct cdl_occluder_index;
  * no message is set. Thread-safe for distinct outputs. */
 cdl_status cdl_grid_surface_reflectance(const cdl_grid *grid, const struct cdl_scene_geometry *geometry,
                                         const struct cdl_occluder_index *occluders, double *rho, size_t *missing);
+/* Which points of the grid lie on a surface (either side; within a few of
+ * Embree's float resolutions, its plane across the point's normal), as
+ * on_surface[i] = 1 (else 0), into an array of grid->count owned by the
+ * caller; returns how many do. There the surface hides every direction
+ * behind the normal. Thread-safe for distinct outputs; no errors. */
+size_t cdl_grid_surface_mask(const cdl_grid *grid, const struct cdl_scene_geometry *geometry,
+                             const struct cdl_occluder_index *occluders, unsigned char *on_surface);
 void cdl_grid_release(cdl_grid *grid);
 
 #endif

@@ -7,6 +7,11 @@
  * a two-sided surface, or a one-sided one whose front faces that way. The
  * first such surface found gives the point's reflectance (for a box, its
  * face's).
+ *
+ * The same probe, taking a surface whichever side reflects, says which
+ * points lie on a surface at all: there the surface hides the half-space
+ * behind the point's normal, which matters to the outputs that look all
+ * round (cylindrical and semicylindrical illuminance).
  */
 #include "solver/grid/grid.h"
 
@@ -22,6 +27,7 @@ typedef struct surface_probe {
     const cdl_scene_geometry *geometry;
     cdl_vec3 p, n;
     double tol;
+    int any_side;      /* 1: any surface through p across n, whichever side reflects */
     int found;
     double rho;
 } surface_probe;
@@ -64,9 +70,23 @@ static void visit_surface(void *user, const double *prim, int is_sphere, uint32_
     double along = cdl_vec3_dot(front, s->n);
     if (!(fabs(dist) <= s->tol) || !(fabs(along) >= PARALLEL_COS)) return;
     const cdl_geometry_piece *piece = cdl_scene_geometry_piece(s->geometry, owner);
-    if (!piece || (!piece->two_sided && along < 0.0)) return;
+    if (!piece || (!s->any_side && !piece->two_sided && along < 0.0)) return;
     s->found = 1;
     s->rho = piece->reflectance;
+}
+
+/* The first surface through point i of the grid across its normal. */
+static surface_probe probe_point(const cdl_grid *grid, size_t i, const cdl_scene_geometry *geometry,
+                                 const cdl_occluder_index *occluders, int any_side)
+{
+    cdl_vec3 p = grid->points[i];
+    surface_probe s = {geometry, p, grid->normals[i], 0.0, any_side, 0, 0.0};
+    if (geometry && occluders) {
+        s.tol = RESOLUTIONS * cdl_scene_geometry_resolution(geometry, p);
+        cdl_vec3 h = cdl_vec3_make(s.tol, s.tol, s.tol);
+        cdl_occluder_index_visit_box(occluders, cdl_vec3_sub(p, h), cdl_vec3_add(p, h), visit_surface, &s);
+    }
+    return s;
 }
 
 cdl_status cdl_grid_surface_reflectance(const cdl_grid *grid, const cdl_scene_geometry *geometry,
@@ -74,13 +94,7 @@ cdl_status cdl_grid_surface_reflectance(const cdl_grid *grid, const cdl_scene_ge
 {
     *missing = SIZE_MAX;
     for (size_t i = 0; i < grid->count; ++i) {
-        cdl_vec3 p = grid->points[i];
-        surface_probe s = {geometry, p, grid->normals[i], 0.0, 0, 0.0};
-        if (geometry && occluders) {
-            s.tol = RESOLUTIONS * cdl_scene_geometry_resolution(geometry, p);
-            cdl_vec3 h = cdl_vec3_make(s.tol, s.tol, s.tol);
-            cdl_occluder_index_visit_box(occluders, cdl_vec3_sub(p, h), cdl_vec3_add(p, h), visit_surface, &s);
-        }
+        surface_probe s = probe_point(grid, i, geometry, occluders, 0);
         if (!s.found) {
             *missing = i;
             return CDL_ERR_INPUT;
@@ -88,4 +102,15 @@ cdl_status cdl_grid_surface_reflectance(const cdl_grid *grid, const cdl_scene_ge
         rho[i] = s.rho;
     }
     return CDL_OK;
+}
+
+size_t cdl_grid_surface_mask(const cdl_grid *grid, const cdl_scene_geometry *geometry,
+                             const cdl_occluder_index *occluders, unsigned char *on_surface)
+{
+    size_t count = 0;
+    for (size_t i = 0; i < grid->count; ++i) {
+        on_surface[i] = (unsigned char)probe_point(grid, i, geometry, occluders, 1).found;
+        count += on_surface[i];
+    }
+    return count;
 }

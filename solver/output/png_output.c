@@ -9,8 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "solver/output/bitmap_font.h"
+#include "graphics/raster_canvas.h"
 #include "solver/output/display_transform.h"
+#include "solver/output/false_colour.h"
 #include "solver/output/png_write.h"
 
 /* Layout, in image pixels. */
@@ -23,19 +24,33 @@ enum {
     BAR_MAX_HEIGHT = 600,
     TICK_LENGTH = 6,
     TICK_TO_LABEL = 4,
-    FONT_SCALE = 2,
-    LABEL_HEIGHT = CDL_BITMAP_FONT_GLYPH_HEIGHT * FONT_SCALE,
+    FONT_PX = 12,          /* labels' em size (pango, DejaVu Sans) */
+    LABEL_HEIGHT = 14,     /* the height of a line of FONT_PX text */
     LABEL_SPACING = LABEL_HEIGHT + 10, /* least distance between two labelled ticks */
     TITLE_GAP = 8,                     /* between the lines of text above and below the map */
     MAX_IMAGE_PIXELS = 1 << 26        /* 64 Mpixel: a larger map is a caller's mistake */
 };
 
 static const uint8_t white[3] = {255, 255, 255};
+static const cdl_text_style label_style = {.size = FONT_PX};
 static const uint8_t black[3] = {0, 0, 0};
 
 static int clamp_int(int v, int lo, int hi)
 {
     return v < lo ? lo : v > hi ? hi : v;
+}
+
+/* Width in pixels of a label, rounded up. */
+static int text_width(const char *text)
+{
+    double w = 0.0;
+    cdl_text_measure_alone(text, &label_style, &w, NULL);
+    return (int)ceil(w);
+}
+
+static void put_text(cdl_raster_canvas *c, int x, int y, const char *text)
+{
+    cdl_raster_canvas_text(c, x, y, text, &label_style, black);
 }
 
 /* The legend's label of a linear scale's value (the bottom one "<=" when clipped). */
@@ -54,14 +69,14 @@ static int max_label_width(const cdl_lux_scale *scale)
         long ticks = lround((scale->hi.lx - scale->lo.lx) / scale->tick_lx);
         for (long m = 0; m <= ticks; ++m) {
             linear_label(scale, scale->lo.lx + (double)m * scale->tick_lx, m == 0, label, sizeof label);
-            int w = cdl_bitmap_font_text_width(label, FONT_SCALE);
+            int w = text_width(label);
             if (w > widest) widest = w;
         }
         return widest;
     }
     for (int k = scale->lo_step; k <= scale->hi_step; ++k) {
         cdl_lux_scale_step_label(k, label, sizeof label);
-        int w = cdl_bitmap_font_text_width(label, FONT_SCALE);
+        int w = text_width(label);
         if (w > widest) widest = w;
     }
     return widest;
@@ -136,7 +151,7 @@ static void measure_tick(void *user, double along, double value)
     widest_tick *w = user;
     char label[32];
     tick_label(value, label, sizeof label);
-    int width = cdl_bitmap_font_text_width(label, FONT_SCALE);
+    int width = text_width(label);
     if (width > w->width) w->width = width;
 }
 
@@ -174,9 +189,8 @@ void cdl_grid_result_png_layout(const cdl_grid_result *result, cdl_png_layout *l
     /* The title may be wider than the map and legend. */
     char title[256];
     snprintf(title, sizeof title, "%s", result->name ? result->name : "");
-    int title_w = MARGIN + cdl_bitmap_font_text_width(title, FONT_SCALE) + MARGIN;
-    int stats_w = MARGIN + cdl_bitmap_font_text_width("Em 0000000 lx  Emin 0000000 lx  Emax 0000000 lx  U0 0.000",
-                                                      FONT_SCALE) + MARGIN;
+    int title_w = MARGIN + text_width(title) + MARGIN;
+    int stats_w = MARGIN + text_width("Em 0000000 lx  Emin 0000000 lx  Emax 0000000 lx  U0 0.000") + MARGIN;
     if (title_w > layout->width) layout->width = title_w;
     if (stats_w > layout->width) layout->width = stats_w;
 }
@@ -187,28 +201,6 @@ static void fill_rect(uint8_t *img, int width, int x0, int y0, int w, int h, con
         for (int x = x0; x < x0 + w; ++x) memcpy(img + 3 * ((size_t)y * (size_t)width + (size_t)x), colour, 3);
 }
 
-/* Display-referred float in [0, 1] to an 8-bit code value, rounded to nearest. */
-static uint8_t to_8bit(float v)
-{
-    if (!(v > 0.0f)) return 0;
-    if (v >= 1.0f) return 255;
-    return (uint8_t)(v * 255.0f + 0.5f);
-}
-
-/* Colours of n positions t in [0, 1] through the false-colour view, as 8-bit RGB. */
-static cdl_status false_colours(const cdl_display_transform *view, const double *t, size_t n, uint8_t *out,
-                                cdl_error *err)
-{
-    float *rgb = malloc((n ? n : 1) * 3 * sizeof(float));
-    if (!rgb) return cdl_error_out_of_memory(err);
-    /* The view's input is a grey value; its 1D LUT gives each channel its own ramp. */
-    for (size_t i = 0; i < n; ++i) rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = (float)t[i];
-    cdl_status st = cdl_display_transform_apply(view, rgb, n, err);
-    for (size_t i = 0; st == CDL_OK && i < 3 * n; ++i) out[i] = to_8bit(rgb[i]);
-    free(rgb);
-    return st;
-}
-
 /* Row of the bar where position t sits (top = 1, bottom = 0). */
 static int bar_row(const cdl_png_layout *L, double t)
 {
@@ -217,20 +209,20 @@ static int bar_row(const cdl_png_layout *L, double t)
 
 /* Ticks at 1-2-5 values, the ends first, then decades, fives and twos, each
  * kept only if its label clears those already placed. */
-static void draw_linear_ticks(uint8_t *img, const cdl_png_layout *L);
+static void draw_linear_ticks(cdl_raster_canvas *img, const cdl_png_layout *L);
 
 /* A tick at row y of the bar with its label, unless the label would come
  * closer than LABEL_SPACING to one already placed (placed_y[0 .. *placed)). */
-static void place_tick(uint8_t *img, const cdl_png_layout *L, int y, const char *label, int *placed_y, int *placed)
+static void place_tick(cdl_raster_canvas *img, const cdl_png_layout *L, int y, const char *label, int *placed_y, int *placed)
 {
     for (int j = 0; j < *placed; ++j)
         if (abs(placed_y[j] - y) < LABEL_SPACING) return;
     placed_y[(*placed)++] = y;
-    fill_rect(img, L->width, L->bar_x + L->bar_width + 1, y, TICK_LENGTH, 1, black);
-    cdl_bitmap_font_draw_text(img, L->width, L->height, L->label_x, y - LABEL_HEIGHT / 2, label, FONT_SCALE, black);
+    cdl_raster_canvas_fill_rect(img, L->bar_x + L->bar_width + 1, y, TICK_LENGTH, 1, black);
+    put_text(img, L->label_x, y - LABEL_HEIGHT / 2, label);
 }
 
-static void draw_ticks(uint8_t *img, const cdl_png_layout *L)
+static void draw_ticks(cdl_raster_canvas *img, const cdl_png_layout *L)
 {
     if (L->scale.kind == CDL_LUX_SCALE_LINEAR) {
         draw_linear_ticks(img, L);
@@ -256,7 +248,7 @@ static void draw_ticks(uint8_t *img, const cdl_png_layout *L)
 
 /* Linear ticks at multiples of the scale's tick: the ends first, then the
  * others from the bottom, each kept if its label clears those placed. */
-static void draw_linear_ticks(uint8_t *img, const cdl_png_layout *L)
+static void draw_linear_ticks(cdl_raster_canvas *img, const cdl_png_layout *L)
 {
     long count = lround((L->scale.hi.lx - L->scale.lo.lx) / L->scale.tick_lx);
     int placed_y[64];
@@ -276,7 +268,7 @@ static void draw_linear_ticks(uint8_t *img, const cdl_png_layout *L)
 /* ---- title and axes ------------------------------------------------------------- */
 
 typedef struct axis_draw {
-    uint8_t *img;
+    cdl_raster_canvas *img;
     const cdl_png_layout *L;
     const cdl_grid *grid;
     int horizontal;
@@ -288,51 +280,47 @@ static void draw_tick(void *user, double along, double value)
     const cdl_png_layout *L = a->L;
     char label[32];
     tick_label(value, label, sizeof label);
-    int w = cdl_bitmap_font_text_width(label, FONT_SCALE);
+    int w = text_width(label);
     int map_w = a->grid->raster_width * L->cell, map_h = a->grid->raster_height * L->cell;
     if (a->horizontal) {
         int x = L->map_x + (int)lround(along / a->grid->pixel_width_m * L->cell);
         if (x > L->map_x + map_w) x = L->map_x + map_w;
-        fill_rect(a->img, L->width, x, L->map_y + map_h, 1, TICK_LENGTH, black);
+        cdl_raster_canvas_fill_rect(a->img, x, L->map_y + map_h, 1, TICK_LENGTH, black);
         int lx = clamp_int(x - w / 2, 0, L->width - w);
-        cdl_bitmap_font_draw_text(a->img, L->width, L->height, lx, L->map_y + map_h + TICK_LENGTH + TICK_TO_LABEL,
-                                  label, FONT_SCALE, black);
+        put_text(a->img, lx, L->map_y + map_h + TICK_LENGTH + TICK_TO_LABEL, label);
     } else {
         int y = L->map_y + map_h - (int)lround(along / a->grid->pixel_height_m * L->cell);
         if (y < L->map_y) y = L->map_y;
-        fill_rect(a->img, L->width, L->map_x - TICK_LENGTH, y, TICK_LENGTH, 1, black);
-        cdl_bitmap_font_draw_text(a->img, L->width, L->height, L->map_x - TICK_LENGTH - TICK_TO_LABEL - w,
-                                  clamp_int(y - LABEL_HEIGHT / 2, 0, L->height - LABEL_HEIGHT), label, FONT_SCALE,
-                                  black);
+        cdl_raster_canvas_fill_rect(a->img, L->map_x - TICK_LENGTH, y, TICK_LENGTH, 1, black);
+        put_text(a->img, L->map_x - TICK_LENGTH - TICK_TO_LABEL - w,
+                 clamp_int(y - LABEL_HEIGHT / 2, 0, L->height - LABEL_HEIGHT), label);
     }
 }
 
-static void draw_title_and_axes(const cdl_grid_result *result, const cdl_png_layout *L, uint8_t *img)
+static void draw_title_and_axes(const cdl_grid_result *result, const cdl_png_layout *L, cdl_raster_canvas *img)
 {
     const cdl_grid *grid = result->grid;
     cdl_grid_stats st;
     cdl_grid_result_stats(result, &st);
     char line[256];
     snprintf(line, sizeof line, "%s", result->name ? result->name : "");
-    cdl_bitmap_font_draw_text(img, L->width, L->height, MARGIN, L->title_y, line, FONT_SCALE, black);
+    put_text(img, MARGIN, L->title_y, line);
     snprintf(line, sizeof line, "Em %.4g lx  Emin %.4g lx  Emax %.4g lx  U0 %.3f", st.E_avg_lx, st.E_min_lx,
              st.E_max_lx, st.U0);
-    cdl_bitmap_font_draw_text(img, L->width, L->height, MARGIN, L->stats_y, line, FONT_SCALE, black);
+    put_text(img, MARGIN, L->stats_y, line);
     map_axis h, v;
     axes_of(grid, L, &h, &v);
     int map_w = grid->raster_width * L->cell, map_h = grid->raster_height * L->cell;
     /* The axes' lines, then their ticks and names. */
-    fill_rect(img, L->width, L->map_x - 1, L->map_y, 1, map_h + 1, black);
-    fill_rect(img, L->width, L->map_x - 1, L->map_y + map_h, map_w + 1, 1, black);
+    cdl_raster_canvas_fill_rect(img, L->map_x - 1, L->map_y, 1, map_h + 1, black);
+    cdl_raster_canvas_fill_rect(img, L->map_x - 1, L->map_y + map_h, map_w + 1, 1, black);
     axis_draw hd = {img, L, grid, 1}, vd = {img, L, grid, 0};
     axis_ticks(&h, draw_tick, &hd);
     axis_ticks(&v, draw_tick, &vd);
-    int name_w = cdl_bitmap_font_text_width(h.name, FONT_SCALE);
-    cdl_bitmap_font_draw_text(img, L->width, L->height, L->map_x + map_w - name_w,
-                              L->map_y + map_h + TICK_LENGTH + TICK_TO_LABEL + LABEL_HEIGHT + TITLE_GAP, h.name,
-                              FONT_SCALE, black);
-    cdl_bitmap_font_draw_text(img, L->width, L->height, MARGIN, L->map_y - LABEL_HEIGHT / 2 - TITLE_GAP - LABEL_HEIGHT,
-                              v.name, FONT_SCALE, black);
+    int name_w = text_width(h.name);
+    put_text(img, L->map_x + map_w - name_w,
+             L->map_y + map_h + TICK_LENGTH + TICK_TO_LABEL + LABEL_HEIGHT + TITLE_GAP, h.name);
+    put_text(img, MARGIN, L->map_y - LABEL_HEIGHT / 2 - TITLE_GAP - LABEL_HEIGHT, v.name);
 }
 
 /* Map and legend into img (L->width x L->height, RGB8). */
@@ -351,7 +339,7 @@ static cdl_status render(const cdl_grid_result *result, const cdl_png_layout *L,
     }
     for (size_t i = 0; i < n; ++i) t[i] = cdl_lux_scale_position(&L->scale, cdl_lux(result->E[i]));
     for (size_t r = 0; r < bar_n; ++r) t[n + r] = bar_n > 1 ? 1.0 - (double)r / (double)(bar_n - 1) : 1.0;
-    cdl_status st = false_colours(view, t, n + bar_n, colour, err);
+    cdl_status st = cdl_false_colour_rgb8(view, t, n + bar_n, colour, err);
     if (st == CDL_OK) {
         fill_rect(img, L->width, 0, 0, L->width, L->height, white);
         for (int r = 0; r < grid->raster_height; ++r)
@@ -364,8 +352,14 @@ static cdl_status render(const cdl_grid_result *result, const cdl_png_layout *L,
         fill_rect(img, L->width, L->bar_x - 1, L->bar_y - 1, L->bar_width + 2, L->bar_height + 2, black);
         for (size_t r = 0; r < bar_n; ++r)
             fill_rect(img, L->width, L->bar_x, L->bar_y + (int)r, L->bar_width, 1, colour + 3 * (n + r));
-        draw_ticks(img, L);
-        draw_title_and_axes(result, L, img);
+        /* Ticks, labels and axes through cairo (text laid out by pango). */
+        cdl_raster_canvas *canvas = NULL;
+        st = cdl_raster_canvas_begin(img, L->width, L->height, &canvas, err);
+        if (st == CDL_OK) {
+            draw_ticks(canvas, L);
+            draw_title_and_axes(result, L, canvas);
+            cdl_raster_canvas_end(canvas);
+        }
     }
     free(t);
     free(colour);

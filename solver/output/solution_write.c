@@ -1,4 +1,5 @@
 /* solution_write.c - the files of a solve: per grid CSV, EXR, PNG; summary.json. */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include "solver/output/solution_write.h"
 
 #include <cjson/cJSON.h>
@@ -99,6 +100,11 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
     if (!root) return cdl_error_out_of_memory(err);
     cJSON_AddStringToObject(root, "candela_version", CANDELA_VERSION);
     cJSON_AddStringToObject(root, "scene", scene->path);
+    /* The same file wherever the reader stands (`candela report` run from
+     * another folder finds the scene by it). */
+    char *absolute = realpath(scene->path, NULL);
+    if (absolute) cJSON_AddStringToObject(root, "scene_absolute_path", absolute);
+    free(absolute);
     cJSON *grids = cJSON_AddObjectToObject(root, "grids");
     for (size_t g = 0; g < sol->grid_count; ++g) {
         cJSON *o = cJSON_AddObjectToObject(grids, scene->grids[g].name);

@@ -178,6 +178,11 @@ typedef struct cdl_grid_spec {
     int want_cylindrical;                /* "cylindrical": mean vertical illuminance E_z (EN 12464-1) */
     int want_semicylindrical;            /* "semicylindrical": towards the point's normal, horizontal part */
     int want_luminance;                  /* "luminance": rho E / pi of the surface the grid lies on */
+    /* "requirements" (EN 12464-1 for a task area), which `candela report`
+     * checks: maintained illuminance in lux and uniformity Emin / Em;
+     * 0 when not given. */
+    double required_Em_lx;
+    double required_U0;
 } cdl_grid_spec;
 
 /* ---- solver settings ---------------------------------------------------- */

@@ -52,6 +52,7 @@ static const char *const document_keys[] = {"$schema", "version", "surfaces", "l
 static const char *const settings_keys[] = {"method", "quality", "target_error", "bounces", "seed", "threads",
                                             "direct_samples", "ao_samples", NULL};
 static const char *const point_keys[] = {"p", "n", NULL};
+static const char *const requirements_keys[] = {"Em_lx", "U0", NULL};
 
 
 static const char *const method_names[] = {"auto", "direct", "icache", "pathtrace", NULL};
@@ -397,9 +398,9 @@ static cdl_status read_luminaire_entry(const cdl_scene_parse *ctx, const cJSON *
 
 static const char *const grid_types[] = {"rect", "polygon", "points", NULL};
 static const char *const grid_keys[][LUMINAIRE_KEYS_MAX] = {
-    {"name", "type", "origin", "u", "v", "nu", "nv", "normal", "outputs", NULL},
-    {"name", "type", "vertices", "holes", "spacing", "normal", "outputs", NULL},
-    {"name", "type", "points", "outputs", NULL},
+    {"name", "type", "origin", "u", "v", "nu", "nv", "normal", "outputs", "requirements", NULL},
+    {"name", "type", "vertices", "holes", "spacing", "normal", "outputs", "requirements", NULL},
+    {"name", "type", "points", "outputs", "requirements", NULL},
 };
 
 static int grid_name_ok(const char *name)
@@ -468,6 +469,24 @@ static cdl_status read_grid_outputs(const cdl_scene_parse *ctx, const cJSON *nod
     return CDL_OK;
 }
 
+/* "requirements": {"Em_lx": 500, "U0": 0.6}, EN 12464-1's maintained
+ * illuminance and uniformity for the task area; at least one of them. */
+static cdl_status read_grid_requirements(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                         cdl_grid_spec *out)
+{
+    if (!node) return CDL_OK;
+    char p[CDL_SCENE_PATH_MAX];
+    if (cdl_scene_json_check_object(ctx, node, path, "requirements {\"Em_lx\": lux, \"U0\": Emin / Em}",
+                                    requirements_keys) != CDL_OK ||
+        cdl_scene_json_read_number(ctx, field(node, path, "Em_lx", p), p, CDL_RANGE_POSITIVE, 0, &out->required_Em_lx) !=
+            CDL_OK ||
+        cdl_scene_json_read_number(ctx, field(node, path, "U0", p), p, CDL_RANGE_UNIT_OPEN0, 0, &out->required_U0) !=
+            CDL_OK)
+        return CDL_ERR_INPUT;
+    if (!node->child) return cdl_scene_json_fail(ctx, path, "at least one of Em_lx and U0", node);
+    return CDL_OK;
+}
+
 static cdl_status read_grid(const cdl_scene_parse *ctx, const cJSON *node, const char *path, cdl_grid_spec *out)
 {
     char p[CDL_SCENE_PATH_MAX];
@@ -482,7 +501,8 @@ static cdl_status read_grid(const cdl_scene_parse *ctx, const cJSON *node, const
                                    "starting with '.' or '-')",
                                    name);
     if (cdl_scene_json_read_string(ctx, name, p, 1, &out->name) != CDL_OK ||
-        read_grid_outputs(ctx, field(node, path, "outputs", p), p, out) != CDL_OK)
+        read_grid_outputs(ctx, field(node, path, "outputs", p), p, out) != CDL_OK ||
+        read_grid_requirements(ctx, field(node, path, "requirements", p), p, out) != CDL_OK)
         return CDL_ERR_INPUT;
     switch (out->kind) {
     case CDL_GRID_RECT: {
@@ -774,6 +794,7 @@ void cdl_scene_keys_collect(cdl_scene_keys *out)
     out->sets[n++] = (cdl_scene_key_set){"solver", settings_keys};
     out->sets[n++] = (cdl_scene_key_set){"grid point", point_keys};
     out->sets[n++] = (cdl_scene_key_set){"array", cdl_scene_array_keys};
+    out->sets[n++] = (cdl_scene_key_set){"requirements", requirements_keys};
     for (int t = 0; luminaire_types[t]; ++t, ++n) {
         snprintf(out->names[n], sizeof out->names[n], "luminaire %s", luminaire_types[t]);
         out->sets[n] = (cdl_scene_key_set){out->names[n], luminaire_keys[t]};

@@ -15,7 +15,8 @@
  * with pdf sin(theta) / pi^2 (int_S2 sin(theta) dw = 2 pi int_0^pi
  * sin^2 = pi^2), so one sample of E_z is pi L(w) and of E_sz pi L(w) (1 +
  * cos alpha); theta by inverting its distribution F(theta) = (theta -
- * sin theta cos theta) / pi, phi uniform; stratified in (F, phi).
+ * sin theta cos theta) / pi, phi uniform (from the semicylinder's facing
+ * direction); stratified in (F, phi).
  *
  * L(w): a sky's luminance when nothing is hit along w (Embree); and where
  * interreflection is modelled, one path from the point along w
@@ -29,8 +30,8 @@
  * across the direction to the emitter, and the two added (each direction
  * lies in exactly one). Each point is sampled as the path
  * tracer samples E: a pilot of 8 x 8 strata decides how many samples the
- * point needs for the target on E_z, one stage of that many is reported
- * with its standard error (radiometry/estimate.h).
+ * point needs for the target on E_z and on E_sz (the larger), one stage of
+ * that many is reported with its standard error (radiometry/estimate.h).
  */
 #include "solver/transport/vertical_sampled.h"
 
@@ -62,15 +63,32 @@ static double theta_from_uniform(double u)
     return t;
 }
 
+/* The point sampled: where it is, the way its semicylinder faces, and
+ * when it lies on a surface (hidden = 1) the normal of that surface's
+ * plane, behind which it sees nothing. */
+typedef struct receiver {
+    cdl_vec3 p, facing, n;
+    int hidden;
+} receiver;
+
+/* Is w hidden by the surface the point lies on? */
+static int behind_surface(const receiver *r, cdl_vec3 w)
+{
+    return r->hidden && !(cdl_vec3_dot(w, r->n) > 0.0);
+}
+
 typedef struct sample_value {
     double L;          /* radiance along w, cd/m^2 (emitted plus one path's reflected estimate) */
     double potential;  /* what it could have been with nothing in the way (for dark points) */
 } sample_value;
 
-static sample_value radiance_along(const cdl_vertical_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 w,
+static sample_value radiance_along(const cdl_vertical_context *ctx, cdl_rng_key key, const receiver *r, cdl_vec3 w,
                                    cdl_path_stats *stats)
 {
     sample_value s = {0.0, 0.0};
+    /* Certainly dark, not a direction that could have missed light. */
+    if (behind_surface(r, w)) return s;
+    cdl_vec3 p = r->p;
     const cdl_direct_context *d = ctx->path.direct;
     cdl_ray_hit hit;
     int hit_any = ctx->path.geometry && cdl_scene_geometry_intersect(ctx->path.geometry, p, w, w, INFINITY, &hit);
@@ -95,9 +113,10 @@ static sample_value radiance_along(const cdl_vertical_context *ctx, cdl_rng_key 
 
 /* The area emitters' part of one sample (u in [0, 1)^2): E_z and E_sz
  * contributions, and what they would be unshadowed (*potential). */
-static void emitter_samples(const cdl_vertical_context *ctx, cdl_vec3 p, cdl_vec3 facing, const double u[2],
-                            double *fz, double *fsz, double *potential, cdl_path_stats *stats)
+static void emitter_samples(const cdl_vertical_context *ctx, const receiver *r, const double u[2], double *fz,
+                            double *fsz, double *potential, cdl_path_stats *stats)
 {
+    cdl_vec3 p = r->p, facing = r->facing;
     const cdl_direct_context *d = ctx->path.direct;
     for (size_t l = 0; l < d->light_count; ++l) {
         const cdl_scene_light *light = &d->lights[l];
@@ -112,6 +131,7 @@ static void emitter_samples(const cdl_vertical_context *ctx, cdl_vec3 p, cdl_vec
             if (!cdl_emitter_sample(light->emitter, p, n, u[0], u[1], &smp) || !(smp.pdf > 0.0)) continue;
             if (!(cdl_vec3_dot(n, smp.to_light) > 0.0)) continue;
             cdl_vec3 w = smp.to_light;
+            if (behind_surface(r, w)) continue;
             double st = sqrt(w.x * w.x + w.y * w.y);
             double gz = smp.L.cd_m2 * st / (CDL_PI * smp.pdf);
             double gsz = smp.L.cd_m2 * (st + w.x * facing.x + w.y * facing.y) / (CDL_PI * smp.pdf);
@@ -127,9 +147,8 @@ static void emitter_samples(const cdl_vertical_context *ctx, cdl_vec3 p, cdl_vec
 }
 
 /* One round of k x k strata, two samples each. */
-static void vertical_round(const cdl_vertical_context *ctx, uint64_t stream, uint64_t base, cdl_vec3 p,
-                           cdl_vec3 facing, int k, cdl_estimate *ez, cdl_estimate *esz, double *potential_sum,
-                           cdl_path_stats *stats)
+static void vertical_round(const cdl_vertical_context *ctx, uint64_t stream, uint64_t base, const receiver *r, int k,
+                           cdl_estimate *ez, cdl_estimate *esz, double *potential_sum, cdl_path_stats *stats)
 {
     cdl_round rz = {0.0, 0.0, 0.0, 0}, rsz = {0.0, 0.0, 0.0, 0};
     for (int j = 0; j < k; ++j)
@@ -142,10 +161,13 @@ static void vertical_round(const cdl_vertical_context *ctx, uint64_t stream, uin
                 cdl_rng_uniform2(key, 0, u);
                 double theta = theta_from_uniform((i + u[0]) / k), phi = 2.0 * CDL_PI * (j + u[1]) / k;
                 double st = sin(theta);
-                cdl_vec3 w = cdl_vec3_make(st * cos(phi), st * sin(phi), cos(theta));
-                sample_value v = radiance_along(ctx, key, p, w, stats);
+                /* phi from the facing direction f, then f's perpendicular */
+                double cf = cos(phi), sf = sin(phi);
+                cdl_vec3 w = cdl_vec3_make(st * (cf * r->facing.x - sf * r->facing.y),
+                                           st * (cf * r->facing.y + sf * r->facing.x), cos(theta));
+                sample_value v = radiance_along(ctx, key, r, w, stats);
                 /* pi L, and pi L (1 + cos alpha) with sin(theta) cos(alpha) = w_h . f */
-                double cos_alpha = st > 0.0 ? (w.x * facing.x + w.y * facing.y) / st : 0.0;
+                double cos_alpha = st > 0.0 ? (w.x * r->facing.x + w.y * r->facing.y) / st : 0.0;
                 fz[s] = CDL_PI * v.L;
                 fsz[s] = CDL_PI * v.L * (1.0 + cos_alpha);
                 *potential_sum += v.potential;
@@ -153,13 +175,24 @@ static void vertical_round(const cdl_vertical_context *ctx, uint64_t stream, uin
                 double ue[2];
                 cdl_rng_uniform2(key, 1, ue);
                 double ue_s[2] = {(i + ue[0]) / k, (j + ue[1]) / k};
-                emitter_samples(ctx, p, facing, ue_s, &fz[s], &fsz[s], potential_sum, stats);
+                emitter_samples(ctx, r, ue_s, &fz[s], &fsz[s], potential_sum, stats);
             }
             cdl_round_add_pair(&rz, fz[0], fz[1]);
             cdl_round_add_pair(&rsz, fsz[0], fsz[1]);
         }
     cdl_estimate_add_round(ez, &rz);
     cdl_estimate_add_round(esz, &rsz);
+}
+
+/* Strata per side of a stage of about `samples` samples: a multiple of 4,
+ * so that the horizon (F = 1/2) and the quarter turns from the facing
+ * direction (phi = +-pi/2, pi) are strata edges. A point on a floor or a
+ * wall, or under an upper-hemisphere sky, then has no stratum split between
+ * light and the dark behind its surface: those halves cost no error. */
+static int stage_side(double samples)
+{
+    int k = cdl_estimate_side_for(samples, PILOT_SIDE, 1 << 12);
+    return (k + 3) & ~3;
 }
 
 /* The variance of a mean, at least what samples that all gave nothing
@@ -171,27 +204,34 @@ static double honest_variance(const cdl_estimate *e, double potential)
     return v;
 }
 
-void cdl_vertical_sampled_point(const cdl_vertical_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 facing,
-                                double Ez_exact, cdl_vertical_estimate *out, cdl_path_stats *stats)
+void cdl_vertical_sampled_point(const cdl_vertical_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                                cdl_vec3 facing, int on_surface, double Ez_exact, cdl_vertical_estimate *out,
+                                cdl_path_stats *stats)
 {
+    receiver r = {p, facing, n, on_surface};
     cdl_estimate pz = {0.0, 0.0, 0.0, 0}, psz = {0.0, 0.0, 0.0, 0};
     double potential_sum = 0.0;
-    vertical_round(ctx, stream, 0, p, facing, PILOT_SIDE, &pz, &psz, &potential_sum, stats);
+    vertical_round(ctx, stream, 0, &r, PILOT_SIDE, &pz, &psz, &potential_sum, stats);
     double potential = potential_sum / pz.samples;
-    /* E_z = exact + sampled, held to the target; a dark point to a
-     * thousandth of what its samples could carry. */
-    double R = fmax(Ez_exact + cdl_estimate_mean(&pz), 1e-3 * potential);
-    double budget = ctx->target * ctx->target * R * R;
-    cdl_estimate planning = pz;
-    planning.var_num = honest_variance(&pz, potential) * pz.samples * pz.samples;
-    double want = budget > 0.0 ? cdl_estimate_plan(&planning, budget, 2.0 * PILOT_SIDE * PILOT_SIDE)
-                               : 2.0 * PILOT_SIDE * PILOT_SIDE;
+    /* E_z and E_sz = exact + sampled, each held to the target (the stage
+     * is as large as the needier of the two asks); a dark point to a
+     * thousandth of what its samples could carry. E_z's exact part stands
+     * in for E_sz's, which lies between 0 and twice it. */
+    double want = 2.0 * PILOT_SIDE * PILOT_SIDE;
+    for (int k = 0; k < 2; ++k) {
+        const cdl_estimate *pilot = k ? &psz : &pz;
+        double reach = k ? 2.0 * potential : potential;
+        double R = fmax(Ez_exact + cdl_estimate_mean(pilot), 1e-3 * reach);
+        double budget = ctx->target * ctx->target * R * R;
+        cdl_estimate planning = *pilot;
+        planning.var_num = honest_variance(pilot, reach) * pilot->samples * pilot->samples;
+        if (budget > 0.0) want = fmax(want, cdl_estimate_plan(&planning, budget, 2.0 * PILOT_SIDE * PILOT_SIDE));
+    }
     if (want > ctx->max_samples) want = ctx->max_samples;
     /* The reported stage, its size fixed by the pilot alone. */
     cdl_estimate ez = {0.0, 0.0, 0.0, 0}, esz = {0.0, 0.0, 0.0, 0};
     double stage_potential = 0.0;
-    vertical_round(ctx, stream, (uint64_t)pz.samples, p, facing, cdl_estimate_side_for(want, PILOT_SIDE, 1 << 12), &ez,
-                   &esz, &stage_potential, stats);
+    vertical_round(ctx, stream, (uint64_t)pz.samples, &r, stage_side(want), &ez, &esz, &stage_potential, stats);
     out->Ez = cdl_estimate_mean(&ez);
     out->Esz = cdl_estimate_mean(&esz);
     out->Ez_var = honest_variance(&ez, potential);
@@ -206,6 +246,7 @@ typedef struct grid_job {
     const cdl_grid *grid;
     size_t grid_index;
     double *Ez, *Esz, *Ez_stderr, *Esz_stderr;
+    const unsigned char *on_surface;
 } grid_job;
 
 static cdl_status sample_points(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
@@ -218,8 +259,8 @@ static cdl_status sample_points(void *shared, void *local, size_t begin, size_t 
         cdl_vec3 facing = cdl_vec3_make(1, 0, 0);
         cdl_direct_facing_direction(job->grid->normals[i], &facing);
         cdl_vertical_estimate e;
-        cdl_vertical_sampled_point(job->ctx, stream, job->grid->points[i], facing, job->Ez ? job->Ez[i] : 0.0, &e,
-                                   stats);
+        cdl_vertical_sampled_point(job->ctx, stream, job->grid->points[i], job->grid->normals[i], facing,
+                                   job->on_surface && job->on_surface[i], job->Ez ? job->Ez[i] : 0.0, &e, stats);
         if (job->Ez) {
             job->Ez[i] += e.Ez;
             job->Ez_stderr[i] = sqrt(e.Ez_var);
@@ -233,14 +274,15 @@ static cdl_status sample_points(void *shared, void *local, size_t begin, size_t 
 }
 
 cdl_status cdl_vertical_sampled_grid(const cdl_vertical_context *ctx, const cdl_grid *grid, size_t grid_index,
-                                     double *Ez, double *Esz, double *Ez_stderr, double *Esz_stderr, int threads,
+                                     const unsigned char *on_surface, double *Ez, double *Esz, double *Ez_stderr,
+                                     double *Esz_stderr, int threads,
                                      const cdl_progress_sink *progress, const char *stage, cdl_path_stats *stats,
                                      cdl_error *err)
 {
     if (threads < 1) threads = 1;
     cdl_path_stats *locals = calloc((size_t)threads, sizeof *locals);
     if (!locals) return cdl_error_out_of_memory(err);
-    grid_job job = {ctx, grid, grid_index, Ez, Esz, Ez_stderr, Esz_stderr};
+    grid_job job = {ctx, grid, grid_index, Ez, Esz, Ez_stderr, Esz_stderr, on_surface};
     cdl_pool_task task = {.count = grid->count, .chunk = 2, .run = sample_points, .shared = &job,
                           .locals = locals, .local_size = sizeof *locals, .stage = stage};
     cdl_status st = cdl_pool_run(&task, threads, progress, err);

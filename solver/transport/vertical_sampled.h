@@ -24,17 +24,21 @@ typedef struct cdl_vertical_estimate {
     uint64_t samples;
 } cdl_vertical_estimate;
 
-/* At p, the semicylinder facing the unit horizontal `facing`; Ez_exact
- * is the exact part already known (delta lights), used only to set the
- * target. `stream` keys the random numbers. */
-void cdl_vertical_sampled_point(const cdl_vertical_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 facing,
-                                double Ez_exact, cdl_vertical_estimate *out, cdl_path_stats *stats);
+/* At p (normal n), the semicylinder facing the unit horizontal `facing`;
+ * on_surface: p lies on a surface, which hides every direction behind n.
+ * Ez_exact is the exact part already known (delta lights), used only to
+ * set the target. `stream` keys the random numbers. */
+void cdl_vertical_sampled_point(const cdl_vertical_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
+                                cdl_vec3 facing, int on_surface, double Ez_exact, cdl_vertical_estimate *out,
+                                cdl_path_stats *stats);
 
 /* Every point of a grid: Ez and Esz (either may be NULL) gain the sampled
  * part, Ez_stderr and Esz_stderr (with them) receive its standard error.
- * Semicylinders face each point's normal's horizontal part. */
+ * Semicylinders face each point's normal's horizontal part. on_surface
+ * (NULL: no point does): per point, 1 where it lies on a surface. */
 cdl_status cdl_vertical_sampled_grid(const cdl_vertical_context *ctx, const cdl_grid *grid, size_t grid_index,
-                                     double *Ez, double *Esz, double *Ez_stderr, double *Esz_stderr, int threads,
+                                     const unsigned char *on_surface, double *Ez, double *Esz, double *Ez_stderr,
+                                     double *Esz_stderr, int threads,
                                      const cdl_progress_sink *progress, const char *stage, cdl_path_stats *stats,
                                      cdl_error *err);
 

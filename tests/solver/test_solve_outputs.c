@@ -507,6 +507,99 @@ static void test_polygon_area_column(void)
     fixture_release(scene, &sol);
 }
 
+/* A point lying on a surface sees nothing behind it: the vertical outputs
+ * are the limit from the side the point's normal faces (issue: a floor
+ * grid's cylinders stand on the floor, a wall grid's semicylinders on the
+ * wall). Delta lights: a floor (z = 0) and a wall (x = -2, facing +x); A
+ * below the floor, B behind the wall, C in front of both. Every grid point
+ * lies on the floor or the wall, so only C reaches it: E_z = I_C sin(theta)
+ * / (pi d^2), E_sz = I_C sin(theta) (1 + cos alpha) / (pi d^2). Before the
+ * mask, A reached the floor points and B the wall points (no shadow ray:
+ * the plan's box test, made for E's hemisphere, ignores surfaces that
+ * only touch the grid). */
+static void test_on_surface_hides_behind(void)
+{
+    const char *json =
+        "{\"version\": 1, \"surfaces\": ["
+        "{\"type\": \"rect\", \"origin\": [-5, -5, 0], \"u\": [10, 0, 0], \"v\": [0, 10, 0], \"reflectance\": 0},"
+        "{\"type\": \"rect\", \"origin\": [-2, -5, 0], \"u\": [0, 10, 0], \"v\": [0, 0, 4], \"reflectance\": 0}],"
+        "\"luminaires\": ["
+        "{\"name\": \"A\", \"type\": \"point\", \"position\": [1, 0, -1], \"intensity_cd\": 1000},"
+        "{\"name\": \"B\", \"type\": \"point\", \"position\": [-3, 0, 1], \"intensity_cd\": 1000},"
+        "{\"name\": \"C\", \"type\": \"point\", \"position\": [0.5, 0.3, 2], \"intensity_cd\": 500}],"
+        "\"grids\": [{\"name\": \"floor\", \"type\": \"points\", \"outputs\": [\"cylindrical\"], \"points\": ["
+        "{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}, {\"p\": [1, 1, 0], \"n\": [0, 0, 1]}]},"
+        "{\"name\": \"wall\", \"type\": \"points\", \"outputs\": [\"cylindrical\", \"semicylindrical\"], \"points\": ["
+        "{\"p\": [-2, 0, 1.5], \"n\": [1, 0, 0]}, {\"p\": [-2, 1, 2.5], \"n\": [1, 0, 0]}]}],"
+        "\"solver\": {\"method\": \"direct\"}}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!fixture_solve(json, &scene, &sol, 2)) return;
+    const cdl_vec3 c = cdl_vec3_make(0.5, 0.3, 2.0);
+    for (size_t g = 0; g < 2; ++g) {
+        const cdl_grid_solution *gs = &sol.grids[g];
+        CHECK(gs->Ez != NULL);
+        for (size_t i = 0; gs->Ez && i < gs->grid.count; ++i) {
+            cdl_vec3 d = cdl_vec3_sub(c, gs->grid.points[i]);
+            double d2 = cdl_vec3_dot(d, d), r = sqrt(d2);
+            double sin_t = sqrt(d.x * d.x + d.y * d.y) / r, cos_a = d.x / sqrt(d.x * d.x + d.y * d.y);
+            double Ez = 500.0 / d2 * sin_t / CDL_PI;
+            /* the same I / d^2 and sin by other roundings: a few ulps */
+            CHECK_MSG(fabs(gs->Ez[i] - Ez) <= 1e-12 * Ez, "%s point %zu: Ez %.10g, only C gives %.10g",
+                      scene->grids[g].name, i, gs->Ez[i], Ez);
+            if (gs->Esz) {
+                double Esz = 500.0 / d2 * sin_t * (1.0 + cos_a) / CDL_PI;
+                CHECK_MSG(fabs(gs->Esz[i] - Esz) <= 1e-12 * Esz, "wall point %zu: Esz %.10g, only C gives %.10g", i,
+                          gs->Esz[i], Esz);
+            }
+        }
+    }
+    fixture_release(scene, &sol);
+
+    /* Sampled: a full uniform sky L over the same floor and, apart, a wall
+     * (x = 20, facing +x, wholly below the floor: neither sees the other
+     * from its front). On the floor only the upper hemisphere is seen: E_z = (1 / pi) L 2 pi
+     * int_0^pi/2 sin^2 = pi L / 2, estimated exactly (the strata split at
+     * the horizon). On the wall (facing +x) the half-space w_x > 0:
+     * int sin(theta) dw there = pi^2 / 2 and int w_x dw = pi, so E_z = pi L
+     * / 2 and E_sz = (L / pi)(pi^2 / 2 + pi) = L (pi / 2 + 1); sampled at
+     * normal, within 4 stated sigma. Seen through the surface they would be pi L. */
+    const double L = 1000.0;
+    const char *sky =
+        "{\"version\": 1, \"surfaces\": ["
+        "{\"type\": \"rect\", \"origin\": [-5, -5, 0], \"u\": [10, 0, 0], \"v\": [0, 10, 0], \"reflectance\": 0},"
+        "{\"type\": \"rect\", \"origin\": [20, -5, -30], \"u\": [0, 10, 0], \"v\": [0, 0, 10], \"reflectance\": 0}],"
+        "\"luminaires\": [{\"type\": \"environment\", \"luminance_cd_m2\": 1000}],"
+        "\"grids\": [{\"name\": \"floor\", \"type\": \"points\", \"outputs\": [\"cylindrical\"], \"points\": ["
+        "{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}, {\"p\": [1, 1, 0], \"n\": [0, 0, 1]}]},"
+        "{\"name\": \"wall\", \"type\": \"points\", \"outputs\": [\"cylindrical\", \"semicylindrical\"], \"points\": ["
+        "{\"p\": [20, 0, -25], \"n\": [1, 0, 0]}, {\"p\": [20, 1, -23], \"n\": [1, 0, 0]}]}],"
+        "\"solver\": {\"method\": \"direct\", \"quality\": \"normal\"}}";
+    if (!fixture_solve(sky, &scene, &sol, 2)) return;
+    const cdl_grid_solution *fl = &sol.grids[0], *wl = &sol.grids[1];
+    for (size_t i = 0; fl->Ez_stderr && i < 2; ++i) {
+        CHECK_MSG(fabs(fl->Ez[i] - CDL_PI * L / 2.0) <= 1e-9 * L, "floor point %zu: Ez %.10g, exact %.10g", i,
+                  fl->Ez[i], CDL_PI * L / 2.0);
+        CHECK(fl->Ez_stderr[i] < 1e-9 * L);
+    }
+    for (size_t i = 0; wl->Ez_stderr && wl->Esz_stderr && i < 2; ++i) {
+        double ez = CDL_PI * L / 2.0, esz = L * (CDL_PI / 2.0 + 1.0);
+        CHECK_MSG(within_sigma(wl->Ez[i], wl->Ez_stderr[i], ez, 4.0), "wall point %zu: Ez %g +- %g, exact %g", i,
+                  wl->Ez[i], wl->Ez_stderr[i], ez);
+        CHECK_MSG(within_sigma(wl->Esz[i], wl->Esz_stderr[i], esz, 4.0), "wall point %zu: Esz %g +- %g, exact %g", i,
+                  wl->Esz[i], wl->Esz_stderr[i], esz);
+        /* Both held to the target, 0.5 % at normal (E_sz used to get only
+         * the samples E_z asked for, which can be none beyond the pilot),
+         * within the issue's factor 1.5. */
+        CHECK_MSG(wl->Ez_stderr[i] < 1.5 * 0.005 * ez, "Ez stated %g", wl->Ez_stderr[i]);
+        CHECK_MSG(wl->Esz_stderr[i] < 1.5 * 0.005 * esz && wl->Esz_stderr[i] > 0.0, "Esz stated %g",
+                  wl->Esz_stderr[i]);
+        printf("on a wall under a uniform sky: Ez %.6g +- %.3g (exact %.6g), Esz %.6g +- %.3g (exact %.6g)\n",
+               wl->Ez[i], wl->Ez_stderr[i], ez, wl->Esz[i], wl->Esz_stderr[i], esz);
+    }
+    fixture_release(scene, &sol);
+}
+
 int main(void)
 {
     test_point_source_closed_forms();
@@ -517,5 +610,6 @@ int main(void)
     test_sampled_vertical();
     test_shadowed_panel();
     test_polygon_area_column();
+    test_on_surface_hides_behind();
     return check_finish();
 }

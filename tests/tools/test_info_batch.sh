@@ -68,16 +68,18 @@ check "multiplier explains the mismatch: said with the flux without it" '"$CANDE
 
 # 5. The polar diagram: valid SVG; the isotropic source's curves are circles
 # of I x 1000 / flux = 1000 x 1000 / (4000 pi) = 79.58 cd/klm on a ring
-# scale of 100: radius 220 x 0.7958 = 175.07 units around (280, 300).
+# scale of 100: radius 220 x 0.7958 = 175.07 units around (280, 300)
+# (cairo writes coordinates to 1/256 of a unit).
 "$CANDELA" info --plot "$tmp/iso.svg" "$data/iso_1000cd.ies" > /dev/null; st=$?
 check "--plot: exit 0, valid SVG" '[ $st -eq 0 ] && xmllint --noout "$tmp/iso.svg"'
 python3 - "$tmp/iso.svg" > "$tmp/radii.txt" <<'PY'
 import re, sys, math
 svg = open(sys.argv[1]).read()
-for plane in ("c0-c180", "c90-c270"):
-    pts = re.search(r'points="([^"]*)"[^>]*id="%s"|id="%s"[^>]*points="([^"]*)"' % (plane, plane), svg)
-    pts = pts.group(1) or pts.group(2)
-    r = [math.hypot(float(x) - 280, float(y) - 300) for x, y in (p.split(",") for p in pts.split())]
+# cairo writes each curve as a path: C0-C180 solid red, C90-C270 dashed blue.
+for plane, colour in (("c0-c180", "rgb(80%,0%,0%)"), ("c90-c270", "rgb(0%,0%,80%)")):
+    d = re.search(r'<path style="[^"]*stroke-width:2;[^"]*stroke:%s;[^"]*" d="([^"]*)"' % re.escape(colour), svg).group(1)
+    nums = [float(v) for v in re.findall(r"-?[0-9.]+", d)]
+    r = [math.hypot(x - 280, y - 300) for x, y in zip(nums[0::2], nums[1::2])]
     print(plane, len(r), min(r), max(r))
 PY
 check "--plot: both planes, 361 points each, a circle of radius 175.07 (to 0.01)" 'python3 -c "
@@ -86,7 +88,8 @@ want = 220 * 1000 * 1000 / (4000 * 3.141592653589793) / 100
 rows = [l.split() for l in open(sys.argv[1])]
 assert [r[0] for r in rows] == [\"c0-c180\", \"c90-c270\"] and all(r[1] == \"361\" for r in rows)
 assert all(abs(float(r[2]) - want) < 0.01 and abs(float(r[3]) - want) < 0.01 for r in rows), (rows, want)" "$tmp/radii.txt"'
-check "--plot: labelled in cd/klm with the luminaire's name" 'grep -q "cd/klm, nadir down" "$tmp/iso.svg" && grep -q "isotropic point source" "$tmp/iso.svg"'
+check "--plot: titled (<title>; cairo draws the labels as glyphs) in cd/klm with the luminaire's name" 'grep -q "<title>Polar intensity diagram: isotropic point source.*(cd/klm, nadir down)</title>" "$tmp/iso.svg"'
+check "--plot: the labels are drawn (glyphs used)" '[ $(grep -c "<use xlink:href=\"#glyph" "$tmp/iso.svg") -gt 40 ]'
 "$CANDELA" info --plot "$tmp/x.svg" "$data/iso_1000cd.ies" "$data/warn_seam.ies" > /dev/null 2>&1; st=$?
 check "--plot with two files: usage error" '[ $st -eq 2 ]'
 exit $fail

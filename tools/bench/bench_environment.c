@@ -2,7 +2,7 @@
  * on an image sky seen through an opening, before and after the per-normal
  * environment sampler, in one process.
  *
- *   bench_environment [--points N] [--target T] [--width W] [--depth D] [--sun 0|1]
+ *   bench_environment [--points N] [--target T] [--width W] [--depth D] [--sun 0|1] [--solver-only 0|1]
  *
  * A black well 2 x 2 m, D m deep (default 1.5), open at the top, under a
  * W x W/2 lat-long sky (default 512: a gradient, a dark band and, unless
@@ -18,8 +18,13 @@
  *           (one pass over the pixels) is counted in the time.
  * Both use independent samples (no strata), the same shadow rays through
  * the solver's geometry, and the same stopping rule. Reported: samples and
- * microseconds per point each way and their ratios; then the whole direct
- * solver at the same target on the same points, for reference. Ratios, not
+ * microseconds per point each way and their ratios (left out with
+ * --solver-only 1: at small targets they take minutes); then the whole
+ * direct solver at the same target on the same points, the exact route
+ * off and on: time, shadow rays and stated sigma / target per point, the
+ * points the cap of samples held short of the target, and the route the
+ * plan names. With the sun, the route on takes the sun's pixels exactly
+ * over the visible sky and samples the rest there (no rays). Ratios, not
  * wall-clock figures, are what to compare between machines.
  */
 #include <math.h>
@@ -49,7 +54,7 @@ static double arg_num(int argc, char **argv, const char *name, double dflt)
 static double now_seconds(void)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
@@ -94,6 +99,31 @@ static run sample_point(const cdl_emitter *sky, const cdl_environment_sampler *s
     return r;
 }
 
+/* The points the plan says the cap of samples held short ("... held N
+ * points short"), 0 if it says none. */
+static size_t capped_points(const char *plan)
+{
+    const char *at = plan ? strstr(plan, " held ") : NULL;
+    return at ? (size_t)strtoull(at + 6, NULL, 10) : 0;
+}
+
+/* The floor grid's route text from the plan ("floor": "..."), or "". */
+static const char *route_text(const char *plan)
+{
+    static char text[1024];
+    const char *at = plan ? strstr(plan, "\"floor\":\"") : NULL;
+    text[0] = '\0';
+    if (!at) return text;
+    at += 9;
+    size_t k = 0;
+    while (at[k] && at[k] != '"' && k + 1 < sizeof text) {
+        text[k] = at[k];
+        k++;
+    }
+    text[k] = '\0';
+    return text;
+}
+
 /* The sky: luminance in cd/m^2, a zenith-bright gradient with an azimuthal
  * swing, a dark band of columns and a 2 x 2 pixel sun at 1e6. */
 static int write_sky(const char *path, int W, int H, int sun)
@@ -122,6 +152,7 @@ int main(int argc, char **argv)
     int W = (int)arg_num(argc, argv, "--width", 512);
     double depth = arg_num(argc, argv, "--depth", 1.5);
     int sun = (int)arg_num(argc, argv, "--sun", 1);
+    int solver_only = (int)arg_num(argc, argv, "--solver-only", 0);
     if (points < 1 || W < 4 || !(target > 0.0) || !(depth > 0.0)) {
         fprintf(stderr, "bench_environment: expected --points >= 1, --width >= 4, --target > 0, --depth > 0\n");
         return 2;
@@ -173,7 +204,7 @@ int main(int argc, char **argv)
     double t_before = 0.0, t_after = 0.0, n_before = 0.0, n_after = 0.0, worst_gap = 0.0;
     int capped = 0;
     cdl_vec3 n = {0, 0, 1};
-    for (int i = 0; i < points; ++i) {
+    for (int i = 0; i < (solver_only ? 0 : points); ++i) {
         double x = 0.1 + 1.8 * (i + 0.5) / points, y = 0.1 + 1.8 * fmod(0.618034 * (i + 1), 1.0);
         cdl_vec3 p = {x, y, 0};
         double t0 = now_seconds();
@@ -199,6 +230,7 @@ int main(int argc, char **argv)
     }
     printf("scene: black well 2 x 2 x %g m under a %d x %d image sky; %d floor points; target %g\n", depth, W, W / 2,
            points, target);
+    if (!solver_only) {
     printf("before (L x solid angle, plain):           %10.0f samples/point  %10.1f us/point\n", n_before / points,
            1e6 * t_before / points);
     printf("after  (L x projected solid angle, E0 - H): %10.0f samples/point  %10.1f us/point\n", n_after / points,
@@ -206,6 +238,7 @@ int main(int argc, char **argv)
     printf("ratio before / after: samples %.2f, time %.2f   (largest gap between the two: %.2f combined sigma; %d "
            "runs hit the 2^26 cap)\n",
            n_before / n_after, t_before / t_after, worst_gap, capped);
+    }
 
     /* The whole direct solver at the same target, one thread: the exact
      * route off (the per-normal sampler with shadow rays, E0 - H) and on
@@ -232,9 +265,10 @@ int main(int argc, char **argv)
         }
         us[route_off] = 1e6 * (t4 - t3) / points;
         printf("direct solver, exact route %s: %10.1f us/point, %8.0f shadow rays/point; stated sigma / target: mean "
-               "%.2f, worst %.2f\n",
+               "%.2f, worst %.2f; the cap held %zu points\n",
                route_off ? "off (E0 - H, rays)  " : "on (visible sky)   ", us[route_off], (double)sol.rays / points,
-               mean, worst);
+               mean, worst, capped_points(sol.plan_json));
+        if (!route_off) printf("  plan: %s\n", route_text(sol.plan_json));
         cdl_solution_release(&sol);
     }
     printf("ratio route off / on: time %.2f\n", us[1] / us[0]);

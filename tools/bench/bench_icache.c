@@ -129,7 +129,7 @@ int main(int argc, char **argv)
             r->method = methods[m];
             r->target = targets[k];
             if (solve(scene, methods[m], targets[k], threads, &sol)) return 1;
-            cdl_bench_rung_measure(&sol, &ref, r);
+            cdl_bench_rung_measure(&sol, &ref, NULL, r);
             cdl_solution_release(&sol);
             printf("%-10s %7.2f%% %9.2f %12llu %8llu %8.3f%% %8.2f%% %8.1f%%\n", method_name(r->method),
                    100.0 * r->target, r->seconds, (unsigned long long)r->rays, (unsigned long long)r->records, 100.0 * r->rms, 100.0 * r->worst,

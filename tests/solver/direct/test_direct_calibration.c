@@ -18,12 +18,15 @@
  * the partition: a few strata along the edge differ) and by 0.60-1.25 at
  * 1152, up to 5 % and 1 % of seeds beyond a factor 1.5; planned, about
  * 99 % of the points the cap did not hold were within a factor 1.5 at
- * "normal" and "high", 93 % at "draft". So each scene is held to: at least
- * 95 % of those points within a factor 1.5 at "normal" and "high" (85 % at
- * "draft", where stages are a few hundred samples), none beyond a factor 2
- * (3 at "draft") but as many as the plan says the cap held; and at "high"
- * the well's every point held by the cap (it needs ~3.5e6 samples a
- * point).
+ * "normal" and "high", 96 % at "draft" (93 % before a small pilot's plan
+ * was held to 4 times its size: direct_extended.c, PLAN_REACH_SMALL). So
+ * the points the cap did not hold are held, over the four scenes, to at
+ * least 95 % within a factor 1.5 at every preset; each scene to 95 % at
+ * "normal" and "high" (85 % at "draft", where the partition's stages are
+ * 72 to 200 samples with one to five differing pairs), none beyond a
+ * factor 2 (3 at "draft") but as many as the plan says the cap held; and
+ * at "high" the well's every point held by the cap (it needs ~3.5e6
+ * samples a point).
  */
 // ctest-labels: slow
 #include <math.h>
@@ -172,6 +175,7 @@ static void test_calibration(cdl_quality quality, const char *name, double least
      * to 192) are too small for the four-sigma bounds to say much one by
      * one. */
     const char *names[4] = {"well", "roof", "window", "partition"};
+    size_t within_all = 0, free_all = 0;
     for (int s = 0; s < 4; ++s) {
         const calibration *c = &tallies[s];
         const band *b = &bands[s];
@@ -181,12 +185,19 @@ static void test_calibration(cdl_quality quality, const char *name, double least
                c->zsum / c->count, c->sigma_over_target_min, c->sigma_over_target_max, b->within, wide, b->beyond,
                b->capped);
         size_t free_points = b->count > b->capped ? b->count - b->capped : 0;
+        free_all += free_points;
+        within_all += b->within < free_points ? b->within : free_points;
         CHECK_MSG((double)b->within >= least_within * (double)free_points,
                   "%s %s: %zu of %zu points within a factor 1.5 of the target (the cap held %zu)", name, names[s],
                   b->within, b->count, b->capped);
         CHECK_MSG(b->beyond <= b->capped, "%s %s: %zu points beyond a factor %g of the target, the cap held %zu", name,
                   names[s], b->beyond, wide, b->capped);
     }
+    printf("  %s: %zu of the %zu points the cap did not hold within a factor 1.5 of the target\n", name, within_all,
+           free_all);
+    CHECK_MSG((double)within_all >= 0.95 * (double)free_all,
+              "%s: %zu of the %zu points the cap did not hold within a factor 1.5 of the target", name, within_all,
+              free_all);
     if (quality == CDL_QUALITY_HIGH)
         CHECK_MSG(bands[0].capped == bands[0].count, "high: the cap held %zu of the well's %zu points",
                   bands[0].capped, bands[0].count);

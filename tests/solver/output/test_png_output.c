@@ -7,7 +7,7 @@
 
 #include "check.h"
 #include "grid_result_fixture.h"
-#include "solver/output/bitmap_font.h"
+#include "graphics/raster_canvas.h"
 #include "solver/output/display_transform.h"
 
 #define CONFIG CANDELA_SOURCE_DIR "/data/ocio/config.ocio"
@@ -86,17 +86,42 @@ static void check_map(const decoded *d, const cdl_png_layout *L, const fixture *
         }
 }
 
-/* Is `label` drawn (black on white) with its top-left corner at (x, y)? */
+/* The maps' labels: 12 px DejaVu Sans (png_output.c's FONT_PX), a line 14 px high. */
+static const cdl_text_style label_style = {.size = 12.0};
+
+static int text_width(const char *label)
+{
+    double w = 0.0;
+    cdl_text_measure_alone(label, &label_style, &w, NULL);
+    return (int)ceil(w);
+}
+
+/* Is `label` drawn (black on white) with its top-left corner at (x, y)?
+ * The same text drawn alone at the origin of a white image must match
+ * pixel for pixel (cairo renders glyphs alike at any whole-pixel offset),
+ * and must have ink (a label that draws nothing proves nothing). */
 static int label_drawn(const decoded *d, int x, int y, const char *label)
 {
-    const int scale = 2;
-    int w = cdl_bitmap_font_text_width(label, scale), h = CDL_BITMAP_FONT_GLYPH_HEIGHT * scale;
+    int w = text_width(label), h = 14;
     if (x < 0 || y < 0 || x + w > d->width || y + h > d->height) return 0;
     uint8_t *ref = malloc((size_t)w * (size_t)h * 3);
     if (!ref) return 0;
     memset(ref, 255, (size_t)w * (size_t)h * 3);
     const uint8_t black[3] = {0, 0, 0};
-    cdl_bitmap_font_draw_text(ref, w, h, 0, 0, label, scale, black);
+    cdl_raster_canvas *canvas = NULL;
+    cdl_error err;
+    if (cdl_raster_canvas_begin(ref, w, h, &canvas, &err) != CDL_OK) {
+        free(ref);
+        return 0;
+    }
+    cdl_raster_canvas_text(canvas, 0, 0, label, &label_style, black);
+    cdl_raster_canvas_end(canvas);
+    size_t ink = 0;
+    for (size_t k = 0; k < (size_t)w * (size_t)h * 3; ++k) ink += ref[k] < 128;
+    if (ink == 0) {
+        free(ref);
+        return 0;
+    }
     int same = 1;
     for (int j = 0; j < h && same; ++j)
         same = memcmp(ref + (size_t)j * (size_t)w * 3, pixel(d, x, y + j), (size_t)w * 3) == 0;
@@ -168,9 +193,9 @@ static void test_linear(const char *path, const cdl_display_transform *view)
             CHECK_MSG(same_colour(got, want), "linear cell (%d, %d): got %d %d %d, want %d %d %d", c, r, got[0],
                       got[1], got[2], want[0], want[1], want[2]);
         }
-    CHECK(label_drawn(&d, L.label_x, bar_row(&L, 0.0) - CDL_BITMAP_FONT_GLYPH_HEIGHT, "<=480 lx"));
-    CHECK(label_drawn(&d, L.label_x, L.bar_y - CDL_BITMAP_FONT_GLYPH_HEIGHT, "520 lx"));
-    CHECK(label_drawn(&d, L.label_x, bar_row(&L, 0.5) - CDL_BITMAP_FONT_GLYPH_HEIGHT, "500 lx"));
+    CHECK(label_drawn(&d, L.label_x, bar_row(&L, 0.0) - 7, "<=480 lx"));
+    CHECK(label_drawn(&d, L.label_x, L.bar_y - 7, "520 lx"));
+    CHECK(label_drawn(&d, L.label_x, bar_row(&L, 0.5) - 7, "500 lx"));
     /* Title: the name, then Em (the mean, equal weights), Emin, Emax and
      * U0 = Emin / Em, worked out here. */
     double sum = 0.0, hi = 0.0;
@@ -185,10 +210,10 @@ static void test_linear(const char *path, const cdl_display_transform *view)
     /* Axes: the horizontal one named "+x (m)" under the map's right end,
      * ticks from 0 to 4 m; the vertical one "+y (m)" above the map. */
     int map_w = 8 * L.cell, map_h = 8 * L.cell;
-    int name_w = cdl_bitmap_font_text_width("+x (m)", 2);
+    int name_w = text_width("+x (m)");
     CHECK(label_drawn(&d, L.map_x + map_w - name_w, L.map_y + map_h + 6 + 4 + 14 + 8, "+x (m)"));
     CHECK(label_drawn(&d, 16, L.map_y - 7 - 8 - 14, "+y (m)"));
-    int zero_w = cdl_bitmap_font_text_width("0", 2), four_w = cdl_bitmap_font_text_width("4", 2);
+    int zero_w = text_width("0"), four_w = text_width("4");
     CHECK(label_drawn(&d, L.map_x - zero_w / 2, L.map_y + map_h + 6 + 4, "0"));
     CHECK(label_drawn(&d, L.map_x + map_w - four_w / 2, L.map_y + map_h + 6 + 4, "4"));
     free(d.rgb);
@@ -239,8 +264,7 @@ int main(void)
         CHECK(frame[0] == 0 && frame[1] == 0 && frame[2] == 0);
 
         /* Ticks and labels: ends and decades at least; "100 lx" at t = 0.5.
-         * A label is centred on its tick: its top is half its height (7 font
-         * pixels at scale 2 = 7 image pixels) above. */
+         * A label is centred on its tick: its top is half its line (14 px) above. */
         const struct {
             double t;
             const char *label;
@@ -249,7 +273,7 @@ int main(void)
             int y = bar_row(&L, ticks[i].t);
             const uint8_t *tick = pixel(&d, L.bar_x + L.bar_width + 3, y);
             CHECK_MSG(tick[0] == 0 && tick[1] == 0 && tick[2] == 0, "tick of %s", ticks[i].label);
-            CHECK_MSG(label_drawn(&d, L.label_x, y - CDL_BITMAP_FONT_GLYPH_HEIGHT, ticks[i].label), "label %s",
+            CHECK_MSG(label_drawn(&d, L.label_x, y - 7, ticks[i].label), "label %s",
                       ticks[i].label);
         }
         /* The legend region holds plenty of non-background pixels. */
@@ -289,8 +313,8 @@ int main(void)
     if (d.rgb) {
         /* a flat map still gets a legend tall enough for its labels */
         CHECK(L.bar_height >= 200 && d.height >= L.bar_height);
-        CHECK(label_drawn(&d, L.label_x, bar_row(&L, 1.0) - CDL_BITMAP_FONT_GLYPH_HEIGHT, "1000 lx"));
-        CHECK(label_drawn(&d, L.label_x, bar_row(&L, 0.0) - CDL_BITMAP_FONT_GLYPH_HEIGHT, "200 lx"));
+        CHECK(label_drawn(&d, L.label_x, bar_row(&L, 1.0) - 7, "1000 lx"));
+        CHECK(label_drawn(&d, L.label_x, bar_row(&L, 0.0) - 7, "200 lx"));
         free(d.rgb);
     }
 

@@ -1,0 +1,69 @@
+/* report_document.h - the report's content, once, for every format.
+ *
+ * The report is built as a list of blocks (headings, paragraphs, tables,
+ * figures, page breaks) from a checked input (report_input.h), in the order
+ * a reviewer reads it:
+ *   1. cover: title, scene, the solve's date, Candela version, method,
+ *      quality and target error, seed, threads, the time the solve took;
+ *   2. summary: a row per grid (summary_table.h) with the check against
+ *      the requirements;
+ *   3. a map per rect and polygon grid (grid_map.h);
+ *   4. the luminaire schedule and a polar diagram per photometric file
+ *      (lights/photometry_polar.h);
+ *   5. method and accuracy: what the plan modelled and why, bounces, the
+ *      error statement, the solve's warnings.
+ * report_html.c and report_pdf.c lay the same blocks out, so the HTML and
+ * the PDF carry the same text and figures.
+ *
+ * Ownership: the document owns its text, maps and diagrams; it borrows the
+ * input, which must outlive it. Errors: memory, and the maps' (OCIO).
+ */
+#ifndef CANDELA_REPORT_DOCUMENT_H
+#define CANDELA_REPORT_DOCUMENT_H
+
+#include <stddef.h>
+
+#include "graphics/figure.h"
+#include "report/report_input.h"
+
+typedef enum cdl_report_block_kind {
+    CDL_BLOCK_HEADING,      /* level 1 (the title), 2 (a section) or 3 */
+    CDL_BLOCK_PARAGRAPH,
+    CDL_BLOCK_TABLE,        /* cells row by row; with `header`, row 0 names the columns */
+    CDL_BLOCK_FIGURE,
+    CDL_BLOCK_PAGE_BREAK
+} cdl_report_block_kind;
+
+typedef struct cdl_report_block {
+    cdl_report_block_kind kind;
+    int level;
+    char *text;
+    size_t columns, rows;
+    char **cells;
+    int header;
+    cdl_figure figure;
+    double figure_scale;    /* the figure shown at this fraction of its size (at most 1) */
+} cdl_report_block;
+
+typedef struct cdl_report_document {
+    char *title;
+    cdl_report_block *blocks;
+    size_t count, capacity;
+    /* what the figures draw from */
+    struct cdl_grid_map *maps;
+    size_t map_count;
+    struct cdl_polar_diagram *diagrams;
+    size_t diagram_count;
+} cdl_report_document;
+
+/* Build the report of `input`; title NULL for the default ("Lighting
+ * report: SCENE"). */
+cdl_status cdl_report_document_build(const cdl_report_input *input, const char *title, cdl_report_document **out,
+                                     cdl_error *err);
+void cdl_report_document_release(cdl_report_document *document);
+
+/* A cell's emphasis: +1 for a passed check ("pass..."), -1 for a failed
+ * one ("FAIL..."), 0 otherwise. */
+int cdl_report_cell_verdict(const char *cell);
+
+#endif
