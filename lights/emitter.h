@@ -179,9 +179,9 @@ cdl_status cdl_emitter_create_environment(const cdl_environment_params *p, cdl_e
 void cdl_emitter_release(cdl_emitter *emitter);
 
 /* Near field: the goniometric luminaire of `p` spread over the luminous
- * opening of its photometry (metadata.opening; cdl_luminous_opening_is_flat
- * must hold: a rectangle, circle or ellipse of non-zero size), an extended
- * emitter. Each element dA of the opening emits I(w) dA / A towards w, so
+ * opening of its photometry (metadata.opening; cdl_luminous_opening_is_spread
+ * must hold), an extended emitter. A flat opening (a rectangle, circle or
+ * ellipse of non-zero size): each element dA of the opening emits I(w) dA / A towards w, so
  * the opening's luminance is I(w) / (A |cos theta_o|): downward light
  * (gamma < 90) from its lower face, upward light from its upper face; the
  * flux and the far-field intensity are the point emitter's. Exact
@@ -192,14 +192,20 @@ void cdl_emitter_release(cdl_emitter *emitter);
  * cubature of the opening converged to 1e-5 relative (it fails, and the
  * caller samples, where 4096 cells do not reach that: a receiver in the
  * opening's plane). Samples (cdl_emitter_sample) with their exact pdf for
- * every opening, for shadows.
- * See emitter_opening.c. */
+ * every opening, for shadows. A luminous solid (a box with luminous
+ * sides, vertical cylinder or sphere): every face point seen from w has
+ * the luminance I(w) / A_proj(w) (cdl_luminous_opening_projected_area), so
+ * the solid's intensity is I(w) and its flux the file's; no exact
+ * illuminance (cdl_emitter_has_exact_illuminance is 0), samples uniform in
+ * the solid angle of its bounding sphere with their exact pdf.
+ * See emitter_opening.c and emitter_solid.c. */
 cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *p, cdl_emitter **out,
                                                   cdl_error *err);
 
 /* The lower (nadir-facing) face of a goniometric opening emitter in world
  * coordinates: a CDL_SHAPE_RECT or CDL_SHAPE_DISK, an ellipse as its
- * bounding rectangle (which contains it). Returns 0 (and sets nothing) for
+ * bounding rectangle (which contains it); a luminous solid's bounding
+ * sphere (a CDL_SHAPE_SPHERE). Returns 0 (and sets nothing) for
  * other kinds. What a solver needs to bound where the light comes from. */
 int cdl_emitter_opening_face(const cdl_emitter *emitter, cdl_shape *face);
 

@@ -407,12 +407,13 @@ static cdl_status make_face(const opening_emitter *o, int up, cdl_emitter **out,
 
 int cdl_emitter_opening_is_lambertian(const cdl_emitter *emitter)
 {
-    return emitter->kind == CDL_EMITTER_GONIOMETRIC_OPENING && as_opening(emitter)->lambertian;
+    return emitter->ops == &opening_ops && as_opening(emitter)->lambertian;
 }
 
 int cdl_emitter_opening_face(const cdl_emitter *emitter, cdl_shape *face)
 {
     if (emitter->kind != CDL_EMITTER_GONIOMETRIC_OPENING) return 0;
+    if (emitter->ops != &opening_ops) return cdl_emitter_solid_bounding_sphere(emitter, face);
     *face = face_shape(as_opening(emitter), 0);
     return 1;
 }
@@ -423,11 +424,13 @@ cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *
     if (!p->photometry)
         return cdl_error_set(err, CDL_ERR_USAGE, "goniometric emitter: photometry: expected a table, found NULL");
     const cdl_luminous_opening *op = &cdl_photometry_get_metadata(p->photometry)->opening;
-    if (!cdl_luminous_opening_is_flat(op))
+    if (!cdl_luminous_opening_is_spread(op))
         return cdl_error_set(err, CDL_ERR_INPUT,
-                             "goniometric emitter: opening: expected a rectangle, circle or ellipse of non-zero size "
-                             "to spread the light over, found %s %g x %g x %g m",
+                             "goniometric emitter: opening: expected a rectangle, circle, ellipse, box with luminous "
+                             "sides, vertical cylinder or sphere of non-zero size to spread the light over, found %s "
+                             "%g x %g x %g m",
                              cdl_luminous_shape_name(op->shape), op->width_m, op->length_m, op->height_m);
+    if (!cdl_luminous_opening_is_flat(op)) return cdl_emitter_create_goniometric_solid(p, out, err);
     cdl_emitter *point = NULL;
     cdl_status st = cdl_emitter_create_goniometric(p, &point, err);
     if (st != CDL_OK) return st;

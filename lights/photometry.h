@@ -238,6 +238,13 @@ typedef struct cdl_luminous_opening {
  * ellipse): what cdl_emitter_create_goniometric_opening spreads light over. */
 int cdl_luminous_opening_is_flat(const cdl_luminous_opening *opening);
 
+/* 1 when cdl_emitter_create_goniometric_opening spreads light over the
+ * opening: a flat one (cdl_luminous_opening_is_flat), or a box with
+ * luminous sides, vertical cylinder or sphere of non-zero size. Other
+ * shapes (ellipsoids, horizontal cylinders, vertical circles) and points
+ * stay points. */
+int cdl_luminous_opening_is_spread(const cdl_luminous_opening *opening);
+
 /* The opening's largest dimension in metres (its diagonal for rectangles
  * and boxes, the longest axis of round shapes, the diagonal of a
  * cylinder's side view); 0 for a point. Near-field distances are counted

@@ -146,8 +146,8 @@ static void add_opening_luminance(cJSON *op, const cdl_photometry *p)
     const cdl_luminous_opening *o = &cdl_photometry_get_metadata(p)->opening;
     double size = cdl_luminous_opening_largest_m(o);
     add_number(op, "largest_dimension_m", 1, size);
-    cJSON_AddBoolToObject(op, "spread_by_solver", cdl_luminous_opening_is_flat(o));
-    add_number(op, "near_field_distance_m", cdl_luminous_opening_is_flat(o), CDL_NEAR_FIELD_DISTANCES * size);
+    cJSON_AddBoolToObject(op, "spread_by_solver", cdl_luminous_opening_is_spread(o));
+    add_number(op, "near_field_distance_m", cdl_luminous_opening_is_spread(o), CDL_NEAR_FIELD_DISTANCES * size);
     cJSON *rows = cJSON_AddArrayToObject(op, "luminance");
     for (int c = 0; c < 4; ++c)
         for (int g = 0; g < 6; ++g) {
@@ -334,7 +334,7 @@ static void print_text(const char *path, const cdl_photometry *p, const cdl_phot
         printf(", %.4g x %.4g x %.4g m (width x length x height)", m->opening.width_m, m->opening.length_m,
                m->opening.height_m);
     printf("\n");
-    if (cdl_luminous_opening_is_flat(&m->opening))
+    if (cdl_luminous_opening_is_spread(&m->opening))
         printf("%-16sspread over its opening within %.3g m (%g x its largest dimension %.3g m)\n", "near field",
                CDL_NEAR_FIELD_DISTANCES * cdl_luminous_opening_largest_m(&m->opening), CDL_NEAR_FIELD_DISTANCES,
                cdl_luminous_opening_largest_m(&m->opening));

@@ -284,7 +284,8 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
     return CDL_OK;
 }
 
-/* A goniometric luminaire with a flat opening: its opening as an extended
+/* A goniometric luminaire with a flat opening or a luminous solid
+ * (cdl_luminous_opening_is_spread): its opening as an extended
  * emitter, everywhere ("always", replacing the point `point`) or within
  * CDL_NEAR_FIELD_DISTANCES opening sizes ("auto", the point beyond: two
  * adjacent lights of the same label, kinds "goniometric" and "goniometric
@@ -321,7 +322,7 @@ static cdl_status add_near_field(const cdl_scene *scene, const cdl_luminaire_spe
         free(proto.outline);
         return fail_at(err, scene, sp->json_path, st);
     }
-    /* describe_area bounds the lower face; the opening is flat, so that is all of it */
+    /* describe_area bounds the lower face of a flat opening, all of it, or a solid's bounding sphere */
     proto.has_closed_form = cdl_emitter_has_exact_illuminance(e);
     proto.costly_exact = !cdl_emitter_opening_is_lambertian(e);
     return add_light(L, e, "goniometric opening", &proto, err);
@@ -423,7 +424,7 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
         st = cdl_emitter_create_goniometric(&p, &e, err);
         bounds_add(&proto, sp->position);
         if (st == CDL_OK && sp->near_field != CDL_NEAR_FIELD_NEVER &&
-            cdl_luminous_opening_is_flat(&cdl_photometry_get_metadata(ph)->opening))
+            cdl_luminous_opening_is_spread(&cdl_photometry_get_metadata(ph)->opening))
             return add_near_field(scene, sp, &p, e, &proto, L, err);
         break;
     }

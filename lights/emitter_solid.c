@@ -1,0 +1,244 @@
+/* emitter_solid.c - a goniometric luminaire spread over a luminous solid.
+ *
+ *   parameter   meaning                                        unit  range
+ *   (all of cdl_goniometric_params; the solid is the photometry's opening)
+ *
+ * IES LM-63-2019 (Table 1) gives some luminaires a three-dimensional
+ * luminous shape around the photometric centre: a box ("rectangular with
+ * luminous sides": length L along the luminaire's x = C0-C180, width W
+ * along y, height H along z), a vertical cylinder (diameter W, height H)
+ * and a sphere (diameter W). All three are convex and luminous all over,
+ * the model photometry_opening.c already describes their projected area
+ * A_proj(w) with:
+ *     box        |w.x| W H + |w.y| L H + |w.z| W L
+ *     cylinder   W H sin(gamma) + pi W^2 / 4 |cos(gamma)|
+ *     sphere     pi W^2 / 4.
+ * The file's I(w) is the whole luminaire's intensity, so the solid is
+ * given the luminance that is uniform over its outline seen from w:
+ *     L(w) = I(w) / A_proj(w)
+ * at every surface point that faces w (Radiance's ies2rad spreads its
+ * "box", "cylinder" and "sphere" sources the same way). Then the intensity
+ * of the whole solid, int L cos(theta_o) dA over the faces w sees, is
+ * A_proj L = I(w) exactly: the far field is the point model and the flux
+ * the file's.
+ *
+ * Illuminance at p, E = int L(-omega) cos(theta_r) d omega over the
+ * directions omega from p that meet the solid, is sampled (no closed form
+ * here): directions uniform in the cone of the solid's bounding sphere
+ * (every direction when p is inside that sphere), a direction that misses
+ * the solid carrying nothing. The pdf, 1 / (2 pi (1 - cos theta_max)), is
+ * then the same for every direction that meets the solid, which keeps
+ * cdl_emitter_radiance exact. A sphere fills its cone; a box or cylinder
+ * fills its share of the bounding sphere's outline (about A_proj /
+ * (pi R^2): a tenth for a 1.2 m x 0.1 m box seen from below), which only
+ * costs samples, not accuracy.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "lights/emitter.h"
+#include "lights/emitter_internal.h"
+#include "radiometry/constants.h"
+#include "radiometry/frame.h"
+
+typedef struct solid_emitter {
+    cdl_emitter base;
+    cdl_emitter *point;          /* the same luminaire as a point: I(w) */
+    cdl_luminous_opening opening;
+    cdl_vec3 center;
+    cdl_vec3 axis[3];            /* the luminaire's x (length), y (width), z (up) in world */
+    double half[3];              /* box: half of L, W, H; cylinder and sphere: radius, radius, half height */
+    double bound;                /* radius of the bounding sphere */
+} solid_emitter;
+
+static const solid_emitter *as_solid(const cdl_emitter *e)
+{
+    return (const solid_emitter *)e;
+}
+
+static cdl_luminous_flux solid_flux(const cdl_emitter *e)
+{
+    return cdl_emitter_flux(as_solid(e)->point);
+}
+
+static cdl_luminous_intensity solid_intensity(const cdl_emitter *e, cdl_vec3 unit_dir)
+{
+    return cdl_emitter_intensity(as_solid(e)->point, unit_dir);
+}
+
+static cdl_vec3 to_local(const solid_emitter *s, cdl_vec3 v)
+{
+    return cdl_vec3_make(cdl_vec3_dot(v, s->axis[0]), cdl_vec3_dot(v, s->axis[1]), cdl_vec3_dot(v, s->axis[2]));
+}
+
+/* The roots t0 <= t1 of a t^2 + 2 b t + c = 0; 0 when there are none. */
+static int quadratic(double a, double b, double c, double *t0, double *t1)
+{
+    double disc = b * b - a * c;
+    if (!(disc >= 0.0) || !(a > 0.0)) return 0;
+    /* the root of larger magnitude first, the other from the product (no cancellation) */
+    double q = -(b + (b >= 0.0 ? sqrt(disc) : -sqrt(disc)));
+    double r0 = q / a, r1 = q != 0.0 ? c / q : 0.0;
+    *t0 = fmin(r0, r1);
+    *t1 = fmax(r0, r1);
+    return 1;
+}
+
+/* Narrows [*lo, *hi] to the t where o + t d lies in the slab |x| <= h. */
+static void slab(double o, double d, double h, double *lo, double *hi)
+{
+    if (d == 0.0) {
+        if (fabs(o) > h) *hi = -INFINITY;
+        return;
+    }
+    double a = (-h - o) / d, b = (h - o) / d;
+    *lo = fmax(*lo, fmin(a, b));
+    *hi = fmin(*hi, fmax(a, b));
+}
+
+/* Distance along the unit world direction dir from p to where the ray
+ * enters the solid; 0 when it misses or p is inside. */
+static double solid_entry(const solid_emitter *s, cdl_vec3 p, cdl_vec3 dir)
+{
+    cdl_vec3 o = to_local(s, cdl_vec3_sub(p, s->center)), d = to_local(s, dir);
+    double lo = -INFINITY, hi = INFINITY, t0, t1;
+    switch (s->opening.shape) {
+    case CDL_LUMINOUS_SHAPE_BOX:
+        slab(o.x, d.x, s->half[0], &lo, &hi);
+        slab(o.y, d.y, s->half[1], &lo, &hi);
+        slab(o.z, d.z, s->half[2], &lo, &hi);
+        break;
+    case CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER: {
+        /* (o + t d) in the plane of x, y within the radius */
+        double a = d.x * d.x + d.y * d.y, c = o.x * o.x + o.y * o.y - s->half[0] * s->half[0];
+        if (a > 0.0) {
+            if (!quadratic(a, o.x * d.x + o.y * d.y, c, &t0, &t1)) return 0.0;
+            lo = t0;
+            hi = t1;
+        } else if (c > 0.0) {
+            return 0.0;
+        }
+        slab(o.z, d.z, s->half[2], &lo, &hi);
+        break;
+    }
+    default: /* sphere */
+        if (!quadratic(1.0, cdl_vec3_dot(o, d), cdl_vec3_dot(o, o) - s->half[0] * s->half[0], &t0, &t1)) return 0.0;
+        lo = t0;
+        hi = t1;
+        break;
+    }
+    return lo <= hi && lo > 0.0 && isfinite(lo) ? lo : 0.0;
+}
+
+/* Luminance arriving at p along dir from the solid: L = I(w) / A_proj(w),
+ * w = -dir the direction of emission. */
+static double solid_luminance_towards(const solid_emitter *s, cdl_vec3 w)
+{
+    double A = cdl_luminous_opening_projected_area(&s->opening, to_local(s, w));
+    if (!(A > 0.0)) return 0.0;
+    return cdl_emitter_intensity(s->point, w).cd / A;
+}
+
+/* 1 - cos(theta_max) of the bounding sphere's cone from p (2 inside it:
+ * every direction), from sin^2 = R^2 / d^2 without cancellation. */
+static double cone_height(const solid_emitter *s, cdl_vec3 p, cdl_vec3 *axis)
+{
+    cdl_vec3 to = cdl_vec3_sub(s->center, p);
+    double d2 = cdl_vec3_dot(to, to), R2 = s->bound * s->bound;
+    if (!(d2 > R2)) {
+        *axis = s->axis[2];
+        return 2.0;
+    }
+    *axis = cdl_vec3_scale(to, 1.0 / sqrt(d2));
+    double sin2 = R2 / d2;
+    return sin2 / (1.0 + sqrt(1.0 - sin2));
+}
+
+static int solid_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1, double u2, cdl_light_sample *out)
+{
+    const solid_emitter *s = as_solid(e);
+    cdl_vec3 axis;
+    double h = cone_height(s, p, &axis);
+    /* uniform in solid angle within the cone: cos(theta) uniform in [1 - h, 1] */
+    double c = 1.0 - u1 * h, st = sqrt(fmax(0.0, (1.0 - c) * (1.0 + c))), phi = CDL_TWO_PI * u2;
+    cdl_frame f = cdl_frame_from_normal(axis);
+    cdl_vec3 dir = cdl_vec3_normalize(cdl_frame_to_world(&f, cdl_vec3_make(st * cos(phi), st * sin(phi), c)));
+    if (!(cdl_vec3_dot(dir, n) > 0.0)) return 0;
+    double t = solid_entry(s, p, dir);
+    if (!(t > 0.0)) return 0;
+    out->to_light = dir;
+    out->distance = t;
+    out->L = cdl_nits(solid_luminance_towards(s, cdl_vec3_neg(dir)));
+    out->pdf = 1.0 / (CDL_TWO_PI * h);
+    return out->L.cd_m2 > 0.0;
+}
+
+static cdl_luminance solid_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double *pdf)
+{
+    (void)n;
+    const solid_emitter *s = as_solid(e);
+    *pdf = 0.0;
+    if (!(solid_entry(s, p, dir) > 0.0)) return cdl_nits(0.0);
+    cdl_vec3 axis;
+    *pdf = 1.0 / (CDL_TWO_PI * cone_height(s, p, &axis));
+    return cdl_nits(solid_luminance_towards(s, cdl_vec3_neg(dir)));
+}
+
+static void solid_destroy(cdl_emitter *e)
+{
+    cdl_emitter_release(((solid_emitter *)e)->point);
+}
+
+static const cdl_emitter_ops solid_ops = {solid_flux,     solid_intensity, NULL, NULL, solid_sample,
+                                          solid_radiance, solid_destroy,   NULL, NULL};
+
+int cdl_emitter_solid_bounding_sphere(const cdl_emitter *emitter, cdl_shape *sphere)
+{
+    if (emitter->ops != &solid_ops) return 0;
+    const solid_emitter *s = as_solid(emitter);
+    memset(sphere, 0, sizeof *sphere);
+    sphere->kind = CDL_SHAPE_SPHERE;
+    sphere->center = s->center;
+    sphere->radius = s->bound;
+    return 1;
+}
+
+cdl_status cdl_emitter_create_goniometric_solid(const cdl_goniometric_params *p, cdl_emitter **out, cdl_error *err)
+{
+    *out = NULL;
+    const cdl_luminous_opening *op = &cdl_photometry_get_metadata(p->photometry)->opening;
+    cdl_emitter *point = NULL;
+    cdl_status st = cdl_emitter_create_goniometric(p, &point, err);
+    if (st != CDL_OK) return st;
+    solid_emitter *s = cdl_emitter_alloc(sizeof *s, CDL_EMITTER_GONIOMETRIC_OPENING, &solid_ops, err);
+    if (!s) {
+        cdl_emitter_release(point);
+        return CDL_ERR_INTERNAL;
+    }
+    s->point = point;
+    s->opening = *op;
+    s->center = p->position;
+    cdl_emitter_rotation_columns(p->rotation_deg, s->axis);
+    double r = 0.5 * op->width_m;
+    switch (op->shape) {
+    case CDL_LUMINOUS_SHAPE_BOX:
+        s->half[0] = 0.5 * op->length_m;
+        s->half[1] = r;
+        s->half[2] = 0.5 * op->height_m;
+        break;
+    case CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER:
+        s->half[0] = s->half[1] = r;
+        s->half[2] = 0.5 * op->height_m;
+        /* the projected area takes the cylinder's diameter from the width */
+        s->opening.length_m = op->width_m;
+        break;
+    default: /* sphere */
+        s->half[0] = s->half[1] = s->half[2] = r;
+        break;
+    }
+    s->bound = op->shape == CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER ? hypot(s->half[0], s->half[2])
+                                                                 : cdl_vec3_length(cdl_vec3_make(s->half[0], s->half[1], s->half[2]));
+    if (op->shape == CDL_LUMINOUS_SHAPE_SPHERE) s->bound = r;
+    *out = &s->base;
+    return CDL_OK;
+}
