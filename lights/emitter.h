@@ -195,9 +195,12 @@ void cdl_emitter_release(cdl_emitter *emitter);
  * every opening, for shadows. A luminous solid (a box with luminous
  * sides, vertical cylinder or sphere): every face point seen from w has
  * the luminance I(w) / A_proj(w) (cdl_luminous_opening_projected_area), so
- * the solid's intensity is I(w) and its flux the file's; no exact
- * illuminance (cdl_emitter_has_exact_illuminance is 0), samples uniform in
- * the solid angle of its bounding sphere with their exact pdf.
+ * the solid's intensity is I(w) and its flux the file's. Exact
+ * illuminance for a sphere the receiver sees whole (a cubature of its
+ * cone converged to 1e-5; it declines where the receiver's horizon cuts
+ * the sphere or the panels do not converge), none for boxes and cylinders
+ * (cdl_emitter_has_exact_illuminance is 0); samples uniform in the solid
+ * angle of the bounding sphere with their exact pdf.
  * See emitter_opening.c and emitter_solid.c. */
 cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *p, cdl_emitter **out,
                                                   cdl_error *err);

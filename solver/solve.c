@@ -480,6 +480,11 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         cJSON *item = cJSON_CreateObject();
         cJSON_AddStringToObject(item, "light", lights.lights[l].label);
         cJSON_AddStringToObject(item, "kind", lights.kinds[l]);
+        if (lights.lights[l].near_field_unspread)
+            cJSON_AddStringToObject(item, "near_field",
+                                    "\"always\" asked, but the file gives no luminous opening that is spread "
+                                    "(rectangle, circle, ellipse, box with luminous sides, vertical cylinder or "
+                                    "sphere of non-zero size): lit as a point");
         plan_grids[l] = cJSON_AddObjectToObject(item, "grids");
         cJSON_AddItemToArray(direct, item);
     }
@@ -678,6 +683,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         if (st != CDL_OK) goto fail;
     }
     st = cdl_solve_check_lights(scene, &ctx, out, err);
+    if (st == CDL_OK) st = cdl_solve_check_near_field(scene, &lights, out, err);
     if (st != CDL_OK) goto fail;
     cdl_solve_sum_power(scene, &lights, &out->power);
     if (opts.cache_path) {

@@ -9,7 +9,9 @@
  * the grids outside its beam) or surfaces hide it from every point (above
  * a ceiling, outside a closed room), and when its position lies far
  * outside the scene where a thousandth of it would lie inside, that it
- * looks like millimetres in a scene in metres. A grid at 0 lx everywhere,
+ * looks like millimetres in a scene in metres. A luminaire asked for
+ * near_field "always" whose file has no opening to spread over is named
+ * (it stays a point). A grid at 0 lx everywhere,
  * and a scene with no light at all, are named too. The warnings go to
  * summary.json; `candela solve` prints them and --strict refuses them.
  */
@@ -87,6 +89,27 @@ static int looks_like_millimetres(cdl_bounds3 box, cdl_vec3 p)
     double size = fmax(cdl_bounds3_diagonal(box), 1e-3);
     cdl_vec3 mm = cdl_vec3_scale(p, 1e-3);
     return !inside(box, p, 10.0 * size) && inside(box, mm, 0.5 * size + 3.0);
+}
+
+cdl_status cdl_solve_check_near_field(const cdl_scene *scene, const cdl_scene_lights *lights, cdl_solution *out,
+                                      cdl_error *err)
+{
+    for (size_t k = 0; k < scene->luminaire_count; ++k) {
+        const cdl_luminaire_spec *sp = &scene->luminaires[k];
+        const cdl_photometry *ph = lights->luminaire_photometry[k];
+        /* once per entry: its copies share the file */
+        if (sp->copy > 0 || sp->near_field != CDL_NEAR_FIELD_ALWAYS || !ph) continue;
+        const cdl_luminous_opening *o = &cdl_photometry_get_metadata(ph)->opening;
+        if (cdl_luminous_opening_is_spread(o)) continue;
+        cdl_status st = cdl_solution_add_warning(
+            out, err,
+            "%s: near_field \"always\": %s gives %s %s (%g x %g x %g m): lit as a point (spread are rectangles, "
+            "circles, ellipses, boxes with luminous sides, vertical cylinders and spheres of non-zero size)",
+            sp->json_path, sp->file, o->shape == CDL_LUMINOUS_SHAPE_POINT ? "no luminous opening, a" : "the opening",
+            cdl_luminous_shape_name(o->shape), o->width_m, o->length_m, o->height_m);
+        if (st != CDL_OK) return st;
+    }
+    return CDL_OK;
 }
 
 cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_context *ctx, cdl_solution *out,

@@ -14,6 +14,12 @@
 cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_context *ctx, cdl_solution *out,
                                   cdl_error *err);
 
+/* A warning for each luminaire entry with near_field "always" whose file
+ * gives no opening that is spread (cdl_luminous_opening_is_spread): it is
+ * lit as a point, which the scene did not ask for. */
+cdl_status cdl_solve_check_near_field(const cdl_scene *scene, const cdl_scene_lights *lights, cdl_solution *out,
+                                      cdl_error *err);
+
 /* Installed power: the input watts of every placed luminaire whose file
  * gives them; the others counted apart. */
 void cdl_solve_sum_power(const cdl_scene *scene, const cdl_scene_lights *lights, cdl_power_summary *power);

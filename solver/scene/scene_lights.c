@@ -423,9 +423,11 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
         p.apply_output_factor = 1;
         st = cdl_emitter_create_goniometric(&p, &e, err);
         bounds_add(&proto, sp->position);
-        if (st == CDL_OK && sp->near_field != CDL_NEAR_FIELD_NEVER &&
-            cdl_luminous_opening_is_spread(&cdl_photometry_get_metadata(ph)->opening))
+        int spread = cdl_luminous_opening_is_spread(&cdl_photometry_get_metadata(ph)->opening);
+        if (st == CDL_OK && sp->near_field != CDL_NEAR_FIELD_NEVER && spread)
             return add_near_field(scene, sp, &p, e, &proto, L, err);
+        /* "always" asked of a file with nothing to spread over: the plan and a warning say so */
+        proto.near_field_unspread = sp->near_field == CDL_NEAR_FIELD_ALWAYS;
         break;
     }
     case CDL_LUMINAIRE_AREA: {

@@ -61,6 +61,7 @@ typedef struct cdl_scene_light {
     cdl_vec3 near_center;
     double near_radius;               /* CDL_NEAR_FIELD_DISTANCES x the opening's largest dimension */
     int costly_exact;                 /* its exact E is a cubature (an opening of a non-Lambertian table) */
+    int near_field_unspread;          /* near_field "always" on a file whose opening is not spread: a point */
 } cdl_scene_light;
 
 /* Does the light reach p at all as far as its near-field split goes? */

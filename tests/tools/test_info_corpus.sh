@@ -48,7 +48,7 @@ for m in "ldt_gldf_two_lamp_sets_CRLF.ldt:lamp set 2 (alternative" "ldt_dlip_thr
 done
 # The luminous opening, one real file per shape code of the corpus: read
 # (shape and size in metres in the JSON), shown (the text's opening line;
-# the near-field distance for flat openings, luminance where the opening
+# the near-field distance for the openings the solver spreads, luminance where the opening
 # has area), and carried by convert: kept IES -> IES, EULUMDAT -> IES ->
 # EULUMDAT, and where EULUMDAT has no such shape, said on stderr.
 for m in "ies_lithonia_AF10_bf088.ies:rectangle:0.329184:1.2192:0" \
@@ -69,7 +69,7 @@ for m in "ies_lithonia_AF10_bf088.ies:rectangle:0.329184:1.2192:0" \
   text=$("$CANDELA" info "$dir/$f")
   check "$f: the opening shown" '[[ "$text" == *"opening         $shape"* ]]'
   case "$shape" in
-    rectangle|circle) check "$f: the near-field distance shown" '[[ "$text" == *"near field      spread over its opening within"* ]]' ;;
+    rectangle|circle|box|"vertical cylinder"|sphere) check "$f: the near-field distance shown" '[[ "$text" == *"near field      spread over its opening within"* ]]' ;;
     *) check "$f: no near field for a $shape" '[[ "$text" != *"near field      "* ]]' ;;
   esac
   "$CANDELA" convert -q "$dir/$f" "$tmp/o.ies" && back=$("$CANDELA" info "$tmp/o.ies")

@@ -2,13 +2,16 @@
  * luminous opening ("near_field" on the luminaire), against closed forms.
  *  - "auto": the opening within 5 opening sizes, the point beyond, and the
  *    plan says which per light and grid; "never" a point; a file without an
- *    opening a point whatever is asked.
+ *    opening a point whatever is asked, named in the plan and a warning.
  *  - A Lambertian table on a disk written as an ellipse (the cubature) at
  *    quality "high": every point against the disk's configuration factor.
  *  - Soft shadows: a Lambertian rectangle half hidden by a black plate,
  *    the penumbra against the contour integral of the visible part; a
  *    skewed table the same way against the integral of its visible part,
  *    sampled to quality "high", the stated errors calibrated.
+ *  - A sphere of uniform luminance spread over its surface: E = I cos / d^2
+ *    exactly wherever all of it is seen; the sphere-to-tilted-element
+ *    factor where the horizon cuts it, sampled to "high", calibrated.
  *  - Interreflection lit by openings: the integrating sphere, by paths and
  *    by the irradiance cache.
  */
@@ -21,6 +24,7 @@
 #include "file_fixture.h"
 #include "radiometry/constants.h"
 #include "solver/solve_fixture.h"
+#include "sphere_factor.h"
 
 #define I0 1000.0
 
@@ -134,6 +138,13 @@ static void test_modes(void)
         const char *always_text = strstr(sol.plan_json, "near field \\\"always\\\": spread over its luminous opening");
         CHECK_MSG((m == 1) == (always_text != NULL), "mode %s: plan %s the opening everywhere", modes[m],
                   always_text ? "names" : "does not name");
+        /* the opening-less file asked for "always" stays a point, and says so */
+        CHECK(strstr(sol.plan_json, "lit as a point") != NULL);
+        int warned = 0;
+        for (size_t w = 0; w < sol.warning_count; ++w)
+            warned += strstr(sol.warnings[w], "luminaires[1]: near_field \"always\"") != NULL &&
+                      strstr(sol.warnings[w], "no luminous opening") != NULL;
+        CHECK_MSG(warned == 1, "mode %s: %d warnings that luminaires[1] stays a point", modes[m], warned);
         fixture_release(scene, &sol);
     }
     CHECK(near_ext < 0.95 * near_pt); /* the probe is truly in the near field */
@@ -296,6 +307,74 @@ static void test_soft_shadow(void)
     calibration_check(&tally, "penumbra of a Lambertian opening");
 }
 
+/* A sphere of uniform luminance (LM-63-2002 code -D -D -D, I = 500 cd in
+ * every direction, 0.3 m across) spread over its surface ("always"), from
+ * 1.1 r to 10 r: an element that sees it whole gets E = I cos(theta) /
+ * d^2 (Lambert: a uniform sphere is a point to it), exact (the cone's
+ * cubature, 1e-5; stated error 0); an element tilted past that, whose
+ * horizon cuts the sphere, gets L pi F (sphere_factor.h), sampled to
+ * quality "high" within five stated sigmas, calibrated over 4 seeds. */
+static void test_sphere(void)
+{
+    char path[600], json[16384];
+    snprintf(path, sizeof path, "%s/sphere.ies", folder);
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (!f) return;
+    fprintf(f, "IESNA:LM-63-2002\n[TEST] sphere\nTILT=NONE\n1 -1 1 3 1 1 2 -0.3 -0.3 -0.3\n1 1 0\n0 90 180\n0\n"
+               "500 500 500\n");
+    CHECK(fclose(f) == 0);
+    const double r = 0.15, I = 500.0, L = I / (CDL_PI * r * r), target = 1e-3;
+    enum { N = 24 };
+    double want[N];
+    int whole[N];
+    calibration tally = CALIBRATION_INIT;
+    for (int seed = 1; seed <= 4; ++seed) {
+        int at = snprintf(json, sizeof json,
+                          "{\"version\": 1, \"luminaires\": [{\"type\": \"goniometric\", \"file\": \"%s\", "
+                          "\"position\": [0, 0, 2], \"near_field\": \"always\"}], \"grids\": [{\"name\": \"p\", "
+                          "\"type\": \"points\", \"points\": [",
+                          path);
+        for (int k = 0; k < N; ++k) {
+            /* distance 1.1 r .. 10 r along a direction turning round the
+             * sphere; even k tilted within the angle that sees it whole,
+             * odd k past it, up to where it sets */
+            double d = r * (1.1 + 8.9 * k / (N - 1)), az = 0.7 * k, el = -1.2 + 2.4 * k / (N - 1);
+            double rise = acos(r / d), set = 0.5 * CDL_PI + asin(r / d);
+            double theta = k % 2 == 0 ? 0.45 * (k % 4) * rise : rise + (0.2 + 0.25 * (k % 4)) * (set - rise);
+            double dir[3] = {cos(el) * cos(az), cos(el) * sin(az), sin(el)}, across[3] = {-sin(az), cos(az), 0.0}, n[3];
+            /* the normal: towards the centre, turned by theta about a direction across it */
+            for (int i = 0; i < 3; ++i) n[i] = -dir[i] * cos(theta) + across[i] * sin(theta);
+            whole[k] = k % 2 == 0;
+            want[k] = L * CDL_PI * sphere_factor(r, d, theta);
+            at += snprintf(json + at, sizeof json - (size_t)at,
+                           "%s{\"p\": [%.17g, %.17g, %.17g], \"n\": [%.17g, %.17g, %.17g]}", k ? ", " : "",
+                           d * dir[0], d * dir[1], 2.0 + d * dir[2], n[0], n[1], n[2]);
+        }
+        snprintf(json + at, sizeof json - (size_t)at,
+                 "]}], \"solver\": {\"method\": \"direct\", \"quality\": \"high\", \"seed\": %d}}", seed);
+        cdl_scene *scene;
+        cdl_solution sol;
+        if (!fixture_solve(json, &scene, &sol, 2)) return;
+        const cdl_grid_solution *g = &sol.grids[0];
+        for (int k = 0; k < N; ++k) {
+            if (whole[k]) {
+                CHECK_MSG(g->E_stderr[k] == 0.0 && fabs(g->E[k] - want[k]) <= 2e-5 * want[k],
+                          "sphere probe %d seeing it whole: %.9g +- %.3g, expected %.9g exactly", k, g->E[k],
+                          g->E_stderr[k], want[k]);
+                continue;
+            }
+            CHECK_MSG(fabs(g->E[k] - want[k]) <= 5.0 * g->E_stderr[k],
+                      "sphere probe %d: %.7g +- %.3g, expected %.7g", k, g->E[k], g->E_stderr[k], want[k]);
+            if (g->E_stderr[k] > 0.0) calibration_add(&tally, g->E[k], want[k], g->E_stderr[k], target);
+        }
+        CHECK(strstr(sol.plan_json, "near field \\\"always\\\": spread over its luminous opening") != NULL);
+        fixture_release(scene, &sol);
+    }
+    CHECK(tally.count >= 40);
+    calibration_check(&tally, "sphere cut by the horizon, quality high");
+}
+
 /* Interreflection lit by the opening: inside an integrating sphere
  * (radius 1, reflectance rho) every wall point receives the interreflected
  * illuminance rho Phi / (A (1 - rho)) whatever the source's shape and
@@ -334,6 +413,7 @@ int main(void)
     test_cubature();
     test_skewed_shadow();
     test_soft_shadow();
+    test_sphere();
     test_interreflection();
     return check_finish();
 }
