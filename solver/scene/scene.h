@@ -92,7 +92,9 @@ typedef enum cdl_luminaire_kind {
  * extended emitter, cdl_emitter_create_goniometric_opening) instead of a
  * point: AUTO at calculation points nearer than CDL_NEAR_FIELD_DISTANCES
  * times the opening's largest dimension, ALWAYS everywhere, NEVER nowhere.
- * A file whose opening is not flat with a non-zero size stays a point. */
+ * A file whose opening is not spread (cdl_luminous_opening_is_spread: flat,
+ * or a box with luminous sides, vertical cylinder or sphere, of non-zero
+ * size) stays a point; under ALWAYS the plan and a warning say so. */
 typedef enum cdl_near_field_mode { CDL_NEAR_FIELD_AUTO = 0, CDL_NEAR_FIELD_ALWAYS, CDL_NEAR_FIELD_NEVER } cdl_near_field_mode;
 #define CDL_NEAR_FIELD_DISTANCES 5.0
 

@@ -150,6 +150,15 @@ static void test_modes(void)
     CHECK(near_ext < 0.95 * near_pt); /* the probe is truly in the near field */
 }
 
+/* Closes the points array of a scene written into json[0..at) with a
+ * direct solve at quality "high" and `seed`, and solves it on 2 threads. */
+static int solve_points_high(char *json, size_t size, int at, int seed, cdl_scene **scene, cdl_solution *sol)
+{
+    snprintf(json + at, size - (size_t)at,
+             "]}], \"solver\": {\"method\": \"direct\", \"quality\": \"high\", \"seed\": %d}}", seed);
+    return fixture_solve(json, scene, sol, 2);
+}
+
 /* The same disk (0.6 m) written with the 1995 ellipse code (no closed
  * form: the adaptive cubature) at quality "high", 64 probes from 2 cm to
  * 3 m below, on and off the axis: exact (no stated error) and within the
@@ -241,11 +250,9 @@ static void test_skewed_shadow(void)
         for (int k = 0; k < n; ++k)
             at += snprintf(json + at, sizeof json - (size_t)at, "%s{\"p\": [%.17g, 0, 0], \"n\": [0, 0, 1]}",
                            k ? ", " : "", -2.4 + 4.8 * k / (n - 1));
-        snprintf(json + at, sizeof json - (size_t)at,
-                 "]}], \"solver\": {\"method\": \"direct\", \"quality\": \"high\", \"seed\": %d}}", seed);
         cdl_scene *scene;
         cdl_solution sol;
-        if (!fixture_solve(json, &scene, &sol, 2)) return;
+        if (!solve_points_high(json, sizeof json, at, seed, &scene, &sol)) return;
         const cdl_grid_solution *g = &sol.grids[0];
         for (int k = 0; k < n; ++k) {
             double px = -2.4 + 4.8 * k / (n - 1);
@@ -351,11 +358,9 @@ static void test_sphere(void)
                            "%s{\"p\": [%.17g, %.17g, %.17g], \"n\": [%.17g, %.17g, %.17g]}", k ? ", " : "",
                            d * dir[0], d * dir[1], 2.0 + d * dir[2], n[0], n[1], n[2]);
         }
-        snprintf(json + at, sizeof json - (size_t)at,
-                 "]}], \"solver\": {\"method\": \"direct\", \"quality\": \"high\", \"seed\": %d}}", seed);
         cdl_scene *scene;
         cdl_solution sol;
-        if (!fixture_solve(json, &scene, &sol, 2)) return;
+        if (!solve_points_high(json, sizeof json, at, seed, &scene, &sol)) return;
         const cdl_grid_solution *g = &sol.grids[0];
         for (int k = 0; k < N; ++k) {
             if (whole[k]) {
