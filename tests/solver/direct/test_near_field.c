@@ -380,12 +380,13 @@ static void test_sphere(void)
     calibration_check(&tally, "sphere cut by the horizon, quality high");
 }
 
-/* Interreflection lit by the opening: inside an integrating sphere
- * (radius 1, reflectance rho) every wall point receives the interreflected
- * illuminance rho Phi / (A (1 - rho)) whatever the source's shape and
- * distribution (solve_fixture.h). The office's 1.2 m linear luminaire and
- * 0.15 m downlight spread over their openings ("always": their tables are
- * not Lambertian, so next-event estimation samples the openings), by
+/* Interreflection lit by openings and a luminous solid: inside an
+ * integrating sphere (radius 1, reflectance rho) every wall point receives
+ * the interreflected illuminance rho Phi / (A (1 - rho)) whatever the
+ * source's shape and distribution (solve_fixture.h). The office's 1.2 m
+ * linear luminaire and 0.15 m downlight spread over their openings
+ * ("always": their tables are not Lambertian, so next-event estimation
+ * samples the openings), and a tilted 0.6 m luminous box (sampled), by
  * paths and by the irradiance cache, each point within five stated sigmas,
  * the sigmas calibrated over all of them. */
 static void test_interreflection(void)
@@ -397,9 +398,24 @@ static void test_interreflection(void)
     const char *down = "{\"type\": \"goniometric\", \"file\": \"" CANDELA_SOURCE_DIR
                        "/data/office/downlight.ies\", \"position\": [0, 0.2, 0.7], \"flux_lm\": 3000, "
                        "\"near_field\": \"always\"}";
+    /* a luminous box (0.6 x 0.2 x 0.1 m, brighter below), tilted: sampled, no closed form */
+    char box_path[600], box[1024];
+    snprintf(box_path, sizeof box_path, "%s/box.ies", folder);
+    FILE *f = fopen(box_path, "w");
+    CHECK(f != NULL);
+    if (!f) return;
+    fprintf(f, "IESNA:LM-63-2002\n[TEST] box\nTILT=NONE\n1 -1 1 3 1 1 2 0.2 0.6 0.1\n1 1 0\n0 90 180\n0\n"
+               "900 400 100\n");
+    CHECK(fclose(f) == 0);
+    snprintf(box, sizeof box,
+             "{\"type\": \"goniometric\", \"file\": \"%s\", \"position\": [0, -0.2, 0.1], \"rotation\": [20, 0, "
+             "40], \"flux_lm\": 3000, \"near_field\": \"always\"}",
+             box_path);
     const char *methods[2] = {"pathtrace", "icache"};
     for (int m = 0; m < 2; ++m) {
         char label[128];
+        snprintf(label, sizeof label, "sphere, luminous box, %s", methods[m]);
+        fixture_sphere_check(0.6, box, 3000.0, 20, methods[m], 0.01, &tally, label);
         snprintf(label, sizeof label, "sphere, linear opening, %s", methods[m]);
         fixture_sphere_check(0.5, linear, 3000.0, 20, methods[m], 0.01, &tally, label);
         snprintf(label, sizeof label, "sphere, downlight opening, %s", methods[m]);
