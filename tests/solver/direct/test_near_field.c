@@ -314,6 +314,20 @@ static void test_soft_shadow(void)
     calibration_check(&tally, "penumbra of a Lambertian opening");
 }
 
+/* An LM-63-2002 file of one plane, gamma 0, 90 and 180 with the three
+ * intensities `candela`, and the opening "W L H" in metres, written to path. */
+static int write_one_plane_ies(const char *path, const char *opening, const char *candela)
+{
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (!f) return 0;
+    fprintf(f, "IESNA:LM-63-2002\n[TEST] solid\nTILT=NONE\n1 -1 1 3 1 1 2 %s\n1 1 0\n0 90 180\n0\n%s\n", opening,
+            candela);
+    int ok = fclose(f) == 0;
+    CHECK(ok);
+    return ok;
+}
+
 /* A sphere of uniform luminance (LM-63-2002 code -D -D -D, I = 500 cd in
  * every direction, 0.3 m across) spread over its surface ("always"), from
  * 1.1 r to 10 r: an element that sees it whole gets E = I cos(theta) /
@@ -325,12 +339,7 @@ static void test_sphere(void)
 {
     char path[600], json[16384];
     snprintf(path, sizeof path, "%s/sphere.ies", folder);
-    FILE *f = fopen(path, "w");
-    CHECK(f != NULL);
-    if (!f) return;
-    fprintf(f, "IESNA:LM-63-2002\n[TEST] sphere\nTILT=NONE\n1 -1 1 3 1 1 2 -0.3 -0.3 -0.3\n1 1 0\n0 90 180\n0\n"
-               "500 500 500\n");
-    CHECK(fclose(f) == 0);
+    if (!write_one_plane_ies(path, "-0.3 -0.3 -0.3", "500 500 500")) return;
     const double r = 0.15, I = 500.0, L = I / (CDL_PI * r * r), target = 1e-3;
     enum { N = 24 };
     double want[N];
@@ -401,12 +410,7 @@ static void test_interreflection(void)
     /* a luminous box (0.6 x 0.2 x 0.1 m, brighter below), tilted: sampled, no closed form */
     char box_path[600], box[1024];
     snprintf(box_path, sizeof box_path, "%s/box.ies", folder);
-    FILE *f = fopen(box_path, "w");
-    CHECK(f != NULL);
-    if (!f) return;
-    fprintf(f, "IESNA:LM-63-2002\n[TEST] box\nTILT=NONE\n1 -1 1 3 1 1 2 0.2 0.6 0.1\n1 1 0\n0 90 180\n0\n"
-               "900 400 100\n");
-    CHECK(fclose(f) == 0);
+    if (!write_one_plane_ies(box_path, "0.2 0.6 0.1", "900 400 100")) return;
     snprintf(box, sizeof box,
              "{\"type\": \"goniometric\", \"file\": \"%s\", \"position\": [0, -0.2, 0.1], \"rotation\": [20, 0, "
              "40], \"flux_lm\": 3000, \"near_field\": \"always\"}",
