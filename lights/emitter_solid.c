@@ -16,8 +16,9 @@
  * The file's I(w) is the whole luminaire's intensity, so the solid is
  * given the luminance that is uniform over its outline seen from w:
  *     L(w) = I(w) / A_proj(w)
- * at every surface point that faces w (Radiance's ies2rad spreads its
- * "box", "cylinder" and "sphere" sources the same way). Then the intensity
+ * at every surface point that faces w (the luminance of a source seen as
+ * a whole, CIE S 017 17-21-050, which cdl_photometry_opening_luminance
+ * reports for the same shapes). Then the intensity
  * of the whole solid, int L cos(theta_o) dA over the faces w sees, is
  * A_proj L = I(w) exactly: the far field is the point model and the flux
  * the file's.
