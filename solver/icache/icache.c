@@ -21,6 +21,10 @@
  * 512 x 1024 strata, 524 288 paths. */
 #define OWN_MAX_SIDE 512
 
+/* Further gathers a record of its own may take when its gather states more
+ * than its budget (gather_records). */
+#define OWN_REGATHERS 3
+
 /* Placement passes after the seeds; each adds records only where points
  * ask for them, so few passes do anything. */
 #define MAX_PASSES 16
@@ -273,7 +277,7 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
         cdl_vec3 p = job->grid->points[i], n = job->grid->normals[i];
         uint64_t stream = cdl_rng_stream_id((uint64_t)job->grid_index, (uint64_t)i, 0x6963616368 /* "icach" */);
         /* Pilot: how variable are this record's paths. */
-        uint64_t stage_base = job->own ? 2 : 0;
+        uint64_t stage_base = job->own ? 2 : 0; /* own: streams 2, 3, ... */
         cdl_rng_key key = {ctx->path.seed, cdl_rng_stream_id(stream, stage_base, 1)};
         cdl_icache_record pilot;
         if (!cdl_icache_gather(&ctx->path, key, p, n, PILOT_M, PILOT_N, &pilot, stats, NULL))
@@ -298,6 +302,21 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
         key.stream = cdl_rng_stream_id(stream, stage_base + 1, 1);
         if (!cdl_icache_gather(&ctx->path, key, p, n, k, 2 * k, &job->out[r], stats, &job->tallies[r]))
             return cdl_error_out_of_memory(err);
+        /* A record of its own whose gather still states more than its
+         * budget (a pilot of 128 paths can miss the rare bright paths of a
+         * dark gap: 8 % stated at a 2 % target in the test's gap) is
+         * gathered anew, independently, planned from the last gather as
+         * its pilot; the last gather alone is reported (estimate.h: its
+         * size depends only on gathers before it). */
+        for (int again = 0; job->own && again < OWN_REGATHERS && job->out[r].var > budget && k < OWN_MAX_SIDE;
+             ++again) {
+            double n_last = 2.0 * k * k;
+            cdl_estimate last = {n_last, job->out[r].E * n_last, job->out[r].var * n_last * n_last, 1};
+            k = cdl_estimate_side_for(cdl_estimate_plan(&last, budget, n_last), k, OWN_MAX_SIDE);
+            key.stream = cdl_rng_stream_id(stream, stage_base + 2 + (uint64_t)again, 1);
+            if (!cdl_icache_gather(&ctx->path, key, p, n, k, 2 * k, &job->out[r], stats, &job->tallies[r]))
+                return cdl_error_out_of_memory(err);
+        }
     }
     return CDL_OK;
 }
