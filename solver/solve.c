@@ -586,6 +586,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
                 out->records_gathered += records[g].count - preloaded;
                 cJSON_AddNumberToObject(gi, "records", (double)(ic_stats.records - before.records));
                 cJSON_AddNumberToObject(gi, "placement_passes", (double)ic_stats.passes);
+                cJSON_AddNumberToObject(gi, "points_served_alone", (double)(ic_stats.alone - before.alone));
             } else {
                 uint64_t paths = pt_stats.paths;
                 st = cdl_pathtrace_solve_grid(&pt, &gs->grid, (size_t)grid_key(spec->name), gs->E_direct, gs->E_stderr, gs->E_indirect, gs->E,

@@ -28,6 +28,10 @@
  * (sum w_i)^2, plus the interpolation's, the spread of the records'
  * extrapolations to p beyond what their noise explains (where records
  * seen from p disagree, the interpolant is uncertain by about that much).
+ * A point whose stated error, with its direct light's, is still above the
+ * target after placement is given a record of its own, gathered to the
+ * point's whole target and serving no other point (icache.c: OWN_RADIUS),
+ * so that every point meets the target.
  */
 #ifndef CANDELA_SOLVER_ICACHE_H
 #define CANDELA_SOLVER_ICACHE_H
@@ -56,6 +60,7 @@ typedef struct cdl_icache_stats {
     cdl_path_stats paths;     /* of all gathers */
     size_t records, passes;
     size_t gather_rays;       /* rays per record, the largest gather */
+    size_t alone;             /* points given a record of their own: their interpolation stated more than the target */
 } cdl_icache_stats;
 
 /* The interreflected illuminance at every point of a grid and its variance,

@@ -318,7 +318,7 @@ static const char *record_fault(const double v[RECORD_DOUBLES])
         if (!isfinite(v[k])) return names[k];
     if (!(v[16] > 0.0)) return "harmonic (expected > 0, or +infinity)";
     if (!(v[7] >= 0.0)) return "var (expected a variance >= 0)";
-    if (!(v[8] > 0.0)) return "radius (expected > 0)";
+    if (!(v[8] >= 0.0)) return "radius (expected >= 0; 0: a record serving only its own point)";
     if (!(v[15] <= 1.0 && v[15] >= 0.0)) return "open (expected a fraction in [0, 1])";
     return NULL;
 }

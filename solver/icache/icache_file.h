@@ -69,8 +69,9 @@
  * reading: Candela's, and the revision of how records are made. Bump the
  * revision whenever gathering, placement or interpolation would make other
  * records from the same scene and settings (2: records held to twice a
- * point's variance target, second-order term in the interpolation). */
-#define CDL_ICACHE_MAKER CANDELA_VERSION " records-2"
+ * point's variance target, second-order term in the interpolation; 3:
+ * spacing from the points, records of radius 0 serving their own point). */
+#define CDL_ICACHE_MAKER CANDELA_VERSION " records-3"
 #define CDL_ICACHE_FILE_NAME_MAX 4096    /* longest grid name, bytes */
 
 /* The solver settings records depend on (not threads, outputs or colours). */
