@@ -243,6 +243,7 @@ static double unoccluded_sum(const cdl_scene_lights *lights, cdl_vec3 p, cdl_vec
     *bounded = 1;
     for (size_t l = 0; l < lights->count; ++l) {
         const cdl_emitter *e = lights->emitters[l];
+        if (!cdl_scene_light_applies(&lights->lights[l], p)) continue; /* the other part of a near-field split */
         if (cdl_emitter_is_delta(e)) {
             cdl_delta_light d;
             if (cdl_emitter_eval_delta(e, p, n, &d) && d.E.lx > 0.0) sum += d.E.lx;
@@ -290,6 +291,7 @@ static double robust_delta_sum(const cdl_scene_geometry *geometry, const cdl_sce
     double delta = 16.0 * cdl_scene_geometry_resolution(geometry, p), sum = 0.0;
     for (size_t l = 0; l < lights->count; ++l) {
         const cdl_emitter *e = lights->emitters[l];
+        if (!cdl_scene_light_applies(&lights->lights[l], p)) continue; /* the other part of a near-field split */
         cdl_delta_light d;
         if (!cdl_emitter_is_delta(e) || !cdl_emitter_eval_delta(e, p, n, &d) || !(d.E.lx > 0.0)) continue;
         int seen = !cdl_scene_geometry_ray_occluded(geometry, p, n, d.to_light, d.distance);
@@ -324,6 +326,10 @@ static void check_against_rays(const cdl_scene *scene, const cdl_solution *sol)
             int bounded = 1;
             for (size_t l = 0; l < lights.count; ++l) {
                 const cdl_emitter *e = lights.emitters[l];
+                /* A luminaire split by "near_field": "auto" is its opening
+                 * near it and its point beyond; each part counts where the
+                 * solver uses it. */
+                if (!cdl_scene_light_applies(&lights.lights[l], p)) continue;
                 if (!cdl_emitter_is_delta(e)) {
                     cdl_illuminance exact;
                     if (cdl_emitter_exact_illuminance(e, p, n, &exact, NULL) == CDL_OK) hi += exact.lx;
