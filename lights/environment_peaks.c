@@ -74,14 +74,7 @@ static double cap_flux(const cdl_vec3 *poly, int count, double c, double s, cdl_
         else entries[nr++] = end_phi[k];
     }
     for (int a = 0; a < ne; ++a) {
-        double best = INFINITY;
-        for (int b = 0; b < nr; ++b) {
-            double d = entries[b] - exits[a];
-            if (d <= -CDL_PI) d += CDL_TWO_PI;
-            if (d > CDL_PI) d -= CDL_TWO_PI;
-            /* an entry at the exit itself may come out a rounding error behind it */
-            if (d > -1e-12 && d < best) best = d;
-        }
+        double best = cdl_env_next_entry(entries, nr, exits[a]);
         if (isfinite(best)) flux += cdl_env_parallel_flux(c, s, exits[a], exits[a] + best, n);
     }
     return 0.5 * flux;

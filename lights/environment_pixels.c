@@ -128,15 +128,8 @@ static double horizon_arcs(cdl_vec3 n, const piece *pieces, int count)
     }
     double total = 0.0;
     for (int a = 0; a < ne; ++a) {
-        double best = INFINITY;
-        for (int b = 0; b < nr; ++b) {
-            double d = entries[b] - exits[a];
-            if (d <= -CDL_PI) d += CDL_TWO_PI;
-            if (d > CDL_PI) d -= CDL_TWO_PI;
-            /* A re-entry at the exit itself (the boundary touching the
-             * horizon) may come out a rounding error behind it. */
-            if (d > -1e-12 && d < best) best = d;
-        }
+        /* (the boundary touching the horizon re-enters at the exit itself) */
+        double best = cdl_env_next_entry(entries, nr, exits[a]);
         if (isfinite(best) && best > 0.0) total += best;
     }
     return total;
@@ -333,4 +326,16 @@ double cdl_env_pixels_illuminance(const cdl_env_pixels *px, cdl_vec3 n, double *
         E += row_sum;
     }
     return px->scale * E;
+}
+
+double cdl_env_next_entry(const double *entries, int count, double exit)
+{
+    double best = INFINITY;
+    for (int b = 0; b < count; ++b) {
+        double d = entries[b] - exit;
+        if (d <= -CDL_PI) d += CDL_TWO_PI;
+        if (d > CDL_PI) d -= CDL_TWO_PI;
+        if (d > -1e-12 && d < best) best = d;
+    }
+    return best;
 }

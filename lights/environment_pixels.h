@@ -84,6 +84,12 @@ double cdl_env_parallel_flux(double cos_t0, double sin_t0, double phi1, double p
  * ascending in out[0 .. 2); returns their count (0 to 2). */
 int cdl_env_sinusoid_roots(double A, double B, double C, double lo, double hi, double *out);
 
+/* Going round a boundary that leaves a region at angle `exit` (radians),
+ * the signed angle to the nearest of the `count` re-entry angles ahead of
+ * it, taken in (-pi, pi] (an entry at the exit itself may come out a
+ * rounding error behind it: down to -1e-12 counts); INFINITY when none. */
+double cdl_env_next_entry(const double *entries, int count, double exit);
+
 /* The pixel geometry of an image environment; NULL for any other emitter
  * (emitter_environment.c). */
 const cdl_env_pixels *cdl_emitter_environment_pixels(const cdl_emitter *emitter);

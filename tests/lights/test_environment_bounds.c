@@ -13,19 +13,7 @@
 #include "radiometry/constants.h"
 #include "radiometry/rng.h"
 
-static cdl_emitter *make_image(int W, int H, const float *img, int upper)
-{
-    cdl_environment_params p = CDL_ENVIRONMENT_PARAMS_DEFAULT;
-    p.image = img;
-    p.width = W;
-    p.height = H;
-    p.scale = 1.5;
-    p.upper_hemisphere_only = upper;
-    cdl_emitter *e = NULL;
-    cdl_error err;
-    CHECK_OK(cdl_emitter_create_environment(&p, &e, &err), &err);
-    return e;
-}
+#include "lights/environment_fixture.h"
 
 static cdl_vec3 unit(double x, double y, double z)
 {
@@ -93,7 +81,7 @@ int main(void)
             img[i] = (float)(1000.0 * u[0] * u[0] + (u[1] < 0.001 ? 1e6 : 0.0));
         }
         for (int upper = 0; upper <= 1; ++upper) {
-            cdl_emitter *e = make_image(W, H, img, upper);
+            cdl_emitter *e = environment_fixture_image(W, H, img, upper);
             if (!e) break;
             CHECK(check_contains(e, 0.05, (uint64_t)(10 * k + upper)) == 300);
             CHECK(check_contains(e, 0.8, (uint64_t)(10 * k + upper + 5)) == 300);
@@ -112,7 +100,7 @@ int main(void)
         static float img[W * H];
         for (int j = 0; j < H; ++j)
             for (int i = 0; i < W; ++i) img[j * W + i] = j < 12 ? 2000.0f : 0.0f;
-        cdl_emitter *e = make_image(W, H, img, 0);
+        cdl_emitter *e = environment_fixture_image(W, H, img, 0);
         if (e) {
             double t = tan(30.0 * CDL_PI / 180.0);
             cdl_vec3 zen[4] = {unit(t, 0, 1), unit(0, t, 1), unit(-t, 0, 1), unit(0, -t, 1)};

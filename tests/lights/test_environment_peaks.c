@@ -19,19 +19,7 @@
 #include "radiometry/constants.h"
 #include "radiometry/rng.h"
 
-static cdl_emitter *make_image(int W, int H, const float *img, int upper)
-{
-    cdl_environment_params p = CDL_ENVIRONMENT_PARAMS_DEFAULT;
-    p.image = img;
-    p.width = W;
-    p.height = H;
-    p.scale = 1.5;
-    p.upper_hemisphere_only = upper;
-    cdl_emitter *e = NULL;
-    cdl_error err;
-    CHECK_OK(cdl_emitter_create_environment(&p, &e, &err), &err);
-    return e;
-}
+#include "lights/environment_fixture.h"
 
 static cdl_vec3 random_direction(cdl_rng_key key, uint64_t index)
 {
@@ -61,7 +49,7 @@ static int check_partition(int W, int H, int upper, uint64_t stream)
 {
     float *img = malloc((size_t)W * H * sizeof *img);
     for (int i = 0; i < W * H; ++i) img[i] = 10.0f;
-    cdl_emitter *e = make_image(W, H, img, upper);
+    cdl_emitter *e = environment_fixture_image(W, H, img, upper);
     cdl_rng_key key = {11, stream};
     uint64_t k = 0;
     int checked = 0;
@@ -112,7 +100,7 @@ static void check_whole_cell(void)
     enum { W = 48, H = 24 };
     static float img[W * H];
     for (int i = 0; i < W * H; ++i) img[i] = 1.0f;
-    cdl_emitter *e = make_image(W, H, img, 0);
+    cdl_emitter *e = environment_fixture_image(W, H, img, 0);
     const cdl_env_pixels *px = cdl_emitter_environment_pixels(e);
     static const int cells[][2] = {{3, 2}, {30, 11}, {47, 20}, {0, 0}, {17, 23}};
     for (int c = 0; c < 5; ++c) {
@@ -149,7 +137,7 @@ static void check_cut(void)
         for (int i = 0; i < W; ++i) img[j * W + i] = 1.0f + 3.0f * (float)j / H;
     for (int j = 8; j < 10; ++j)
         for (int i = 40; i < 42; ++i) img[j * W + i] = 1e6f;
-    cdl_emitter *e = make_image(W, H, img, 0);
+    cdl_emitter *e = environment_fixture_image(W, H, img, 0);
     const cdl_env_pixels *px = cdl_emitter_environment_pixels(e);
     /* a polygon about the sun's middle, wide enough to hold it whole */
     double th = px->theta_a[9], ph = px->phi_a[41];
