@@ -181,7 +181,8 @@ void cdl_emitter_release(cdl_emitter *emitter);
 /* Near field: the goniometric luminaire of `p` spread over the luminous
  * opening of its photometry (metadata.opening; cdl_luminous_opening_is_spread
  * must hold), an extended emitter. A flat opening (a rectangle, circle or
- * ellipse of non-zero size): each element dA of the opening emits I(w) dA / A towards w, so
+ * ellipse of non-zero size in the luminaire's x-y plane, or LM-63-2019's
+ * vertical circle or ellipse in its y-z plane): each element dA of the opening emits I(w) dA / A towards w, so
  * the opening's luminance is I(w) / (A |cos theta_o|): downward light
  * (gamma < 90) from its lower face, upward light from its upper face; the
  * flux and the far-field intensity are the point emitter's. Exact
@@ -211,6 +212,29 @@ cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *
  * sphere (a CDL_SHAPE_SPHERE). Returns 0 (and sets nothing) for
  * other kinds. What a solver needs to bound where the light comes from. */
 int cdl_emitter_opening_face(const cdl_emitter *emitter, cdl_shape *face);
+
+/* The rectangle bounding a flat goniometric opening emitter (the
+ * rectangle itself, or the one around a circle or ellipse), its four
+ * corners in world coordinates in order round it. Returns 0 (and sets
+ * nothing) for luminous solids and other kinds. */
+int cdl_emitter_opening_bounding_rectangle(const cdl_emitter *emitter, cdl_vec3 corner[4]);
+
+/* Illuminance at p on the plane of n (unit) from the part of a flat
+ * goniometric opening emitter that lies within the given convex polygons
+ * (world points in the opening's plane, `counts[k]` corners for polygon k,
+ * the polygons one after another in `points`, not overlapping): the
+ * opening's integral E = (1 / A) int I(w_x) cos(theta_r) / r_x^2 dA_x
+ * restricted to them, the polygons clipped to the opening (a circle's or
+ * ellipse's arcs exactly) and integrated by the adaptive cubature to 1e-5
+ * relative, as the whole opening's. What a solver gives the part of an
+ * opening a point sees past planar occluders: with the whole opening as
+ * the one polygon it is the unoccluded E. CDL_ERR_USAGE for other
+ * emitters; CDL_ERR_INTERNAL (the caller samples instead) where the
+ * cubature does not converge within its budget or the parts have too
+ * many corners. */
+cdl_status cdl_emitter_opening_partial_illuminance(const cdl_emitter *emitter, cdl_vec3 p, cdl_vec3 n,
+                                                   const cdl_vec3 *points, const int *counts, size_t polygons,
+                                                   cdl_illuminance *E, cdl_error *err);
 
 /* 1 when a goniometric opening emitter's exact illuminance is Lambert's
  * closed form (a Lambertian table on a rectangle or circle: microseconds);

@@ -126,6 +126,8 @@ int cdl_luminous_opening_is_flat(const cdl_luminous_opening *o)
     case CDL_LUMINOUS_SHAPE_RECTANGLE:
     case CDL_LUMINOUS_SHAPE_ELLIPSE: return o->width_m > 0.0 && o->length_m > 0.0;
     case CDL_LUMINOUS_SHAPE_CIRCLE: return o->width_m > 0.0;
+    case CDL_LUMINOUS_SHAPE_VERTICAL_CIRCLE:
+    case CDL_LUMINOUS_SHAPE_VERTICAL_ELLIPSE: return o->width_m > 0.0 && o->height_m > 0.0;
     default: return 0;
     }
 }

@@ -13,6 +13,14 @@
  * parts below the horizon of its `up`. (The configuration factor of the
  * visible polygon, as CIE 171:2006's daylight test cases compute it.)
  *
+ * A flat goniometric opening (a luminaire spread over its luminous
+ * opening, near field) is the same visible part of its plane, but its
+ * luminance I(w) / (A |cos theta_o|) varies with the direction w from each
+ * element: the part (the opening's bounding rectangle less the occluders'
+ * projections) goes to the opening's own cubature (cdl_emitter_opening_
+ * partial_illuminance), which clips it to the opening and integrates E to
+ * 1e-5, as it does the unoccluded E.
+ *
  * The occluders are the triangles of the occluder index that meet the
  * region between the point and the light (the pyramid to the emitter, or the
  * half-space above the tangent plane). The route is refused, and the light
@@ -27,6 +35,7 @@
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "radiometry/constants.h"
@@ -241,6 +250,52 @@ static int emitter_visible(const cdl_geometry_piece *piece, const cdl_scene_ligh
     return 1;
 }
 
+/* A flat goniometric opening past the occluders: the visible part of its
+ * bounding rectangle in its plane, handed to the opening's cubature
+ * (cdl_emitter_opening_partial_illuminance: clipped to the opening there,
+ * its luminance varying over it with the direction of each element). */
+static cdl_direct_route opening_visible(const cdl_scene_light *light, const cdl_vec3 corner[4], cdl_vec3 p,
+                                        cdl_vec3 n, double near, const cdl_occluder_triangle *occ, size_t count,
+                                        double *E)
+{
+    cdl_vec3 m = cdl_vec3_normalize(cdl_vec3_cross(cdl_vec3_sub(corner[1], corner[0]), cdl_vec3_sub(corner[3], corner[0])));
+    double h = cdl_vec3_dot(m, cdl_vec3_sub(p, corner[0]));
+    if (!(h != 0.0)) return CDL_ROUTE_VISIBLE_POLYGON; /* in its plane: sees no area of it */
+    cdl_visible_face face;
+    cdl_visible_face_init(&face, p, h > 0.0 ? m : cdl_vec3_neg(m), corner[0], 1, near);
+    cdl_visible_face_add_polygon(&face, corner, 4);
+    if (!face_subtract(&face, occ, count)) return CDL_ROUTE_TOO_COMPLEX;
+    size_t total = 0;
+    for (size_t k = 0; k < face.count; ++k) total += (size_t)face.pieces[k].count;
+    cdl_vec3 *points = malloc((total ? total : 1) * sizeof *points);
+    int *counts = malloc((face.count ? face.count : 1) * sizeof *counts);
+    if (!points || !counts) {
+        free(points);
+        free(counts);
+        cdl_visible_face_release(&face);
+        return CDL_ROUTE_TOO_COMPLEX;
+    }
+    /* the plane's 2-D coordinates stand for foot + x e1 + y e2 */
+    cdl_vec3 foot = cdl_vec3_madd(face.apex, -face.height, face.toward);
+    size_t at = 0;
+    for (size_t k = 0; k < face.count; ++k) {
+        const cdl_visible_piece *piece = &face.pieces[k];
+        counts[k] = piece->count;
+        for (int i = 0; i < piece->count; ++i)
+            points[at++] = cdl_vec3_add(foot, cdl_vec3_add(cdl_vec3_scale(face.e1, piece->v[i][0]),
+                                                           cdl_vec3_scale(face.e2, piece->v[i][1])));
+    }
+    cdl_illuminance visible;
+    cdl_status st = cdl_emitter_opening_partial_illuminance(light->emitter, p, n, points, counts, face.count, &visible,
+                                                            NULL);
+    free(points);
+    free(counts);
+    cdl_visible_face_release(&face);
+    if (st != CDL_OK) return CDL_ROUTE_TOO_COMPLEX;
+    *E = visible.lx > 0.0 ? visible.lx : 0.0;
+    return CDL_ROUTE_VISIBLE_POLYGON;
+}
+
 /* The exact route for one light at p, or why not. */
 static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_vec3 p,
                                     cdl_vec3 n, double unoccluded, double *E, uint32_t *occluders,
@@ -250,7 +305,10 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     *occluders = 0;
     if (ctx->no_exact_route || !ctx->geometry || !ctx->occluders) return CDL_ROUTE_DISABLED;
     const cdl_geometry_piece *piece = NULL;
-    if (!light->is_environment) {
+    cdl_vec3 opening[4];
+    int is_opening = !light->is_environment && light->owner == UINT32_MAX &&
+                     cdl_emitter_opening_bounding_rectangle(light->emitter, opening);
+    if (!light->is_environment && !is_opening) {
         if (light->owner == UINT32_MAX || light->outline_is_sphere) return CDL_ROUTE_CURVED_EMITTER;
         piece = cdl_scene_geometry_piece(ctx->geometry, light->owner);
         if (piece->shape.kind != CDL_SHAPE_RECT &&
@@ -272,6 +330,7 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     *occluders = (uint32_t)count;
     double near = NEAR_FRACTION * cdl_ray_offsets_epsilon(&ctx->offsets, p);
     if (light->is_environment) return sky_route(light, p, n, near, occ, count, unoccluded, E, sky);
+    if (is_opening) return opening_visible(light, opening, p, n, near, occ, count, E);
     double omega = 0.0;
     cdl_direct_route route = CDL_ROUTE_VISIBLE_POLYGON;
     if (!emitter_visible(piece, light, p, n, near, occ, count, &omega, &route)) return route;
