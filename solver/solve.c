@@ -566,7 +566,7 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         for (size_t l = 0; l < lights.count; ++l) {
             char text[768], routes_text[512];
             cdl_direct_route_describe(&routes[l], routes_text, sizeof routes_text);
-            snprintf(text, sizeof text, "%s%s%s", cdl_light_strategy_name(strategies[l]), routes_text[0] ? "; " : "",
+            snprintf(text, sizeof text, "%s%s%s", cdl_light_strategy_describe(strategies[l], &lights.lights[l]), routes_text[0] ? "; " : "",
                      routes_text);
             describe_near_field(&lights.lights[l], &gs->grid, text, sizeof text);
             cJSON_AddStringToObject(plan_grids[l], spec->name, text);

@@ -13,6 +13,23 @@
 #include "radiometry/rng.h"
 #include "radiometry/sampling.h"
 
+const char *cdl_light_strategy_describe(cdl_light_strategy s, const cdl_scene_light *light)
+{
+    /* A luminaire spread over its opening: its own words (its exact value
+     * is Lambert's or the opening's cubature, never an image sky's sum). */
+    int opening = light && cdl_emitter_get_kind(light->emitter) == CDL_EMITTER_GONIOMETRIC_OPENING;
+    if (opening && s == CDL_STRATEGY_EXTENDED_EXACT)
+        return "exact (Lambert's closed form for a Lambertian table, else an adaptive cubature of the opening to "
+               "1e-5), nothing can hide it";
+    if (opening && s == CDL_STRATEGY_EXTENDED_TESTED)
+        return "exact where fully visible (Lambert's closed form or the opening's cubature), the visible part of "
+               "the opening past few planar occluders integrated the same way, else sampled where partly hidden "
+               "(the exact value less the hidden part): surfaces may hide part of this opening";
+    if (opening && s == CDL_STRATEGY_SAMPLED)
+        return "sampled with shadow rays: no exact value for this luminous solid's light while surfaces may hide it";
+    return cdl_light_strategy_name(s);
+}
+
 const char *cdl_light_strategy_name(cdl_light_strategy s)
 {
     switch (s) {

@@ -45,7 +45,12 @@ typedef enum cdl_light_strategy {
     CDL_STRATEGY_SAMPLED              /* always sampled (non-planar emitter that surfaces may hide) */
 } cdl_light_strategy;
 
+/* What the strategy models, and after a colon why (summary.json's plan). */
 const char *cdl_light_strategy_name(cdl_light_strategy strategy);
+
+/* The same in the words of the light it is for (a luminaire spread over
+ * its opening has its own; NULL: the general words). */
+const char *cdl_light_strategy_describe(cdl_light_strategy strategy, const cdl_scene_light *light);
 
 /* Shadow rays as cast, for benchmarks that replay them (single-threaded use). */
 typedef struct cdl_ray_record {
