@@ -186,6 +186,11 @@ static void write_keywords(cdl_text *out, const cdl_photometry *p, int version, 
         if (m->ldt_measurement_tilt_deg != 0.0)
             cdl_photometry_note(lost, "EULUMDAT measurement tilt %g degrees (line 25) has no IES field",
                                 m->ldt_measurement_tilt_deg);
+        const double *h = m->ldt_luminous_height_mm;
+        if (h[0] != h[1] || h[0] != h[2] || h[0] != h[3])
+            cdl_photometry_note(lost, "EULUMDAT luminous heights per side (C0 %g, C90 %g, C180 %g, C270 %g mm, lines "
+                                      "18-21) written as their mean, IES's one height",
+                                h[0], h[1], h[2], h[3]);
     } else {
         /* LM-63-2002 and -2019 both require these four, in this order */
         for (int r = 0; r < 4; ++r) {

@@ -386,6 +386,52 @@ static void test_write_file(void)
     cdl_photometry_release(p);
 }
 
+/* EULUMDAT's four luminous heights (lines 18-21) that differ have no IES
+ * field: written as their mean, and the note says so. A fixture given the
+ * heights 100, 200, 100, 200 mm: LM-63's one height is 150 mm. */
+static void test_side_heights(void)
+{
+    FILE *f = fopen(FIXTURES "warn_lorl.ldt", "rb");
+    CHECK(f != NULL);
+    if (!f) return;
+    char text[4096], out[4096];
+    size_t len = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[len] = '\0';
+    /* replace lines 18-21 */
+    size_t at = 0, o = 0;
+    int line = 1;
+    while (at < len) {
+        size_t end = at;
+        while (end < len && text[end] != '\n') end++;
+        if (line >= 18 && line <= 21) o += (size_t)snprintf(out + o, sizeof out - o, "%d\n", line % 2 ? 200 : 100);
+        else o += (size_t)snprintf(out + o, sizeof out - o, "%.*s\n", (int)(end - at), text + at);
+        at = end + 1;
+        line++;
+    }
+    cdl_error err;
+    cdl_photometry *p = pc_read_text("heights.ldt", out, o, 0, &err);
+    CHECK_MSG(p != NULL, "%s", err.message);
+    if (!p) return;
+    const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
+    CHECK(m->ldt_luminous_height_mm[0] == 100.0 && m->ldt_luminous_height_mm[1] == 200.0);
+    CHECK_REL(m->opening.height_m, 0.15, 1e-12);
+    cdl_photometry_notes notes = CDL_PHOTOMETRY_NOTES_INIT;
+    char *ies = format(p, 0, 2019, &notes);
+    int noted = 0;
+    for (size_t i = 0; i < notes.count; ++i)
+        noted |= strstr(notes.items[i], "luminous heights per side (C0 100, C90 200, C180 100, C270 200 mm") != NULL;
+    CHECK(noted);
+    cdl_photometry *a = reread(ies);
+    if (a) {
+        CHECK_REL(cdl_photometry_get_metadata(a)->opening.height_m, 0.15, 1e-9);
+        cdl_photometry_release(a);
+    }
+    cdl_photometry_notes_free(&notes);
+    free(ies);
+    cdl_photometry_release(p);
+}
+
 int main(void)
 {
     test_compact_symmetry();
@@ -395,5 +441,6 @@ int main(void)
     test_remap();
     test_type_b_to_ldt();
     test_write_file();
+    test_side_heights();
     return check_finish();
 }
