@@ -190,7 +190,8 @@ void cdl_emitter_release(cdl_emitter *emitter);
  * where the table is I0 cos(gamma) below the horizontal and dark above
  * (within 1e-6 I0 at every sample) on a rectangle or circle (a Lambertian
  * area emitter of luminance I0 / A); otherwise an adaptive Gauss-Legendre
- * cubature of the opening converged to 1e-5 relative (it fails, and the
+ * cubature of the opening converged to its tolerance, 1e-5 relative unless
+ * set (cdl_emitter_opening_set_tolerance; it fails, and the
  * caller samples, where 4096 cells do not reach that: a receiver in the
  * opening's plane). Samples (cdl_emitter_sample) with their exact pdf for
  * every opening, for shadows. A luminous solid (a box with luminous
@@ -213,6 +214,13 @@ cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *
  * other kinds. What a solver needs to bound where the light comes from. */
 int cdl_emitter_opening_face(const cdl_emitter *emitter, cdl_shape *face);
 
+/* The relative tolerance of a flat goniometric opening emitter's cubature
+ * (its exact and partial illuminance; 1e-5 when created), clamped to
+ * [1e-7, 1e-3]. A solver sets it from its target error before the emitter
+ * is used by several threads. Returns 0 (and changes nothing) for other
+ * emitters or a tolerance that is not positive. */
+int cdl_emitter_opening_set_tolerance(cdl_emitter *emitter, double relative);
+
 /* The rectangle bounding a flat goniometric opening emitter (the
  * rectangle itself, or the one around a circle or ellipse), its four
  * corners in world coordinates in order round it. Returns 0 (and sets
@@ -225,8 +233,8 @@ int cdl_emitter_opening_bounding_rectangle(const cdl_emitter *emitter, cdl_vec3 
  * the polygons one after another in `points`, not overlapping): the
  * opening's integral E = (1 / A) int I(w_x) cos(theta_r) / r_x^2 dA_x
  * restricted to them, the polygons clipped to the opening (a circle's or
- * ellipse's arcs exactly) and integrated by the adaptive cubature to 1e-5
- * relative, as the whole opening's. What a solver gives the part of an
+ * ellipse's arcs exactly) and integrated by the adaptive cubature to its
+ * tolerance (cdl_emitter_opening_set_tolerance), as the whole opening's. What a solver gives the part of an
  * opening a point sees past planar occluders: with the whole opening as
  * the one polygon it is the unoccluded E. CDL_ERR_USAGE for other
  * emitters; CDL_ERR_INTERNAL (the caller samples instead) where the

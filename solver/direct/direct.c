@@ -20,7 +20,7 @@ const char *cdl_light_strategy_describe(cdl_light_strategy s, const cdl_scene_li
     int opening = light && cdl_emitter_get_kind(light->emitter) == CDL_EMITTER_GONIOMETRIC_OPENING;
     if (opening && s == CDL_STRATEGY_EXTENDED_EXACT)
         return "exact (Lambert's closed form for a Lambertian table, else an adaptive cubature of the opening to "
-               "1e-5), nothing can hide it";
+               "1/50 of the target error), nothing can hide it";
     if (opening && s == CDL_STRATEGY_EXTENDED_TESTED)
         return "exact where fully visible (Lambert's closed form or the opening's cubature), the visible part of "
                "the opening past few planar occluders integrated the same way, else sampled where partly hidden "

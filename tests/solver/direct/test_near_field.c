@@ -170,7 +170,8 @@ static int solve_points_high(char *json, size_t size, int at, int seed, cdl_scen
  * 3 m below, on and off the axis: exact (no stated error) and within the
  * table's interpolation error of the disk's closed form (linear in gamma
  * between 1-degree samples: up to 3.8e-5 below the cosine) plus the
- * cubature's 1e-5, or, where the cubature declines (a few centimetres
+ * cubature's tolerance (1/50 of the 0.1 % target: 2e-5), or, where the
+ * cubature declines (a few centimetres
  * from the opening), sampled within five stated sigmas. */
 static void test_cubature(void)
 {
@@ -198,7 +199,7 @@ static void test_cubature(void)
     for (size_t i = 0; i < 64; ++i) {
         double want = disk_E(L, 0.3, depths[i / 8], lateral[i % 8]);
         exact += g->E_stderr[i] == 0.0;
-        CHECK_MSG(fabs(g->E[i] - want) <= 5.0 * g->E_stderr[i] + 5e-5 * want, "depth %g offset %g: %.7g +- %.3g, expected %.7g",
+        CHECK_MSG(fabs(g->E[i] - want) <= 5.0 * g->E_stderr[i] + 5.8e-5 * want, "depth %g offset %g: %.7g +- %.3g, expected %.7g",
                   depths[i / 8], lateral[i % 8], g->E[i], g->E_stderr[i], want);
     }
     CHECK(exact >= 56);
@@ -236,8 +237,8 @@ static double skewed_visible_E(double px, double py, double h, double cut)
  * the 1.2 x 0.3 m opening at 2.5 m, a black plate at 2 m over x >= 0: as
  * in test_soft_shadow the visible part is x_o < -px / 4. On the exact
  * route (the opening's visible part integrated by the cubature) every
- * probe is exact (no stated error) and within the cubature's 1e-5 plus
- * the reference's 1e-6 of it, the route named in the plan; sampled (the
+ * probe is exact (no stated error) and within the cubature's tolerance
+ * (1/50 of the 0.1 % target: 2e-5) plus the reference's 1e-6 of it, the route named in the plan; sampled (the
  * route turned off) to the target of quality "high" (0.1 %) across the
  * penumbra, each point within five stated sigmas of the reference, the
  * sigmas calibrated over 4 seeds. */
@@ -269,10 +270,10 @@ static void test_skewed_shadow(void)
             double px = -2.4 + 4.8 * k / (n - 1);
             double want = skewed_visible_E(px, 0.0, 2.5, -px / 4.0);
             if (seed == 0)
-                CHECK_MSG(g->E_stderr[k] == 0.0 && fabs(g->E[k] - want) <= 2e-5 * want + 1e-8 * scale,
+                CHECK_MSG(g->E_stderr[k] == 0.0 && fabs(g->E[k] - want) <= 2.1e-5 * want + 1e-8 * scale,
                           "skewed shadow probe %g, exact route: %.9g +- %.3g, expected %.9g", px, g->E[k],
                           g->E_stderr[k], want);
-            CHECK_MSG(fabs(g->E[k] - want) <= 5.0 * g->E_stderr[k] + 2e-5 * want + 1e-8 * scale,
+            CHECK_MSG(fabs(g->E[k] - want) <= 5.0 * g->E_stderr[k] + 2.1e-5 * want + 1e-8 * scale,
                       "skewed shadow probe %g: %.7g +- %.3g, expected %.7g", px, g->E[k], g->E_stderr[k], want);
             if (g->E_stderr[k] > 0.0 && want > 0.0) calibration_add(&tally, g->E[k], want, g->E_stderr[k], target);
         }
@@ -289,8 +290,8 @@ static void test_skewed_shadow(void)
  * px + 0.8 (x_o - px), hidden where that is >= 0: the visible part is the
  * rectangle's x_o < -px / 4, whose closed form is the contour integral.
  * Probes across the penumbra (px from -3 to 3), two rows in y. On the
- * exact route each is exact and within the cubature's 1e-5 of the closed
- * form; sampled (the route turned off) each within five stated sigmas,
+ * exact route each is exact and within the cubature's tolerance (1/50 of
+ * the 0.2 % target: 4e-5) of the closed form; sampled (the route turned off) each within five stated sigmas,
  * the sigmas calibrated over 4 seeds. */
 static void test_soft_shadow(void)
 {
@@ -325,10 +326,10 @@ static void test_soft_shadow(void)
                 double px = -3.0 + 6.0 * k / (n - 1), py = 0.7 * r, cut = fmin(0.6, -px / 4.0);
                 double want = cut > -0.6 ? rect_E(L, -0.6, cut, -0.15, 0.15, 2.5, px, py) : 0.0;
                 if (seed == 0)
-                    CHECK_MSG(g->E_stderr[i] == 0.0 && fabs(g->E[i] - want) <= 1e-5 * want + 1e-8 * scale,
+                    CHECK_MSG(g->E_stderr[i] == 0.0 && fabs(g->E[i] - want) <= 4e-5 * want + 1e-8 * scale,
                               "shadow probe (%g, %g), exact route: %.9g +- %.3g, expected %.9g", px, py, g->E[i],
                               g->E_stderr[i], want);
-                CHECK_MSG(fabs(g->E[i] - want) <= 5.0 * g->E_stderr[i] + 1e-5 * want + 1e-8 * scale,
+                CHECK_MSG(fabs(g->E[i] - want) <= 5.0 * g->E_stderr[i] + 4e-5 * want + 1e-8 * scale,
                           "shadow probe (%g, %g): %.7g +- %.3g, expected %.7g", px, py, g->E[i], g->E_stderr[i], want);
                 if (g->E_stderr[i] > 0.0 && want > 0.0) calibration_add(&tally, g->E[i], want, g->E_stderr[i], target);
             }
