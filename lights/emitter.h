@@ -201,8 +201,9 @@ void cdl_emitter_release(cdl_emitter *emitter);
  * sees whole (a cubature of its cone converged to 1e-5; it declines where
  * the receiver's horizon cuts the sphere or the panels do not converge),
  * none for the other solids (cdl_emitter_has_exact_illuminance is 0);
- * samples uniform in the solid angle of the bounding sphere with their
- * exact pdf.
+ * samples uniform in the solid angle of the solid's bounding box (a box:
+ * the box itself) or of its bounding sphere, whichever subtends less,
+ * with their exact pdf.
  * See emitter_opening.c and emitter_solid.c. */
 cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *p, cdl_emitter **out,
                                                   cdl_error *err);

@@ -43,20 +43,28 @@
  * Illuminance at p, E = int L(-omega) cos(theta_r) d omega over the
  * directions omega from p that meet the solid: for a sphere the receiver
  * sees whole, a cubature over its cone (below); otherwise sampled:
- * directions uniform in the cone of the solid's bounding sphere
- * (every direction when p is inside that sphere), a direction that misses
- * the solid carrying nothing. The pdf, 1 / (2 pi (1 - cos theta_max)), is
- * then the same for every direction that meets the solid, which keeps
- * cdl_emitter_radiance exact. A sphere fills its cone; the other solids
- * fill their share of the bounding sphere's outline (about A_proj /
- * (pi R^2): a tenth for a 1.2 m x 0.1 m box seen from below), which only
- * costs samples, not accuracy.
+ * directions uniform in the solid angle Omega of a region that holds the
+ * solid, a direction that misses the solid carrying nothing. The region is
+ * the solid's bounding box (in the luminaire's frame: the box itself, a
+ * cylinder's or ellipsoid's circumscribed box) where p is outside it and
+ * it subtends less than the bounding sphere's cone (and at least 1e-3 sr,
+ * where its angle excess keeps its digits): a face p sees chosen by its
+ * share of Omega, then uniform in that face's solid angle (Urena, Fajardo
+ * and King 2013, spherical_rectangle.h; the faces p sees tile the box's
+ * solid angle). Otherwise the bounding sphere's cone (every direction
+ * when p is inside that sphere). The pdf, 1 / Omega, is then the same for
+ * every direction that meets the solid, and cdl_emitter_radiance makes
+ * the same choice from p alone, which keeps it exact. A box and a sphere
+ * fill their regions; a cylinder fills about pi / 4 of its box seen along
+ * its axis or across it, an ellipsoid about half. Misses cost samples,
+ * not accuracy.
  */
 #include <math.h>
 #include <string.h>
 
 #include "lights/emitter.h"
 #include "lights/emitter_internal.h"
+#include "lights/spherical_rectangle.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 
@@ -183,22 +191,91 @@ static double cone_height(const solid_emitter *s, cdl_vec3 p, cdl_vec3 *axis)
     return sin2 / (1.0 + sqrt(1.0 - sin2));
 }
 
+/* Below this solid angle the bounding box's faces are not sampled (the
+ * spherical rectangle's angle excess, ~1e-15 sr absolute, would lose
+ * relative digits; emitter_area.c's threshold): the cone is. */
+#define BOX_SOLID_ANGLE_MIN 1e-3
+
+/* The faces of the solid's bounding box (half[] about the centre, in the
+ * luminaire's frame) that p sees, each a spherical rectangle, and their
+ * total solid angle. */
+typedef struct box_view {
+    cdl_spherical_rectangle face[3];
+    int count;
+    double omega;
+} box_view;
+
+/* Fills v for p outside the bounding box: the faces whose plane p lies
+ * beyond (on a convex body, those it sees; their solid angles tile the
+ * box's). Returns 0 when p is inside the box. */
+static int solid_box_view(const solid_emitter *s, cdl_vec3 p, box_view *v)
+{
+    cdl_vec3 ol = to_local(s, cdl_vec3_sub(p, s->center));
+    double o[3] = {ol.x, ol.y, ol.z};
+    const double *h = s->half;
+    v->count = 0;
+    v->omega = 0.0;
+    for (int m = 0; m < 3; ++m) {
+        if (!(fabs(o[m]) > h[m])) continue;
+        int i = (m + 1) % 3, j = (m + 2) % 3;
+        /* the face at x_m = +-h_m: corner (-h_i, -h_j), edges 2 h_i and 2 h_j */
+        cdl_vec3 corner = cdl_vec3_madd(s->center, o[m] > 0.0 ? h[m] : -h[m], s->axis[m]);
+        corner = cdl_vec3_madd(cdl_vec3_madd(corner, -h[i], s->axis[i]), -h[j], s->axis[j]);
+        double S = cdl_spherical_rectangle_init(&v->face[v->count], p, corner, cdl_vec3_scale(s->axis[i], 2.0 * h[i]),
+                                                cdl_vec3_scale(s->axis[j], 2.0 * h[j]));
+        if (S > 0.0) {
+            v->omega += S;
+            v->count++;
+        }
+    }
+    return v->count > 0;
+}
+
+/* The solid angle p samples uniformly (the pdf is its inverse wherever
+ * the direction meets the solid): the bounding box's faces (v->count > 0)
+ * where p is outside the box and the box subtends less than the bounding
+ * sphere's cone and at least BOX_SOLID_ANGLE_MIN; otherwise the cone (h
+ * its 1 - cos(theta_max), axis its axis). A sphere always its cone, which
+ * it fills. One decision from one arithmetic in sample and radiance, so
+ * their pdfs agree. */
+static double solid_sampled_region(const solid_emitter *s, cdl_vec3 p, box_view *v, cdl_vec3 *axis, double *h)
+{
+    *h = cone_height(s, p, axis);
+    double cone = CDL_TWO_PI * *h;
+    if (s->opening.shape != CDL_LUMINOUS_SHAPE_SPHERE && solid_box_view(s, p, v) && v->omega >= BOX_SOLID_ANGLE_MIN &&
+        v->omega < cone)
+        return v->omega;
+    v->count = 0;
+    return cone;
+}
+
 static int solid_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1, double u2, cdl_light_sample *out)
 {
     const solid_emitter *s = as_solid(e);
-    cdl_vec3 axis;
-    double h = cone_height(s, p, &axis);
-    /* uniform in solid angle within the cone: cos(theta) uniform in [1 - h, 1] */
-    double c = 1.0 - u1 * h, st = sqrt(fmax(0.0, (1.0 - c) * (1.0 + c))), phi = CDL_TWO_PI * u2;
-    cdl_frame f = cdl_frame_from_normal(axis);
-    cdl_vec3 dir = cdl_vec3_normalize(cdl_frame_to_world(&f, cdl_vec3_make(st * cos(phi), st * sin(phi), c)));
+    box_view v;
+    cdl_vec3 axis, dir;
+    double h, omega = solid_sampled_region(s, p, &v, &axis, &h);
+    if (v.count > 0) {
+        /* a face by its share of the box's solid angle, u1 stretched over
+         * that share, then uniform in the face's solid angle (Urena et al.) */
+        int f = 0;
+        double below = 0.0, at = u1 * omega;
+        while (f < v.count - 1 && below + v.face[f].S <= at) below += v.face[f++].S;
+        double u = fmin(1.0, fmax(0.0, (at - below) / v.face[f].S));
+        dir = cdl_vec3_normalize(cdl_spherical_rectangle_sample(&v.face[f], u, u2));
+    } else {
+        /* uniform in solid angle within the cone: cos(theta) uniform in [1 - h, 1] */
+        double c = 1.0 - u1 * h, st = sqrt(fmax(0.0, (1.0 - c) * (1.0 + c))), phi = CDL_TWO_PI * u2;
+        cdl_frame f = cdl_frame_from_normal(axis);
+        dir = cdl_vec3_normalize(cdl_frame_to_world(&f, cdl_vec3_make(st * cos(phi), st * sin(phi), c)));
+    }
     if (!(cdl_vec3_dot(dir, n) > 0.0)) return 0;
     double t = solid_entry(s, p, dir);
     if (!(t > 0.0)) return 0;
     out->to_light = dir;
     out->distance = t;
     out->L = cdl_nits(solid_luminance_towards(s, cdl_vec3_neg(dir)));
-    out->pdf = 1.0 / (CDL_TWO_PI * h);
+    out->pdf = 1.0 / omega;
     return out->L.cd_m2 > 0.0;
 }
 
@@ -208,8 +285,10 @@ static cdl_luminance solid_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n
     const solid_emitter *s = as_solid(e);
     *pdf = 0.0;
     if (!(solid_entry(s, p, dir) > 0.0)) return cdl_nits(0.0);
+    box_view v;
     cdl_vec3 axis;
-    *pdf = 1.0 / (CDL_TWO_PI * cone_height(s, p, &axis));
+    double h;
+    *pdf = 1.0 / solid_sampled_region(s, p, &v, &axis, &h);
     return cdl_nits(solid_luminance_towards(s, cdl_vec3_neg(dir)));
 }
 
