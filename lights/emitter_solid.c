@@ -74,7 +74,7 @@ typedef struct solid_emitter {
     cdl_luminous_opening opening;
     cdl_vec3 center;
     cdl_vec3 axis[3];            /* the luminaire's x (length), y (width), z (up) in world */
-    double half[3];              /* box: half of L, W, H; other solids: the semi-axes (a cylinder's half length on its axis) */
+    double half[3];              /* box: half of L, W, H; other solids: semi-axes (a cylinder's half length on its axis) */
     int cylinder;                /* a cylinder's axis (0 x, 1 y, 2 z), -1 for a box, sphere or ellipsoid */
     double bound;                /* radius of the bounding sphere */
 } solid_emitter;

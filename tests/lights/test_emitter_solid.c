@@ -401,8 +401,10 @@ static void test_cylinder(void)
  * section 0.15 m. */
 static const solid_case solids[4] = {
     {"ellipsoid", CDL_LUMINOUS_SHAPE_ELLIPSOID, {0.3, 0.15, 0.1}, -1, {-0.3, -0.6, -0.2}},
-    {"vertical elliptic cylinder", CDL_LUMINOUS_SHAPE_VERTICAL_ELLIPTIC_CYLINDER, {0.25, 0.1, 0.15}, 2, {-0.2, -0.5, 0.3}},
-    {"horizontal cylinder along", CDL_LUMINOUS_SHAPE_HORIZONTAL_CYLINDER_ALONG, {0.4, 0.1, 0.06}, 0, {-0.2, 0.8, -0.12}},
+    {"vertical elliptic cylinder", CDL_LUMINOUS_SHAPE_VERTICAL_ELLIPTIC_CYLINDER, {0.25, 0.1, 0.15}, 2,
+     {-0.2, -0.5, 0.3}},
+    {"horizontal cylinder along", CDL_LUMINOUS_SHAPE_HORIZONTAL_CYLINDER_ALONG, {0.4, 0.1, 0.06}, 0,
+     {-0.2, 0.8, -0.12}},
     {"horizontal cylinder across", CDL_LUMINOUS_SHAPE_HORIZONTAL_CYLINDER_ACROSS, {0.075, 0.3, 0.075}, 1,
      {0.6, -0.15, -0.15}},
 };
@@ -439,19 +441,22 @@ static void test_solids_uniform(void)
         CHECK(!cdl_emitter_has_exact_illuminance(e));
         double R = case_bound(sc), worst = 0.0, worst_tol = 0.0;
         for (int k = 0; k < 6; ++k) {
-            cdl_vec3 off = cdl_vec3_scale(at[k], R), p = cdl_vec3_add(c, off), toward = cdl_vec3_normalize(cdl_vec3_neg(off));
+            cdl_vec3 off = cdl_vec3_scale(at[k], R), p = cdl_vec3_add(c, off);
+            cdl_vec3 toward = cdl_vec3_normalize(cdl_vec3_neg(off));
             cdl_vec3 across = cdl_vec3_normalize(cdl_vec3_cross(toward, cdl_vec3_make(0.3, 1.0, 0.2)));
             double facing = 0.0;
             for (int tilt = 0; tilt < 2; ++tilt) {
-                cdl_vec3 n = tilt ? cdl_vec3_add(cdl_vec3_scale(toward, cos(1.0)), cdl_vec3_scale(across, sin(1.0))) : toward;
+                cdl_vec3 n = toward;
+                if (tilt) n = cdl_vec3_add(cdl_vec3_scale(toward, cos(1.0)), cdl_vec3_scale(across, sin(1.0)));
                 /* the midpoint rule converges at least linearly (the integrand
                  * is continuous, with kinks at the outline and the horizon), so
                  * |q - q2| bounds the error of q */
                 double q = surface_quadrature(sc, ph, c, p, n, 400), q2 = surface_quadrature(sc, ph, c, p, n, 200);
                 if (!tilt) facing = q;
                 CHECK_MSG(fabs(q - q2) <= 2e-3 * facing, "%s: quadrature not converged: %g vs %g", sc->name, q, q2);
-                /* inside the bounding sphere every direction is sampled, a
-                 * few percent of them meeting the solid: 4 times the strata */
+                /* the nearest receiver, inside the bounding sphere, sees the
+                 * solid over a wide angle, its edges cutting many strata: 4
+                 * times the strata there */
                 estimate got = sampled(e, p, n, k == 0 ? 48 : 24, 16, (uint64_t)(100 * s + 10 * k + tilt));
                 /* 4 standard errors and the quadrature's error; the standard
                  * error small against the facing E (a tilted receiver may see
@@ -561,7 +566,8 @@ static void test_flux_and_far_field(void)
     for (int s = -1; s < 4; ++s) {
         /* the box (s = -1), then the new solids; each at 20 bounding diameters */
         const solid_case *sc = s < 0 ? &box : &solids[s];
-        cdl_photometry *ph = solid_file(sc->file[0], sc->file[1], sc->file[2], s < 0 ? box_table : solid_tables[s], 1.0);
+        table_fn table = s < 0 ? box_table : solid_tables[s];
+        cdl_photometry *ph = solid_file(sc->file[0], sc->file[1], sc->file[2], table, 1.0);
         cdl_emitter *e = spread(ph, c, 0), *point = spread(ph, c, 1);
         double size = sqrt(BOX_L * BOX_L + BOX_W * BOX_W + BOX_H * BOX_H);
         if (s >= 0) size = 2.0 * case_bound(sc);
@@ -601,8 +607,8 @@ static double pdf_integral_check(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, c
         }
     double N = (double)k * k, P = hits / N, I = s1 / N;
     double se = sqrt(P * (1.0 - P) / N + fmax(0.0, s2 / N - I * I) / N);
-    CHECK_MSG(fabs(P - I) <= 4.0 * se + 1e-12 && P > 0.0, "%s: samples succeed %.5f of the time, the pdf integrates to %.5f (se %.1e)",
-              what, P, I, se);
+    CHECK_MSG(fabs(P - I) <= 4.0 * se + 1e-12 && P > 0.0,
+              "%s: samples succeed %.5f of the time, the pdf integrates to %.5f (se %.1e)", what, P, I, se);
     return fabs(P - I) / fmax(se, 1e-300);
 }
 
@@ -611,10 +617,12 @@ static void test_pdf_density(void)
     cdl_vec3 c = cdl_vec3_make(0.0, 0.0, 0.0);
     double worst = 0.0;
     for (int s = -3; s < 4; ++s) {
+        const double r2 = -2.0 * SPHERE_R;
         cdl_photometry *ph = s == -3   ? solid_file(BOX_W, BOX_L, BOX_H, box_table, 1.0)
                              : s == -2 ? solid_file(-2.0 * CYL_R, -2.0 * CYL_R, CYL_H, cylinder_table, 0.0)
-                             : s == -1 ? solid_file(-2.0 * SPHERE_R, -2.0 * SPHERE_R, -2.0 * SPHERE_R, sphere_table, 0.0)
-                                       : solid_file(solids[s].file[0], solids[s].file[1], solids[s].file[2], solid_tables[s], 1.0);
+                             : s == -1 ? solid_file(r2, r2, r2, sphere_table, 0.0)
+                                       : solid_file(solids[s].file[0], solids[s].file[1], solids[s].file[2],
+                                                    solid_tables[s], 1.0);
         cdl_emitter *e = spread(ph, c, 0);
         cdl_shape bound;
         CHECK(cdl_emitter_opening_face(e, &bound) && bound.kind == CDL_SHAPE_SPHERE);
@@ -623,7 +631,8 @@ static void test_pdf_density(void)
         double R = bound.radius;
         worst = fmax(worst, pdf_integral_check(e, cdl_vec3_make(1.3 * R, 0.4 * R, -0.5 * R),
                                                cdl_vec3_normalize(cdl_vec3_make(-1.0, 0.3, 0.6)), what));
-        worst = fmax(worst, pdf_integral_check(e, cdl_vec3_make(0.2 * R, -0.1 * R, -6.0 * R), cdl_vec3_make(0, 0, 1), what));
+        worst = fmax(worst,
+                     pdf_integral_check(e, cdl_vec3_make(0.2 * R, -0.1 * R, -6.0 * R), cdl_vec3_make(0, 0, 1), what));
         if (s != -1) {
             /* a point below the solid yet inside its bounding sphere */
             double below = s == -3 ? BOX_H : s == -2 ? CYL_H : 2.0 * solids[s].half[2];
@@ -705,14 +714,17 @@ static void test_sign_codes(void)
             double h = 2.0 * R / k, count = 0.0;
             for (int j = 0; j < k; ++j)
                 for (int i = 0; i < k; ++i) {
-                    cdl_vec3 from = cdl_vec3_add(c, cdl_frame_to_world(&f, cdl_vec3_make(-R + (i + 0.5) * h, -R + (j + 0.5) * h, 3.0 * R)));
+                    cdl_vec3 at = cdl_vec3_make(-R + (i + 0.5) * h, -R + (j + 0.5) * h, 3.0 * R);
+                    cdl_vec3 from = cdl_vec3_add(c, cdl_frame_to_world(&f, at));
                     double pdf;
                     cdl_emitter_radiance(e, from, cdl_vec3_neg(w), cdl_vec3_neg(w), &pdf);
                     count += pdf > 0.0;
                 }
-            double A = cdl_luminous_opening_projected_area(o, w), band = CDL_TWO_PI * R * sqrt(2.0) * h + 0.5 * CDL_PI * h * h;
-            CHECK_MSG(fabs(count * h * h - A) <= band, "%s %s seen along (%g, %g, %g): rays meet %.6g m^2, A_proj %.6g m^2",
-                      codes[m].tag, codes[m].wlh, w.x, w.y, w.z, count * h * h, A);
+            double A = cdl_luminous_opening_projected_area(o, w);
+            double band = CDL_TWO_PI * R * sqrt(2.0) * h + 0.5 * CDL_PI * h * h;
+            CHECK_MSG(fabs(count * h * h - A) <= band,
+                      "%s %s seen along (%g, %g, %g): rays meet %.6g m^2, A_proj %.6g m^2", codes[m].tag, codes[m].wlh,
+                      w.x, w.y, w.z, count * h * h, A);
             if (fabs(count * h * h - A) / A > worst) worst = fabs(count * h * h - A) / A, worst_tol = band / A;
             /* and the library's A_proj is the closed form */
             CHECK_REL(A, case_projected_area(&sc, w), 1e-12);
