@@ -259,10 +259,10 @@ static void test_box(void)
 
 /* ---- the solids by their surfaces ------------------------------------------ */
 
-/* A solid of LM-63 Table 1 other than the box, by its semi-axes along the
- * luminaire's x, y, z (a cylinder's half length on its axis) and its
- * cylinder axis (-1: an ellipsoid); `file` is W, L, H as a 2002 file
- * writes them, whose signs give the shape. */
+/* A solid of LM-63 Table 1 by its semi-axes along the luminaire's x, y, z
+ * (a box's half sides, a cylinder's half length on its axis) and its
+ * cylinder axis (-1: an ellipsoid or a box, by `shape`); `file` is W, L, H
+ * as a 2002 file writes them, whose signs give the shape. */
 typedef struct solid_case {
     const char *name;
     cdl_luminous_shape shape;
@@ -283,16 +283,20 @@ static double case_projected_area(const solid_case *sc, cdl_vec3 w)
     const double *a = sc->half;
     double u[3] = {w.x, w.y, w.z};
     int k = sc->axis;
+    /* a box shows a face across each axis, 4 a_i a_j |u_m| */
+    if (sc->shape == CDL_LUMINOUS_SHAPE_BOX)
+        return 4.0 * (a[1] * a[2] * fabs(u[0]) + a[0] * a[2] * fabs(u[1]) + a[0] * a[1] * fabs(u[2]));
     if (k < 0) return CDL_PI * sqrt(sq(a[1] * a[2] * u[0]) + sq(a[0] * a[2] * u[1]) + sq(a[0] * a[1] * u[2]));
     int i = (k + 1) % 3, j = (k + 2) % 3;
     return CDL_PI * a[i] * a[j] * fabs(u[k]) + 4.0 * a[k] * sqrt(sq(a[j] * u[i]) + sq(a[i] * u[j]));
 }
 
-/* The bounding sphere about the centre: a cylinder's rim, an ellipsoid's longest semi-axis. */
+/* The bounding sphere about the centre: a box's half diagonal, a cylinder's rim, an ellipsoid's longest semi-axis. */
 static double case_bound(const solid_case *sc)
 {
     const double *a = sc->half;
     int k = sc->axis;
+    if (sc->shape == CDL_LUMINOUS_SHAPE_BOX) return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
     return k < 0 ? fmax(a[0], fmax(a[1], a[2])) : hypot(fmax(a[(k + 1) % 3], a[(k + 2) % 3]), a[k]);
 }
 
@@ -305,14 +309,21 @@ static double case_bound(const solid_case *sc)
  * axis k: its side (part 0; phi = 2 pi u, x_k = (2v - 1) a_k, dA =
  * |dx/dphi| d phi dx_k, m along (a_j cos phi, a_i sin phi)) and its caps
  * (parts 1 and 2 at x_k = -a_k, +a_k; radius sqrt(u) of the ellipse so
- * the cells share the area pi a_i a_j / n^2). */
+ * the cells share the area pi a_i a_j / n^2). A box: its six faces (part
+ * 2m and 2m + 1 at x_m = -a_m, +a_m), cells of 4 a_i a_j / n^2. */
 static void surface_cell(const solid_case *sc, cdl_vec3 c, int part, double u, double v, int n, cdl_vec3 *x,
                          cdl_vec3 *m, double *dA)
 {
     const double *a = sc->half;
     double px[3], pm[3], cells = (double)n * n;
     int k = sc->axis;
-    if (k < 0) {
+    if (sc->shape == CDL_LUMINOUS_SHAPE_BOX) {
+        int f = part / 2, i = (f + 1) % 3, j = (f + 2) % 3;
+        double side = part % 2 ? 1.0 : -1.0;
+        px[f] = side * a[f], px[i] = (2.0 * u - 1.0) * a[i], px[j] = (2.0 * v - 1.0) * a[j];
+        pm[f] = side, pm[i] = pm[j] = 0.0;
+        *dA = 4.0 * a[i] * a[j] / cells;
+    } else if (k < 0) {
         double mu = 2.0 * u - 1.0, st = sqrt(fmax(0.0, 1.0 - mu * mu)), phi = CDL_TWO_PI * v;
         double s[3] = {st * cos(phi), st * sin(phi), mu};
         double g[3] = {a[1] * a[2] * s[0], a[0] * a[2] * s[1], a[0] * a[1] * s[2]};
@@ -353,7 +364,8 @@ static double surface_quadrature(const solid_case *sc, const cdl_photometry *ph,
                                  int steps)
 {
     double E = 0.0;
-    for (int part = 0; part < (sc->axis < 0 ? 1 : 3); ++part)
+    int parts = sc->shape == CDL_LUMINOUS_SHAPE_BOX ? 6 : sc->axis < 0 ? 1 : 3;
+    for (int part = 0; part < parts; ++part)
         for (int i = 0; i < steps; ++i)
             for (int j = 0; j < steps; ++j) {
                 cdl_vec3 x, m;
@@ -409,6 +421,10 @@ static const solid_case solids[4] = {
      {0.6, -0.15, -0.15}},
 };
 
+/* the box of test_box as a solid_case */
+static const solid_case box_case = {"box", CDL_LUMINOUS_SHAPE_BOX, {0.5 * BOX_L, 0.5 * BOX_W, 0.5 * BOX_H}, -1,
+                                    {BOX_W, BOX_L, BOX_H}};
+
 /* a solid of luminance LUM: I = LUM A_proj(C, gamma), C0 along x */
 static double uniform_table(int which, double c, double g)
 {
@@ -422,10 +438,55 @@ static double along_table(double c, double g) { return uniform_table(2, c, g); }
 static double across_table(double c, double g) { return uniform_table(3, c, g); }
 static const table_fn solid_tables[4] = {ellipsoid_table, elliptic_cylinder_table, along_table, across_table};
 
+/* v turned by `deg` about the fixed world x, then y, then z axes (sign
+ * -1: the inverse, z first), by elementary rotations. */
+static cdl_vec3 turn(cdl_vec3 v, const double deg[3], int sign)
+{
+    for (int step = 0; step < 3; ++step) {
+        int axis = sign > 0 ? step : 2 - step;
+        double t = sign * deg[axis] * CDL_DEG_TO_RAD, c = cos(t), s = sin(t);
+        if (axis == 0) v = cdl_vec3_make(v.x, c * v.y - s * v.z, s * v.y + c * v.z);
+        if (axis == 1) v = cdl_vec3_make(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
+        if (axis == 2) v = cdl_vec3_make(c * v.x - s * v.y, s * v.x + c * v.y, v.z);
+    }
+    return v;
+}
+
+/* The emitter's E, sampled on k x k strata x 16 runs, at c + off facing
+ * the centre (tilt 0) and tilted by `tilt` rad towards `across`, against
+ * the surface quadrature at 400 and 200 cells a side (with `rot`, the
+ * emitter turned by it: the quadrature's receiver turned back). The
+ * midpoint rule converges at least linearly (the integrand is continuous,
+ * with kinks at the outline and the horizon), so |q - q2| bounds the
+ * error of q; held to 4 standard errors plus that, the standard error
+ * below 1 % of the facing E (a tilted receiver may see a sliver). worst[]
+ * keeps the largest error and its tolerance, over the facing E. */
+static void check_receiver(const cdl_emitter *e, const solid_case *sc, const cdl_photometry *ph, cdl_vec3 c,
+                           cdl_vec3 off, cdl_vec3 across, double tilt, const double *rot, int k, uint64_t seed,
+                           double worst[2])
+{
+    cdl_vec3 p = cdl_vec3_add(c, off), toward = cdl_vec3_normalize(cdl_vec3_neg(off));
+    double facing = 0.0;
+    for (int t = 0; t < 2; ++t) {
+        cdl_vec3 n = toward;
+        if (t) n = cdl_vec3_add(cdl_vec3_scale(toward, cos(tilt)), cdl_vec3_scale(across, sin(tilt)));
+        cdl_vec3 pl = rot ? cdl_vec3_add(c, turn(off, rot, -1)) : p, nl = rot ? turn(n, rot, -1) : n;
+        double q = surface_quadrature(sc, ph, c, pl, nl, 400), q2 = surface_quadrature(sc, ph, c, pl, nl, 200);
+        if (!t) facing = q;
+        CHECK_MSG(fabs(q - q2) <= 2e-3 * facing, "%s: quadrature not converged: %g vs %g", sc->name, q, q2);
+        estimate got = sampled(e, p, n, k, 16, seed + (uint64_t)t);
+        double tol = 4.0 * got.se + fabs(q - q2);
+        CHECK_MSG(fabs(got.mean - q) <= tol && got.se <= 0.01 * facing,
+                  "%s%s at %g m, tilt %d: sampled %.6g +- %.2g, surface %.6g (tolerance %.2g)", rot ? "rotated " : "",
+                  sc->name, cdl_vec3_length(off), t, got.mean, got.se, q, tol);
+        if (fabs(got.mean - q) / facing > worst[0]) worst[0] = fabs(got.mean - q) / facing, worst[1] = tol / facing;
+    }
+}
+
 /* Uniform ellipsoid and elliptic cylinders against the surface
- * quadrature, at receivers facing the centre and tilted 1 rad from it
- * (the horizon cutting the solid near it), from just outside the solid
- * (inside its bounding sphere) to 7 bounding radii away. */
+ * quadrature (check_receiver), at receivers facing the centre and tilted
+ * 1 rad from it (the horizon cutting the solid near it), from just outside
+ * the solid (inside its bounding sphere) to 7 bounding radii away. */
 static void test_solids_uniform(void)
 {
     /* offsets from the centre in bounding radii */
@@ -439,37 +500,51 @@ static void test_solids_uniform(void)
         cdl_vec3 c = cdl_vec3_make(0.4, -0.3, 2.0);
         cdl_emitter *e = spread(ph, c, 0);
         CHECK(!cdl_emitter_has_exact_illuminance(e));
-        double R = case_bound(sc), worst = 0.0, worst_tol = 0.0;
+        double R = case_bound(sc), worst[2] = {0.0, 0.0};
         for (int k = 0; k < 6; ++k) {
-            cdl_vec3 off = cdl_vec3_scale(at[k], R), p = cdl_vec3_add(c, off);
-            cdl_vec3 toward = cdl_vec3_normalize(cdl_vec3_neg(off));
-            cdl_vec3 across = cdl_vec3_normalize(cdl_vec3_cross(toward, cdl_vec3_make(0.3, 1.0, 0.2)));
-            double facing = 0.0;
-            for (int tilt = 0; tilt < 2; ++tilt) {
-                cdl_vec3 n = toward;
-                if (tilt) n = cdl_vec3_add(cdl_vec3_scale(toward, cos(1.0)), cdl_vec3_scale(across, sin(1.0)));
-                /* the midpoint rule converges at least linearly (the integrand
-                 * is continuous, with kinks at the outline and the horizon), so
-                 * |q - q2| bounds the error of q */
-                double q = surface_quadrature(sc, ph, c, p, n, 400), q2 = surface_quadrature(sc, ph, c, p, n, 200);
-                if (!tilt) facing = q;
-                CHECK_MSG(fabs(q - q2) <= 2e-3 * facing, "%s: quadrature not converged: %g vs %g", sc->name, q, q2);
-                /* the nearest receiver, inside the bounding sphere, sees the
-                 * solid over a wide angle, its edges cutting many strata: 4
-                 * times the strata there */
-                estimate got = sampled(e, p, n, k == 0 ? 48 : 24, 16, (uint64_t)(100 * s + 10 * k + tilt));
-                /* 4 standard errors and the quadrature's error; the standard
-                 * error small against the facing E (a tilted receiver may see
-                 * a sliver) */
-                double tol = 4.0 * got.se + fabs(q - q2);
-                CHECK_MSG(fabs(got.mean - q) <= tol && got.se <= 0.01 * facing,
-                          "%s at (%g, %g, %g) R, tilt %d: sampled %.6g +- %.2g, surface %.6g (tolerance %.2g)",
-                          sc->name, at[k].x, at[k].y, at[k].z, tilt, got.mean, got.se, q, tol);
-                if (fabs(got.mean - q) / facing > worst) worst = fabs(got.mean - q) / facing, worst_tol = tol / facing;
-            }
+            cdl_vec3 off = cdl_vec3_scale(at[k], R);
+            cdl_vec3 across = cdl_vec3_normalize(cdl_vec3_cross(off, cdl_vec3_make(0.3, 1.0, 0.2)));
+            /* the nearest receiver, inside the bounding sphere, sees the
+             * solid over a wide angle, its edges cutting many strata: 4
+             * times the strata there */
+            check_receiver(e, sc, ph, c, off, across, 1.0, NULL, k == 0 ? 48 : 24, (uint64_t)(100 * s + 10 * k), worst);
         }
-        printf("%s: worst |sampled - surface| %.2e of the facing E (tolerance there %.2e)\n", sc->name, worst,
-               worst_tol);
+        printf("%s: worst |sampled - surface| %.2e of the facing E (tolerance there %.2e)\n", sc->name, worst[0],
+               worst[1]);
+        cdl_emitter_release(e);
+        cdl_photometry_release(ph);
+    }
+}
+
+/* A rotated luminaire's solid is the unrotated one turned about its
+ * centre (rotation about the fixed x, y, z axes: world = Rz Ry Rx
+ * luminaire), so E at p (normal n) from the rotated emitter is the surface
+ * quadrature of the unrotated solid at the receiver turned back, c + R^T
+ * (p - c) with normal R^T n. The box and the four new solids, receivers
+ * facing the centre and tilted (check_receiver). */
+static void test_rotated_solids(void)
+{
+    const double rot[3] = {25.0, -40.0, 70.0};
+    const cdl_vec3 at[3] = {{0.2, -1.4, -0.5}, {1.1, 0.9, 0.4}, {-0.3, 0.4, 1.6}};
+    cdl_vec3 c = cdl_vec3_make(-0.7, 1.2, 2.4);
+    for (int s = -1; s < 4; ++s) {
+        const solid_case *sc = s < 0 ? &box_case : &solids[s];
+        cdl_photometry *ph = solid_file(sc->file[0], sc->file[1], sc->file[2], s < 0 ? box_table : solid_tables[s], 1.0);
+        cdl_goniometric_params gp = CDL_GONIOMETRIC_PARAMS_DEFAULT;
+        gp.photometry = ph;
+        gp.position = c;
+        memcpy(gp.rotation_deg, rot, sizeof rot);
+        cdl_emitter *e = NULL;
+        cdl_error err;
+        CHECK_OK(cdl_emitter_create_goniometric_opening(&gp, &e, &err), &err);
+        double R = case_bound(sc), worst[2] = {0.0, 0.0};
+        for (int k = 0; k < 3; ++k) {
+            cdl_vec3 off = cdl_vec3_scale(at[k], R);
+            cdl_vec3 across = cdl_vec3_normalize(cdl_vec3_cross(off, cdl_vec3_make(0.7, -0.2, 0.5)));
+            check_receiver(e, sc, ph, c, off, across, 0.9, rot, 24, (uint64_t)(1000 + 10 * k), worst);
+        }
+        printf("rotated %s: worst |sampled - surface| %.2e of the facing E (tolerance there %.2e)\n", sc->name,
+               worst[0], worst[1]);
         cdl_emitter_release(e);
         cdl_photometry_release(ph);
     }
@@ -561,11 +636,9 @@ static void check_far_field(const cdl_emitter *e, const cdl_emitter *point, cons
 static void test_flux_and_far_field(void)
 {
     cdl_vec3 c = cdl_vec3_make(0.0, 0.0, 0.0);
-    const solid_case box = {"box", CDL_LUMINOUS_SHAPE_BOX, {0.5 * BOX_L, 0.5 * BOX_W, 0.5 * BOX_H}, -1,
-                            {BOX_W, BOX_L, BOX_H}};
     for (int s = -1; s < 4; ++s) {
         /* the box (s = -1), then the new solids; each at 20 bounding diameters */
-        const solid_case *sc = s < 0 ? &box : &solids[s];
+        const solid_case *sc = s < 0 ? &box_case : &solids[s];
         table_fn table = s < 0 ? box_table : solid_tables[s];
         cdl_photometry *ph = solid_file(sc->file[0], sc->file[1], sc->file[2], table, 1.0);
         cdl_emitter *e = spread(ph, c, 0), *point = spread(ph, c, 1);
@@ -760,6 +833,7 @@ int main(void)
     test_box();
     test_cylinder();
     test_solids_uniform();
+    test_rotated_solids();
     test_flux_and_far_field();
     test_pdf_density();
     test_sign_codes();
