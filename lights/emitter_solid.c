@@ -55,9 +55,9 @@
  * when p is inside that sphere). The pdf, 1 / Omega, is then the same for
  * every direction that meets the solid, and cdl_emitter_radiance makes
  * the same choice from p alone, which keeps it exact. A box and a sphere
- * fill their regions; a cylinder fills about pi / 4 of its box seen along
- * its axis or across it, an ellipsoid about half. Misses cost samples,
- * not accuracy.
+ * fill their regions; a cylinder fills its box's outline seen across its
+ * axis and pi / 4 of it seen along the axis, an ellipsoid pi / 4 seen
+ * along an axis and less obliquely. Misses cost samples, not accuracy.
  */
 #include <math.h>
 #include <string.h>

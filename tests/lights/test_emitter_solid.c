@@ -5,10 +5,12 @@
  * and tilted elements, a box face by face with Lambert's polygon formula)
  * and, for the ellipsoid and the elliptic cylinders, against an independent
  * quadrature over their surfaces; a non-uniform cylinder against the same
- * kind of quadrature; the flux through an enclosing sphere, the far field
+ * kind of quadrature; rotated luminaires against it with the receiver
+ * turned back; the flux through an enclosing sphere, the far field
  * against the point model, the sampler's pdf against cdl_emitter_radiance
- * (pointwise and as a density), and the IES sign codes of each new shape
- * read into the sizes whose outline, ray by ray, is the projected area. */
+ * (pointwise and as a density, on the bounding box's and the bounding
+ * sphere's paths), and the IES sign codes of each new shape read into the
+ * sizes whose outline, ray by ray, is the projected area. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
