@@ -658,21 +658,30 @@ static void test_flux_and_far_field(void)
  * chance that a sample succeeds (meets the solid in front of the
  * receiver) is int pdf(omega) d omega over those directions, here over
  * 2^16 stratified directions uniform on the sphere (4 pi pdf averaged).
- * Both are means of 2^16 stratified draws, whose variance is at most the
- * independent draws' (equal strata): the binomial P (1 - P) / N for the
- * count, the sample variance of 4 pi pdf / N for the integral; held to 4
- * such standard errors. Every solid, from outside and inside its bounding
- * sphere and, but for the box, from inside its bounding box. */
+ * Both are means of 2^16 jittered stratified draws (independent jitters),
+ * whose variance is at most the independent draws' (equal strata): the
+ * binomial P (1 - P) / N for the count, the sample variance of 4 pi pdf /
+ * N for the integral; held to 4 such standard errors. This checks the
+ * pdf's normalisation over what the sampler reaches; how the samples
+ * spread within it, the unbiased E of the other tests. Every solid, from
+ * outside and inside its bounding sphere and, but for the box, from
+ * inside its bounding box. */
 static double pdf_integral_check(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, const char *what)
 {
     const int k = 256;
-    double hits = 0.0, s1 = 0.0, s2 = 0.0;
+    double hits = 0.0, s1 = 0.0, s2 = 0.0, jitter[4];
+    uint64_t x = 0x9e3779b97f4a7c15ull;
     for (int j = 0; j < k; ++j)
         for (int i = 0; i < k; ++i) {
-            double u = (i + 0.5) / k, v = (j + 0.5) / k;
+            /* xorshift64 jitter within the stratum, apart for the two estimates */
+            for (int m = 0; m < 4; ++m) {
+                x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+                jitter[m] = (double)(x >> 11) * 0x1.0p-53;
+            }
             cdl_light_sample ls;
-            hits += cdl_emitter_sample(e, p, n, u, v, &ls);
+            hits += cdl_emitter_sample(e, p, n, (i + jitter[0]) / k, (j + jitter[1]) / k, &ls);
             /* uniform on the sphere: z = 2u - 1 (Archimedes) */
+            double u = (i + jitter[2]) / k, v = (j + jitter[3]) / k;
             double z = 2.0 * u - 1.0, st = sqrt(fmax(0.0, 1.0 - z * z)), phi = CDL_TWO_PI * v, pdf;
             cdl_vec3 dir = cdl_vec3_make(st * cos(phi), st * sin(phi), z);
             cdl_luminance L = cdl_emitter_radiance(e, p, n, dir, &pdf);
