@@ -194,15 +194,18 @@ void cdl_emitter_release(cdl_emitter *emitter);
  * set (cdl_emitter_opening_set_tolerance; it fails, and the
  * caller samples, where 4096 cells do not reach that: a receiver in the
  * opening's plane). Samples (cdl_emitter_sample) with their exact pdf for
- * every opening, for shadows. A luminous solid (a box with luminous
- * sides, vertical cylinder or sphere): every face point seen from w has
- * the luminance I(w) / A_proj(w) (cdl_luminous_opening_projected_area), so
- * the solid's intensity is I(w) and its flux the file's. Exact
- * illuminance for a sphere the receiver sees whole (a cubature of its
- * cone converged to 1e-5; it declines where the receiver's horizon cuts
- * the sphere or the panels do not converge), none for boxes and cylinders
- * (cdl_emitter_has_exact_illuminance is 0); samples uniform in the solid
- * angle of the bounding sphere with their exact pdf.
+ * every opening, for shadows. A luminous solid of LM-63 Table 1 (a box
+ * with luminous sides, vertical cylinder, vertical elliptic cylinder,
+ * sphere, ellipsoid, horizontal cylinder along or across, of non-zero
+ * size): every face point seen from w has the luminance I(w) / A_proj(w)
+ * (cdl_luminous_opening_projected_area), so the solid's intensity is I(w)
+ * and its flux the file's. Exact illuminance for a sphere the receiver
+ * sees whole (a cubature of its cone converged to 1e-5; it declines where
+ * the receiver's horizon cuts the sphere or the panels do not converge),
+ * none for the other solids (cdl_emitter_has_exact_illuminance is 0);
+ * samples uniform in the solid angle of the solid's bounding box (a box:
+ * the box itself) or of its bounding sphere, whichever subtends less,
+ * with their exact pdf.
  * See emitter_opening.c and emitter_solid.c. */
 cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *p, cdl_emitter **out,
                                                   cdl_error *err);

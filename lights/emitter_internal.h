@@ -65,9 +65,9 @@ int cdl_emitter_eval_positional(const cdl_emitter *e, cdl_vec3 position, cdl_emi
 void cdl_emitter_rotation_columns(const double rotation_deg[3], cdl_vec3 col[3]);
 
 /* A goniometric luminaire spread over the luminous solid of its photometry
- * (a box with luminous sides, vertical cylinder or sphere of non-zero
- * size; the caller checked): emitter_solid.c, created through
- * cdl_emitter_create_goniometric_opening. */
+ * (a box with luminous sides, vertical or horizontal (elliptic) cylinder,
+ * sphere or ellipsoid of non-zero size; the caller checked):
+ * emitter_solid.c, created through cdl_emitter_create_goniometric_opening. */
 cdl_status cdl_emitter_create_goniometric_solid(const cdl_goniometric_params *p, cdl_emitter **out, cdl_error *err);
 
 /* 1 and *sphere = the sphere bounding a solid emitter; 0 for any other. */

@@ -4,16 +4,26 @@
  *   (all of cdl_goniometric_params; the solid is the photometry's opening)
  *
  * IES LM-63-2019 (Table 1) gives some luminaires a three-dimensional
- * luminous shape around the photometric centre: a box ("rectangular with
- * luminous sides": length L along the luminaire's x = C0-C180, width W
- * along y, height H along z), a vertical cylinder (diameter W, height H)
- * and a sphere (diameter W). All three are convex and luminous all over,
- * the model photometry_opening.c already describes their projected area
- * A_proj(w) with:
- *     box        |w.x| W H + |w.y| L H + |w.z| W L
- *     cylinder   W H sin(gamma) + pi W^2 / 4 |cos(gamma)|
- *     sphere     pi W^2 / 4.
- * The file's I(w) is the whole luminaire's intensity, so the solid is
+ * luminous shape around the photometric centre, in the luminaire's frame
+ * (x along the length L, C0-C180; y along the width W; z up, height H):
+ *   box ("rectangular with luminous sides")  L x W x H
+ *   vertical cylinder                         diameter W, height H
+ *   vertical elliptic cylinder                semi-axes L/2 (x), W/2 (y), height H
+ *   sphere                                    diameter W
+ *   ellipsoid                                 semi-axes L/2 (x), W/2 (y), H/2 (z)
+ *   horizontal cylinder along                 axis x, length L; semi-axes W/2 (y), H/2 (z)
+ *   horizontal cylinder across                axis y, length W; semi-axes L/2 (x), H/2 (z)
+ * (sizes as cdl_photometry_opening_from_ies fills them: a 1995 code's
+ * diameter copied into the field it leaves 0). All are convex and
+ * luminous all over; photometry_opening.c gives their projected area
+ * A_proj(w) (w a unit vector in the luminaire's frame; a, b, c the
+ * semi-axes along x, y, z):
+ *     box                 |w.x| W H + |w.y| L H + |w.z| W L
+ *     cylinder, axis k    pi a_i a_j |w_k| + 4 h_k sqrt(a_i^2 w_j^2 + a_j^2 w_i^2)
+ *                         (i, j the other two axes, h_k the half length)
+ *     ellipsoid           pi sqrt(b^2 c^2 w_x^2 + a^2 c^2 w_y^2 + a^2 b^2 w_z^2)
+ * (the circular cylinder and the sphere their special cases). The file's
+ * I(w) is the whole luminaire's intensity, so the solid is
  * given the luminance that is uniform over its outline seen from w:
  *     L(w) = I(w) / A_proj(w)
  * at every surface point that faces w (the luminance of a source seen as
@@ -23,23 +33,38 @@
  * A_proj L = I(w) exactly: the far field is the point model and the flux
  * the file's.
  *
+ * Where a ray enters: a box by its three slabs; a cylinder of axis k by
+ * the quadratic of its elliptic cross-section (x_i / a_i)^2 + (x_j /
+ * a_j)^2 = 1 and the slab |x_k| <= h_k; an ellipsoid (and the sphere) as
+ * the unit sphere after x -> x / a componentwise. The scaling is affine, so
+ * o + t d maps to o' + t d' with the same t: the distance along the ray
+ * is read off in the scaled frame.
+ *
  * Illuminance at p, E = int L(-omega) cos(theta_r) d omega over the
  * directions omega from p that meet the solid: for a sphere the receiver
  * sees whole, a cubature over its cone (below); otherwise sampled:
- * directions uniform in the cone of the solid's bounding sphere
- * (every direction when p is inside that sphere), a direction that misses
- * the solid carrying nothing. The pdf, 1 / (2 pi (1 - cos theta_max)), is
- * then the same for every direction that meets the solid, which keeps
- * cdl_emitter_radiance exact. A sphere fills its cone; a box or cylinder
- * fills its share of the bounding sphere's outline (about A_proj /
- * (pi R^2): a tenth for a 1.2 m x 0.1 m box seen from below), which only
- * costs samples, not accuracy.
+ * directions uniform in the solid angle Omega of a region that holds the
+ * solid, a direction that misses the solid carrying nothing. The region is
+ * the solid's bounding box (in the luminaire's frame: the box itself, a
+ * cylinder's or ellipsoid's circumscribed box) where p is outside it and
+ * it subtends less than the bounding sphere's cone (and at least 1e-3 sr,
+ * where its angle excess keeps its digits): a face p sees chosen by its
+ * share of Omega, then uniform in that face's solid angle (Urena, Fajardo
+ * and King 2013, spherical_rectangle.h; the faces p sees tile the box's
+ * solid angle). Otherwise the bounding sphere's cone (every direction
+ * when p is inside that sphere). The pdf, 1 / Omega, is then the same for
+ * every direction that meets the solid, and cdl_emitter_radiance makes
+ * the same choice from p alone, which keeps it exact. A box and a sphere
+ * fill their regions; a cylinder fills its box's outline seen across its
+ * axis and pi / 4 of it seen along the axis, an ellipsoid pi / 4 seen
+ * along an axis and less obliquely. Misses cost samples, not accuracy.
  */
 #include <math.h>
 #include <string.h>
 
 #include "lights/emitter.h"
 #include "lights/emitter_internal.h"
+#include "lights/spherical_rectangle.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 
@@ -49,7 +74,8 @@ typedef struct solid_emitter {
     cdl_luminous_opening opening;
     cdl_vec3 center;
     cdl_vec3 axis[3];            /* the luminaire's x (length), y (width), z (up) in world */
-    double half[3];              /* box: half of L, W, H; cylinder and sphere: radius, radius, half height */
+    double half[3];              /* box: half of L, W, H; other solids: semi-axes (a cylinder's half length on its axis) */
+    int cylinder;                /* a cylinder's axis (0 x, 1 y, 2 z), -1 for a box, sphere or ellipsoid */
     double bound;                /* radius of the bounding sphere */
 } solid_emitter;
 
@@ -98,36 +124,45 @@ static void slab(double o, double d, double h, double *lo, double *hi)
     *hi = fmin(*hi, fmax(a, b));
 }
 
+/* Narrows [*lo, *hi] to the t where o + t d lies in the quadric
+ * sum_m ((o + t d)_m / h_m)^2 <= 1 over the `count` axes idx[m] (two: an
+ * elliptic cylinder about the third axis; three: an ellipsoid). Dividing
+ * by h is affine, so t is the same before and after; 0 when no t is in. */
+static int quadric_span(const double o[3], const double d[3], const double h[3], const int *idx, int count,
+                        double *lo, double *hi)
+{
+    double a = 0.0, b = 0.0, c = -1.0, t0, t1;
+    for (int m = 0; m < count; ++m) {
+        double os = o[idx[m]] / h[idx[m]], ds = d[idx[m]] / h[idx[m]];
+        a += ds * ds;
+        b += os * ds;
+        c += os * os;
+    }
+    if (!(a > 0.0)) return c <= 0.0; /* parallel to the axis: in or out for every t */
+    if (!quadratic(a, b, c, &t0, &t1)) return 0;
+    *lo = fmax(*lo, t0);
+    *hi = fmin(*hi, t1);
+    return 1;
+}
+
 /* Distance along the unit world direction dir from p to where the ray
  * enters the solid; 0 when it misses or p is inside. */
 static double solid_entry(const solid_emitter *s, cdl_vec3 p, cdl_vec3 dir)
 {
-    cdl_vec3 o = to_local(s, cdl_vec3_sub(p, s->center)), d = to_local(s, dir);
-    double lo = -INFINITY, hi = INFINITY, t0, t1;
-    switch (s->opening.shape) {
-    case CDL_LUMINOUS_SHAPE_BOX:
-        slab(o.x, d.x, s->half[0], &lo, &hi);
-        slab(o.y, d.y, s->half[1], &lo, &hi);
-        slab(o.z, d.z, s->half[2], &lo, &hi);
-        break;
-    case CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER: {
-        /* (o + t d) in the plane of x, y within the radius */
-        double a = d.x * d.x + d.y * d.y, c = o.x * o.x + o.y * o.y - s->half[0] * s->half[0];
-        if (a > 0.0) {
-            if (!quadratic(a, o.x * d.x + o.y * d.y, c, &t0, &t1)) return 0.0;
-            lo = t0;
-            hi = t1;
-        } else if (c > 0.0) {
-            return 0.0;
-        }
-        slab(o.z, d.z, s->half[2], &lo, &hi);
-        break;
-    }
-    default: /* sphere */
-        if (!quadratic(1.0, cdl_vec3_dot(o, d), cdl_vec3_dot(o, o) - s->half[0] * s->half[0], &t0, &t1)) return 0.0;
-        lo = t0;
-        hi = t1;
-        break;
+    cdl_vec3 ol = to_local(s, cdl_vec3_sub(p, s->center)), dl = to_local(s, dir);
+    double o[3] = {ol.x, ol.y, ol.z}, d[3] = {dl.x, dl.y, dl.z}, lo = -INFINITY, hi = INFINITY;
+    int k = s->cylinder;
+    if (s->opening.shape == CDL_LUMINOUS_SHAPE_BOX) {
+        for (int m = 0; m < 3; ++m) slab(o[m], d[m], s->half[m], &lo, &hi);
+    } else if (k >= 0) {
+        /* the elliptic cross-section about axis k, then the slab of its length */
+        const int across[2] = {(k + 1) % 3, (k + 2) % 3};
+        if (!quadric_span(o, d, s->half, across, 2, &lo, &hi)) return 0.0;
+        slab(o[k], d[k], s->half[k], &lo, &hi);
+    } else {
+        /* sphere or ellipsoid */
+        const int all[3] = {0, 1, 2};
+        if (!quadric_span(o, d, s->half, all, 3, &lo, &hi)) return 0.0;
     }
     return lo <= hi && lo > 0.0 && isfinite(lo) ? lo : 0.0;
 }
@@ -156,22 +191,91 @@ static double cone_height(const solid_emitter *s, cdl_vec3 p, cdl_vec3 *axis)
     return sin2 / (1.0 + sqrt(1.0 - sin2));
 }
 
+/* Below this solid angle the bounding box's faces are not sampled (the
+ * spherical rectangle's angle excess, ~1e-15 sr absolute, would lose
+ * relative digits; emitter_area.c's threshold): the cone is. */
+#define BOX_SOLID_ANGLE_MIN 1e-3
+
+/* The faces of the solid's bounding box (half[] about the centre, in the
+ * luminaire's frame) that p sees, each a spherical rectangle, and their
+ * total solid angle. */
+typedef struct box_view {
+    cdl_spherical_rectangle face[3];
+    int count;
+    double omega;
+} box_view;
+
+/* Fills v for p outside the bounding box: the faces whose plane p lies
+ * beyond (on a convex body, those it sees; their solid angles tile the
+ * box's). Returns 0 when p is inside the box. */
+static int solid_box_view(const solid_emitter *s, cdl_vec3 p, box_view *v)
+{
+    cdl_vec3 ol = to_local(s, cdl_vec3_sub(p, s->center));
+    double o[3] = {ol.x, ol.y, ol.z};
+    const double *h = s->half;
+    v->count = 0;
+    v->omega = 0.0;
+    for (int m = 0; m < 3; ++m) {
+        if (!(fabs(o[m]) > h[m])) continue;
+        int i = (m + 1) % 3, j = (m + 2) % 3;
+        /* the face at x_m = +-h_m: corner (-h_i, -h_j), edges 2 h_i and 2 h_j */
+        cdl_vec3 corner = cdl_vec3_madd(s->center, o[m] > 0.0 ? h[m] : -h[m], s->axis[m]);
+        corner = cdl_vec3_madd(cdl_vec3_madd(corner, -h[i], s->axis[i]), -h[j], s->axis[j]);
+        double S = cdl_spherical_rectangle_init(&v->face[v->count], p, corner, cdl_vec3_scale(s->axis[i], 2.0 * h[i]),
+                                                cdl_vec3_scale(s->axis[j], 2.0 * h[j]));
+        if (S > 0.0) {
+            v->omega += S;
+            v->count++;
+        }
+    }
+    return v->count > 0;
+}
+
+/* The solid angle p samples uniformly (the pdf is its inverse wherever
+ * the direction meets the solid): the bounding box's faces (v->count > 0)
+ * where p is outside the box and the box subtends less than the bounding
+ * sphere's cone and at least BOX_SOLID_ANGLE_MIN; otherwise the cone (h
+ * its 1 - cos(theta_max), axis its axis). A sphere always its cone, which
+ * it fills. One decision from one arithmetic in sample and radiance, so
+ * their pdfs agree. */
+static double solid_sampled_region(const solid_emitter *s, cdl_vec3 p, box_view *v, cdl_vec3 *axis, double *h)
+{
+    *h = cone_height(s, p, axis);
+    double cone = CDL_TWO_PI * *h;
+    if (s->opening.shape != CDL_LUMINOUS_SHAPE_SPHERE && solid_box_view(s, p, v) && v->omega >= BOX_SOLID_ANGLE_MIN &&
+        v->omega < cone)
+        return v->omega;
+    v->count = 0;
+    return cone;
+}
+
 static int solid_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1, double u2, cdl_light_sample *out)
 {
     const solid_emitter *s = as_solid(e);
-    cdl_vec3 axis;
-    double h = cone_height(s, p, &axis);
-    /* uniform in solid angle within the cone: cos(theta) uniform in [1 - h, 1] */
-    double c = 1.0 - u1 * h, st = sqrt(fmax(0.0, (1.0 - c) * (1.0 + c))), phi = CDL_TWO_PI * u2;
-    cdl_frame f = cdl_frame_from_normal(axis);
-    cdl_vec3 dir = cdl_vec3_normalize(cdl_frame_to_world(&f, cdl_vec3_make(st * cos(phi), st * sin(phi), c)));
+    box_view v;
+    cdl_vec3 axis, dir;
+    double h, omega = solid_sampled_region(s, p, &v, &axis, &h);
+    if (v.count > 0) {
+        /* a face by its share of the box's solid angle, u1 stretched over
+         * that share, then uniform in the face's solid angle (Urena et al.) */
+        int f = 0;
+        double below = 0.0, at = u1 * omega;
+        while (f < v.count - 1 && below + v.face[f].S <= at) below += v.face[f++].S;
+        double u = fmin(1.0, fmax(0.0, (at - below) / v.face[f].S));
+        dir = cdl_vec3_normalize(cdl_spherical_rectangle_sample(&v.face[f], u, u2));
+    } else {
+        /* uniform in solid angle within the cone: cos(theta) uniform in [1 - h, 1] */
+        double c = 1.0 - u1 * h, st = sqrt(fmax(0.0, (1.0 - c) * (1.0 + c))), phi = CDL_TWO_PI * u2;
+        cdl_frame f = cdl_frame_from_normal(axis);
+        dir = cdl_vec3_normalize(cdl_frame_to_world(&f, cdl_vec3_make(st * cos(phi), st * sin(phi), c)));
+    }
     if (!(cdl_vec3_dot(dir, n) > 0.0)) return 0;
     double t = solid_entry(s, p, dir);
     if (!(t > 0.0)) return 0;
     out->to_light = dir;
     out->distance = t;
     out->L = cdl_nits(solid_luminance_towards(s, cdl_vec3_neg(dir)));
-    out->pdf = 1.0 / (CDL_TWO_PI * h);
+    out->pdf = 1.0 / omega;
     return out->L.cd_m2 > 0.0;
 }
 
@@ -181,8 +285,10 @@ static cdl_luminance solid_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n
     const solid_emitter *s = as_solid(e);
     *pdf = 0.0;
     if (!(solid_entry(s, p, dir) > 0.0)) return cdl_nits(0.0);
+    box_view v;
     cdl_vec3 axis;
-    *pdf = 1.0 / (CDL_TWO_PI * cone_height(s, p, &axis));
+    double h;
+    *pdf = 1.0 / solid_sampled_region(s, p, &v, &axis, &h);
     return cdl_nits(solid_luminance_towards(s, cdl_vec3_neg(dir)));
 }
 
@@ -258,12 +364,36 @@ static int solid_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_illumin
     return 0;
 }
 
+/* The axis (0 x, 1 y, 2 z) of a cylindrical solid; -1 for the others. */
+static int solid_cylinder_axis(cdl_luminous_shape shape)
+{
+    switch (shape) {
+    case CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER:
+    case CDL_LUMINOUS_SHAPE_VERTICAL_ELLIPTIC_CYLINDER: return 2;
+    case CDL_LUMINOUS_SHAPE_HORIZONTAL_CYLINDER_ALONG: return 0;
+    case CDL_LUMINOUS_SHAPE_HORIZONTAL_CYLINDER_ACROSS: return 1;
+    default: return -1;
+    }
+}
+
+/* Radius of the sphere about the centre that bounds the solid: a box's
+ * half diagonal; a cylinder's rim, its longer cross-section semi-axis
+ * beside its half length; an ellipsoid's longest semi-axis. */
+static double solid_bounding_radius(const solid_emitter *s)
+{
+    const double *h = s->half;
+    int k = s->cylinder;
+    if (s->opening.shape == CDL_LUMINOUS_SHAPE_BOX) return sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+    if (k >= 0) return hypot(fmax(h[(k + 1) % 3], h[(k + 2) % 3]), h[k]);
+    return fmax(h[0], fmax(h[1], h[2]));
+}
+
 static void solid_destroy(cdl_emitter *e)
 {
     cdl_emitter_release(((solid_emitter *)e)->point);
 }
 
-/* boxes and cylinders have no exact E (their edges cut the bounding cone); spheres the cubature */
+/* boxes, cylinders and ellipsoids have no exact E (they do not fill the bounding cone); spheres the cubature */
 static const cdl_emitter_ops solid_ops = {solid_flux,     solid_intensity, NULL, NULL, solid_sample,
                                           solid_radiance, solid_destroy,   NULL, NULL};
 static const cdl_emitter_ops sphere_ops = {solid_flux,     solid_intensity, NULL, solid_exact, solid_sample,
@@ -297,26 +427,22 @@ cdl_status cdl_emitter_create_goniometric_solid(const cdl_goniometric_params *p,
     s->opening = *op;
     s->center = p->position;
     cdl_emitter_rotation_columns(p->rotation_deg, s->axis);
-    double r = 0.5 * op->width_m;
-    switch (op->shape) {
-    case CDL_LUMINOUS_SHAPE_BOX:
-        s->half[0] = 0.5 * op->length_m;
-        s->half[1] = r;
-        s->half[2] = 0.5 * op->height_m;
-        break;
-    case CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER:
-        s->half[0] = s->half[1] = r;
-        s->half[2] = 0.5 * op->height_m;
-        /* the projected area takes the cylinder's diameter from the width */
+    s->cylinder = solid_cylinder_axis(op->shape);
+    /* semi-axes along the luminaire's x, y, z: the length, width and height
+     * halved, as cdl_luminous_opening_projected_area reads them */
+    s->half[0] = 0.5 * op->length_m;
+    s->half[1] = 0.5 * op->width_m;
+    s->half[2] = 0.5 * op->height_m;
+    if (op->shape == CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER || op->shape == CDL_LUMINOUS_SHAPE_SPHERE) {
+        /* round: the projected area takes the diameter from the width alone */
+        s->half[0] = s->half[1] = 0.5 * op->width_m;
         s->opening.length_m = op->width_m;
-        break;
-    default: /* sphere */
-        s->half[0] = s->half[1] = s->half[2] = r;
-        break;
+        if (op->shape == CDL_LUMINOUS_SHAPE_SPHERE) {
+            s->half[2] = 0.5 * op->width_m;
+            s->opening.height_m = op->width_m;
+        }
     }
-    s->bound = op->shape == CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER ? hypot(s->half[0], s->half[2])
-                                                                 : cdl_vec3_length(cdl_vec3_make(s->half[0], s->half[1], s->half[2]));
-    if (op->shape == CDL_LUMINOUS_SHAPE_SPHERE) s->bound = r;
+    s->bound = solid_bounding_radius(s);
     *out = &s->base;
     return CDL_OK;
 }

@@ -239,10 +239,10 @@ typedef struct cdl_luminous_opening {
 int cdl_luminous_opening_is_flat(const cdl_luminous_opening *opening);
 
 /* 1 when cdl_emitter_create_goniometric_opening spreads light over the
- * opening: a flat one (cdl_luminous_opening_is_flat), or a box with
- * luminous sides, vertical cylinder or sphere of non-zero size. Other
- * shapes (ellipsoids, horizontal cylinders, vertical circles) and points
- * stay points. */
+ * opening: a flat one (cdl_luminous_opening_is_flat), or a luminous solid
+ * of non-zero size (a box with luminous sides, vertical cylinder, vertical
+ * elliptic cylinder, sphere, ellipsoid, or horizontal cylinder along or
+ * across). Other shapes and points stay points. */
 int cdl_luminous_opening_is_spread(const cdl_luminous_opening *opening);
 
 /* The opening's largest dimension in metres (its diagonal for rectangles

@@ -135,7 +135,12 @@ int cdl_luminous_opening_is_flat(const cdl_luminous_opening *o)
 int cdl_luminous_opening_is_spread(const cdl_luminous_opening *o)
 {
     switch (o->shape) {
-    case CDL_LUMINOUS_SHAPE_BOX: return o->width_m > 0.0 && o->length_m > 0.0 && o->height_m > 0.0;
+    case CDL_LUMINOUS_SHAPE_BOX:
+    case CDL_LUMINOUS_SHAPE_VERTICAL_ELLIPTIC_CYLINDER:
+    case CDL_LUMINOUS_SHAPE_ELLIPSOID:
+    case CDL_LUMINOUS_SHAPE_HORIZONTAL_CYLINDER_ALONG:
+    case CDL_LUMINOUS_SHAPE_HORIZONTAL_CYLINDER_ACROSS:
+        return o->width_m > 0.0 && o->length_m > 0.0 && o->height_m > 0.0;
     case CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER: return o->width_m > 0.0 && o->height_m > 0.0;
     case CDL_LUMINOUS_SHAPE_SPHERE: return o->width_m > 0.0;
     default: return cdl_luminous_opening_is_flat(o);

@@ -483,8 +483,8 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
         if (lights.lights[l].near_field_unspread)
             cJSON_AddStringToObject(item, "near_field",
                                     "\"always\" asked, but the file gives no luminous opening that is spread "
-                                    "(rectangle, circle, ellipse, box with luminous sides, vertical cylinder or "
-                                    "sphere of non-zero size): lit as a point");
+                                    "(rectangle, circle, ellipse, box with luminous sides, vertical or horizontal "
+                                    "(elliptic) cylinder, sphere or ellipsoid of non-zero size): lit as a point");
         plan_grids[l] = cJSON_AddObjectToObject(item, "grids");
         cJSON_AddItemToArray(direct, item);
     }

@@ -104,7 +104,8 @@ cdl_status cdl_solve_check_near_field(const cdl_scene *scene, const cdl_scene_li
         cdl_status st = cdl_solution_add_warning(
             out, err,
             "%s: near_field \"always\": %s gives %s %s (%g x %g x %g m): lit as a point (spread are rectangles, "
-            "circles, ellipses, boxes with luminous sides, vertical cylinders and spheres of non-zero size)",
+            "circles, ellipses, boxes with luminous sides, vertical and horizontal (elliptic) cylinders, spheres and "
+            "ellipsoids of non-zero size)",
             sp->json_path, sp->file, o->shape == CDL_LUMINOUS_SHAPE_POINT ? "no luminous opening, a" : "the opening",
             cdl_luminous_shape_name(o->shape), o->width_m, o->length_m, o->height_m);
         if (st != CDL_OK) return st;

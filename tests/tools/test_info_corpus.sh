@@ -69,7 +69,7 @@ for m in "ies_lithonia_AF10_bf088.ies:rectangle:0.329184:1.2192:0" \
   text=$("$CANDELA" info "$dir/$f")
   check "$f: the opening shown" '[[ "$text" == *"opening         $shape"* ]]'
   case "$shape" in
-    rectangle|circle|box|"vertical cylinder"|sphere) check "$f: the near-field distance shown" '[[ "$text" == *"near field      spread over its opening within"* ]]' ;;
+    rectangle|circle|box|"vertical cylinder"|"vertical elliptic cylinder"|sphere|ellipsoid|"horizontal cylinder"*) check "$f: the near-field distance shown" '[[ "$text" == *"near field      spread over its opening within"* ]]' ;;
     *) check "$f: no near field for a $shape" '[[ "$text" != *"near field      "* ]]' ;;
   esac
   "$CANDELA" convert -q "$dir/$f" "$tmp/o.ies" && back=$("$CANDELA" info "$tmp/o.ies")

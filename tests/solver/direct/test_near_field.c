@@ -415,6 +415,43 @@ static void test_sphere(void)
     calibration_check(&tally, "sphere cut by the horizon, quality high");
 }
 
+/* The other luminous solids of LM-63 Table 1 (an ellipsoid, a vertical
+ * elliptic cylinder, horizontal cylinders along and across, in their 2002
+ * and 1995 codes) are spread under near_field "always": the plan says so,
+ * nothing warns that they stay points, and a probe below each is lit
+ * (its light from the solid, sampled with a stated error). */
+static void test_other_solids(void)
+{
+    static const char *const codes[6][2] = {
+        {"ellipsoid", "-0.3 -0.6 -0.2"},          {"vertical elliptic cylinder", "-0.2 -0.5 0.3"},
+        {"horizontal cylinder along", "-0.2 0.8 -0.12"}, {"horizontal cylinder across", "0.6 -0.25 -0.15"},
+        {"1995 along", "0 0.8 -0.12"},            {"1995 ellipsoid", "-0.3 0.6 -0.2"},
+    };
+    for (int m = 0; m < 6; ++m) {
+        char path[600], json[2048];
+        snprintf(path, sizeof path, "%s/solid%d.ies", folder, m);
+        if (!write_one_plane_ies(path, codes[m][1], "500 400 300")) return;
+        snprintf(json, sizeof json,
+                 "{\"version\": 1, \"luminaires\": [{\"type\": \"goniometric\", \"file\": \"%s\", \"position\": [0, "
+                 "0, 2], \"near_field\": \"always\"}], \"grids\": [{\"name\": \"p\", \"type\": \"points\", "
+                 "\"points\": [{\"p\": [0.1, 0, 1.2], \"n\": [0, 0, 1]}]}],"
+                 " \"solver\": {\"method\": \"direct\", \"quality\": \"draft\"}}",
+                 path);
+        cdl_scene *scene;
+        cdl_solution sol;
+        if (!fixture_solve(json, &scene, &sol, 1)) return;
+        CHECK_MSG(strstr(sol.plan_json, "near field \\\"always\\\": spread over its luminous opening") != NULL &&
+                      strstr(sol.plan_json, "lit as a point") == NULL,
+                  "%s: not spread: %s", codes[m][0], sol.plan_json);
+        for (size_t w = 0; w < sol.warning_count; ++w)
+            CHECK_MSG(strstr(sol.warnings[w], "near_field") == NULL, "%s: %s", codes[m][0], sol.warnings[w]);
+        /* 500 cd at the nadir from 0.8 m: some hundreds of lux, sampled */
+        CHECK_MSG(sol.grids[0].E[0] > 100.0 && sol.grids[0].E[0] < 2000.0 && sol.grids[0].E_stderr[0] > 0.0,
+                  "%s: E %g +- %g", codes[m][0], sol.grids[0].E[0], sol.grids[0].E_stderr[0]);
+        fixture_release(scene, &sol);
+    }
+}
+
 /* Interreflection lit by openings and a luminous solid: inside an
  * integrating sphere (radius 1, reflectance rho) every wall point receives
  * the interreflected illuminance rho Phi / (A (1 - rho)) whatever the
@@ -465,6 +502,7 @@ int main(void)
     test_skewed_shadow();
     test_soft_shadow();
     test_sphere();
+    test_other_solids();
     test_interreflection();
     return check_finish();
 }
