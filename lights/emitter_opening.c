@@ -792,8 +792,9 @@ cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *
     const cdl_luminous_opening *op = &cdl_photometry_get_metadata(p->photometry)->opening;
     if (!cdl_luminous_opening_is_spread(op))
         return cdl_error_set(err, CDL_ERR_INPUT,
-                             "goniometric emitter: opening: expected a rectangle, circle, ellipse, box with luminous "
-                             "sides, vertical or horizontal (elliptic) cylinder, sphere or ellipsoid of non-zero size to "
+                             "goniometric emitter: opening: expected a rectangle, circle or ellipse (horizontal or "
+                             "vertical), box with luminous sides, vertical or horizontal (elliptic) cylinder, sphere or "
+                             "ellipsoid of non-zero size to "
                              "spread the light over, found %s "
                              "%g x %g x %g m",
                              cdl_luminous_shape_name(op->shape), op->width_m, op->length_m, op->height_m);

@@ -235,14 +235,16 @@ typedef struct cdl_luminous_opening {
 } cdl_luminous_opening;
 
 /* 1 when the opening is flat with a non-zero size (a rectangle, circle or
- * ellipse): what cdl_emitter_create_goniometric_opening spreads light over. */
+ * ellipse in the luminaire's x-y plane, or LM-63-2019's vertical circle
+ * or ellipse in its y-z plane): what cdl_emitter_create_goniometric_opening
+ * spreads light over as a flat opening. */
 int cdl_luminous_opening_is_flat(const cdl_luminous_opening *opening);
 
 /* 1 when cdl_emitter_create_goniometric_opening spreads light over the
  * opening: a flat one (cdl_luminous_opening_is_flat), or a luminous solid
  * of non-zero size (a box with luminous sides, vertical cylinder, vertical
  * elliptic cylinder, sphere, ellipsoid, or horizontal cylinder along or
- * across). Other shapes and points stay points. */
+ * across): every shape of LM-63-2019's Table 1 but the point. */
 int cdl_luminous_opening_is_spread(const cdl_luminous_opening *opening);
 
 /* The opening's largest dimension in metres (its diagonal for rectangles

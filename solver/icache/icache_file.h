@@ -70,8 +70,11 @@
  * revision whenever gathering, placement or interpolation would make other
  * records from the same scene and settings (2: records held to twice a
  * point's variance target, second-order term in the interpolation; 3:
- * spacing from the points, records of radius 0 serving their own point). */
-#define CDL_ICACHE_MAKER CANDELA_VERSION " records-3"
+ * spacing from the points, records of radius 0 serving their own point;
+ * 4: luminaires spread over the remaining LM-63 solids and vertical
+ * circles, the near-field cubature to 1/50 of the target: the light the
+ * records gather changed). */
+#define CDL_ICACHE_MAKER CANDELA_VERSION " records-4"
 #define CDL_ICACHE_FILE_NAME_MAX 4096    /* longest grid name, bytes */
 
 /* The solver settings records depend on (not threads, outputs or colours). */

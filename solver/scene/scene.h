@@ -93,7 +93,7 @@ typedef enum cdl_luminaire_kind {
  * point: AUTO at calculation points nearer than CDL_NEAR_FIELD_DISTANCES
  * times the opening's largest dimension, ALWAYS everywhere, NEVER nowhere.
  * A file whose opening is not spread (cdl_luminous_opening_is_spread: flat,
- * or a luminous solid of LM-63 Table 1 (box with luminous sides, vertical
+ * horizontal or vertical, or a luminous solid of LM-63 Table 1 (box with luminous sides, vertical
  * or horizontal (elliptic) cylinder, sphere, ellipsoid) of non-zero size)
  * stays a point; under ALWAYS the plan and a warning say so. */
 typedef enum cdl_near_field_mode { CDL_NEAR_FIELD_AUTO = 0, CDL_NEAR_FIELD_ALWAYS, CDL_NEAR_FIELD_NEVER } cdl_near_field_mode;
