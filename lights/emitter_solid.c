@@ -77,6 +77,8 @@ typedef struct solid_emitter {
     double half[3];              /* box: half of L, W, H; other solids: semi-axes (a cylinder's half length on its axis) */
     int cylinder;                /* a cylinder's axis (0 x, 1 y, 2 z), -1 for a box, sphere or ellipsoid */
     double bound;                /* radius of the bounding sphere */
+    double side_top[4];          /* box: where the sides facing C0, C90, C180, C270 stop being luminous
+                                  * (local z; the top of the box unless their heights differ) */
 } solid_emitter;
 
 static const solid_emitter *as_solid(const cdl_emitter *e)
@@ -165,6 +167,23 @@ static double solid_entry(const solid_emitter *s, cdl_vec3 p, cdl_vec3 dir)
         if (!quadric_span(o, d, s->half, all, 3, &lo, &hi)) return 0.0;
     }
     return lo <= hi && lo > 0.0 && isfinite(lo) ? lo : 0.0;
+}
+
+/* Is the point where the ray from p along dir enters the solid (at
+ * distance t) luminous? Everywhere but on a box's side above its own
+ * luminous height (EULUMDAT's sides luminous to different heights: the
+ * rest of the side is the dark housing). The face entered is the one the
+ * entry point lies on, the axis where it is furthest out relative to the
+ * box's half size. */
+static int solid_entry_lit(const solid_emitter *s, cdl_vec3 p, cdl_vec3 dir, double t)
+{
+    if (s->opening.shape != CDL_LUMINOUS_SHAPE_BOX) return 1;
+    cdl_vec3 q = to_local(s, cdl_vec3_sub(cdl_vec3_madd(p, t, dir), s->center));
+    double rx = fabs(q.x) / s->half[0], ry = fabs(q.y) / s->half[1], rz = fabs(q.z) / s->half[2];
+    if (rz >= rx && rz >= ry) return 1; /* the top or bottom */
+    int side = rx >= ry ? (q.x > 0.0 ? 0 : 2) : (q.y > 0.0 ? 1 : 3);
+    /* within a rounding of the box's size of its luminous top: lit */
+    return q.z <= s->side_top[side] + 1e-12 * s->bound;
 }
 
 /* Luminance arriving at p along dir from the solid: L = I(w) / A_proj(w),
@@ -271,7 +290,7 @@ static int solid_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, double u1,
     }
     if (!(cdl_vec3_dot(dir, n) > 0.0)) return 0;
     double t = solid_entry(s, p, dir);
-    if (!(t > 0.0)) return 0;
+    if (!(t > 0.0) || !solid_entry_lit(s, p, dir, t)) return 0;
     out->to_light = dir;
     out->distance = t;
     out->L = cdl_nits(solid_luminance_towards(s, cdl_vec3_neg(dir)));
@@ -284,11 +303,13 @@ static cdl_luminance solid_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n
     (void)n;
     const solid_emitter *s = as_solid(e);
     *pdf = 0.0;
-    if (!(solid_entry(s, p, dir) > 0.0)) return cdl_nits(0.0);
+    double t = solid_entry(s, p, dir);
+    if (!(t > 0.0)) return cdl_nits(0.0);
     box_view v;
     cdl_vec3 axis;
     double h;
     *pdf = 1.0 / solid_sampled_region(s, p, &v, &axis, &h);
+    if (!solid_entry_lit(s, p, dir, t)) return cdl_nits(0.0);
     return cdl_nits(solid_luminance_towards(s, cdl_vec3_neg(dir)));
 }
 
@@ -433,6 +454,12 @@ cdl_status cdl_emitter_create_goniometric_solid(const cdl_goniometric_params *p,
     s->half[0] = 0.5 * op->length_m;
     s->half[1] = 0.5 * op->width_m;
     s->half[2] = 0.5 * op->height_m;
+    if (op->shape == CDL_LUMINOUS_SHAPE_BOX) {
+        /* as tall as its tallest side (sides luminous to different heights) */
+        for (int k = 0; k < 4; ++k)
+            s->half[2] = fmax(s->half[2], 0.5 * cdl_luminous_opening_box_side_height_m(op, k));
+        for (int k = 0; k < 4; ++k) s->side_top[k] = -s->half[2] + cdl_luminous_opening_box_side_height_m(op, k);
+    }
     if (op->shape == CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER || op->shape == CDL_LUMINOUS_SHAPE_SPHERE) {
         /* round: the projected area takes the diameter from the width alone */
         s->half[0] = s->half[1] = 0.5 * op->width_m;

@@ -236,6 +236,11 @@ static void fill_opening(cdl_photometry_metadata *m)
         o->shape = o->height_m > 0.0 ? CDL_LUMINOUS_SHAPE_BOX : CDL_LUMINOUS_SHAPE_RECTANGLE;
         o->width_m = a;
         o->length_m = b;
+        /* sides luminous to different heights: each its own (a round
+         * luminous area's side has no C0 or C90 face: its mean stands) */
+        const double *h4 = m->ldt_luminous_height_mm;
+        if (o->shape == CDL_LUMINOUS_SHAPE_BOX && (h4[0] != h4[1] || h4[0] != h4[2] || h4[0] != h4[3]))
+            for (int k = 0; k < 4; ++k) o->side_height_m[k] = fabs(h4[k]) / 1000.0;
     }
 }
 

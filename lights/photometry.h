@@ -232,6 +232,12 @@ typedef struct cdl_luminous_opening {
     double width_m, length_m, height_m; /* magnitudes in metres (diameter for round shapes) */
     double raw[3];                      /* IES width, length, height as written (file units), else 0 */
     int units_type;                     /* IES units: 1 feet, 2 metres; 0 when not from IES */
+    /* A box whose sides are luminous to different heights (EULUMDAT lines
+     * 18-21): the luminous height of the sides facing C0, C90, C180 and
+     * C270, each from the bottom of the box, which is as tall as the
+     * tallest; height_m is then their mean (LM-63's one height). All 0:
+     * every side luminous over height_m. */
+    double side_height_m[4];
 } cdl_luminous_opening;
 
 /* 1 when the opening is flat with a non-zero size (a rectangle, circle or
@@ -246,6 +252,11 @@ int cdl_luminous_opening_is_flat(const cdl_luminous_opening *opening);
  * elliptic cylinder, sphere, ellipsoid, or horizontal cylinder along or
  * across): every shape of LM-63-2019's Table 1 but the point. */
 int cdl_luminous_opening_is_spread(const cdl_luminous_opening *opening);
+
+/* The luminous height in metres of a box's side facing C0, C90, C180 or
+ * C270 (side 0 to 3; side_height_m, or height_m where the sides do not
+ * differ); 0 for another side index. */
+double cdl_luminous_opening_box_side_height_m(const cdl_luminous_opening *opening, int side);
 
 /* The opening's largest dimension in metres (its diagonal for rectangles
  * and boxes, the longest axis of round shapes, the diagonal of a

@@ -147,9 +147,25 @@ int cdl_luminous_opening_is_spread(const cdl_luminous_opening *o)
     }
 }
 
+/* The height of a box's sides: its tallest side where they differ, else
+ * height_m. */
+static double box_height(const cdl_luminous_opening *o)
+{
+    double h = fmax(fmax(o->side_height_m[0], o->side_height_m[1]), fmax(o->side_height_m[2], o->side_height_m[3]));
+    return h > 0.0 ? h : o->height_m;
+}
+
+double cdl_luminous_opening_box_side_height_m(const cdl_luminous_opening *o, int side)
+{
+    if (side < 0 || side > 3) return 0.0;
+    int differ = o->side_height_m[0] > 0.0 || o->side_height_m[1] > 0.0 || o->side_height_m[2] > 0.0 ||
+                 o->side_height_m[3] > 0.0;
+    return differ ? o->side_height_m[side] : o->height_m;
+}
+
 double cdl_luminous_opening_largest_m(const cdl_luminous_opening *o)
 {
-    double W = o->width_m, L = o->length_m, H = o->height_m;
+    double W = o->width_m, L = o->length_m, H = o->shape == CDL_LUMINOUS_SHAPE_BOX ? box_height(o) : o->height_m;
     switch (o->shape) {
     case CDL_LUMINOUS_SHAPE_POINT: return 0.0;
     case CDL_LUMINOUS_SHAPE_CIRCLE: return W;
@@ -176,12 +192,16 @@ double cdl_luminous_opening_projected_area(const cdl_luminous_opening *o, cdl_ve
     double len = cdl_vec3_length(dir);
     if (!(len > 0.0) || !isfinite(len)) return 0.0;
     double x = fabs(dir.x / len), y = fabs(dir.y / len), z = fabs(dir.z / len);
+    /* the box's side facing dir along x (C0 when dir.x > 0, else C180) and
+     * along y (C90 or C270), each at its own luminous height */
+    double hx = cdl_luminous_opening_box_side_height_m(o, dir.x > 0.0 ? 0 : 2);
+    double hy = cdl_luminous_opening_box_side_height_m(o, dir.y > 0.0 ? 1 : 3);
     /* luminaire frame: length L along x, width W along y, height H along z */
     double a = 0.5 * o->length_m, b = 0.5 * o->width_m, c = 0.5 * o->height_m;
     double W = o->width_m, L = o->length_m, H = o->height_m;
     switch (o->shape) {
     case CDL_LUMINOUS_SHAPE_RECTANGLE: return W * L * z;
-    case CDL_LUMINOUS_SHAPE_BOX: return W * L * z + L * H * y + W * H * x;
+    case CDL_LUMINOUS_SHAPE_BOX: return W * L * z + L * hy * y + W * hx * x;
     case CDL_LUMINOUS_SHAPE_CIRCLE: return 0.25 * CDL_PI * W * W * z;
     case CDL_LUMINOUS_SHAPE_ELLIPSE: return CDL_PI * a * b * z;
     case CDL_LUMINOUS_SHAPE_VERTICAL_CYLINDER: return 0.25 * CDL_PI * W * W * z + W * H * hypot(x, y);

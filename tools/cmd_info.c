@@ -230,6 +230,12 @@ static cJSON *info_json(const char *path, const cdl_photometry *p, const cdl_pho
     add_number(op, "width_m", 1, m->opening.width_m);
     add_number(op, "length_m", 1, m->opening.length_m);
     add_number(op, "height_m", 1, m->opening.height_m);
+    if (m->opening.shape == CDL_LUMINOUS_SHAPE_BOX) {
+        /* each side's luminous height: C0, C90, C180, C270 */
+        cJSON *sides = cJSON_AddArrayToObject(op, "side_heights_m");
+        for (int k = 0; k < 4; ++k)
+            cJSON_AddItemToArray(sides, cJSON_CreateNumber(cdl_luminous_opening_box_side_height_m(&m->opening, k)));
+    }
     add_opening_luminance(op, p);
     cJSON *kw = cJSON_AddArrayToObject(j, "keywords");
     for (size_t i = 0; i < m->keyword_count; ++i) {
@@ -333,6 +339,10 @@ static void print_text(const char *path, const cdl_photometry *p, const cdl_phot
     if (m->opening.shape != CDL_LUMINOUS_SHAPE_POINT)
         printf(", %.4g x %.4g x %.4g m (width x length x height)", m->opening.width_m, m->opening.length_m,
                m->opening.height_m);
+    const double *sh = m->opening.side_height_m;
+    if (m->opening.shape == CDL_LUMINOUS_SHAPE_BOX && (sh[0] > 0.0 || sh[1] > 0.0 || sh[2] > 0.0 || sh[3] > 0.0))
+        printf(", sides luminous to %.4g (C0), %.4g (C90), %.4g (C180), %.4g (C270) m, the height their mean", sh[0],
+               sh[1], sh[2], sh[3]);
     printf("\n");
     if (cdl_luminous_opening_is_spread(&m->opening))
         printf("%-16sspread over its opening within %.3g m (%g x its largest dimension %.3g m)\n", "near field",

@@ -448,10 +448,10 @@ static void test_luminance(void)
     cdl_photometry_opening_luminance(ph, 0.0, 90.0, &avg, &max);
     CHECK(avg.cd_m2 == 0.0);
     /* a box seen from (C 90, gamma 60): W L cos 60 + L H sin 60 */
-    cdl_luminous_opening box = {CDL_LUMINOUS_SHAPE_BOX, 0.3, 1.2, 0.1, {0, 0, 0}, 2};
+    cdl_luminous_opening box = {CDL_LUMINOUS_SHAPE_BOX, 0.3, 1.2, 0.1, {0, 0, 0}, 2, {0, 0, 0, 0}};
     cdl_vec3 dir = cdl_photometry_direction(CDL_PHOTOMETRIC_TYPE_C, 90.0, 60.0);
     CHECK_REL(cdl_luminous_opening_projected_area(&box, dir), 0.36 * 0.5 + 0.12 * sqrt(0.75), 1e-12);
-    cdl_luminous_opening sphere = {CDL_LUMINOUS_SHAPE_SPHERE, 0.2, 0.2, 0.2, {0, 0, 0}, 2};
+    cdl_luminous_opening sphere = {CDL_LUMINOUS_SHAPE_SPHERE, 0.2, 0.2, 0.2, {0, 0, 0}, 2, {0, 0, 0, 0}};
     CHECK_REL(cdl_luminous_opening_projected_area(&sphere, dir), CDL_PI * 0.01, 1e-12);
     cdl_photometry_release(ph);
 }

@@ -168,6 +168,33 @@ static double lambert_polygon(const cdl_vec3 *v, int count, double L, cdl_vec3 p
     return 0.5 * L * fabs(sum);
 }
 
+/* E at c + at (normal n, facing the box so that every face it sees is in
+ * front of it) from a box of half sides h about c, every luminous part of
+ * luminance LUM: Lambert's factor of each face p lies beyond, a side face
+ * (C0 +x, C90 +y, C180 -x, C270 -y) luminous from the bottom up to its
+ * tops[] (local z; h[2] for all of it). */
+static double box_faces_E(cdl_vec3 c, const double h[3], const double tops[4], cdl_vec3 at, cdl_vec3 n)
+{
+    cdl_vec3 p = cdl_vec3_add(c, at);
+    double q[3] = {at.x, at.y, at.z}, E = 0.0;
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = -1; side <= 1; side += 2) {
+            if (q[axis] * side <= h[axis]) continue; /* p behind this face's plane */
+            int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+            double top = axis == 2 ? h[2] : tops[axis == 0 ? (side > 0 ? 0 : 2) : (side > 0 ? 1 : 3)];
+            cdl_vec3 v[4];
+            for (int m = 0; m < 4; ++m) {
+                double w[3];
+                w[axis] = side * h[axis];
+                w[a1] = (m == 1 || m == 2) ? (a1 == 2 ? top : h[a1]) : -h[a1];
+                w[a2] = m >= 2 ? (a2 == 2 ? top : h[a2]) : -h[a2];
+                v[m] = cdl_vec3_add(c, cdl_vec3_make(w[0], w[1], w[2]));
+            }
+            E += lambert_polygon(v, 4, LUM, p, n);
+        }
+    return E;
+}
+
 /* ---- tests ----------------------------------------------------------------- */
 
 /* A uniform sphere seen by a facing element is a point for any d > r:
@@ -234,22 +261,8 @@ static void test_box(void)
     const cdl_vec3 at[5] = {{0.0, 0.0, -0.3}, {0.5, 0.1, -0.2}, {-0.4, 0.35, 0.1}, {0.2, -0.25, 0.4}, {1.5, 0.8, -1.2}};
     for (int k = 0; k < 5; ++k) {
         cdl_vec3 p = cdl_vec3_add(c, at[k]), n = cdl_vec3_normalize(cdl_vec3_neg(at[k]));
-        double E = 0.0;
-        for (int axis = 0; axis < 3; ++axis)
-            for (int side = -1; side <= 1; side += 2) {
-                double q[3] = {at[k].x, at[k].y, at[k].z};
-                if (q[axis] * side <= h[axis]) continue; /* p behind this face's plane */
-                int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-                cdl_vec3 v[4];
-                for (int m = 0; m < 4; ++m) {
-                    double w[3];
-                    w[axis] = side * h[axis];
-                    w[a1] = (m == 1 || m == 2) ? h[a1] : -h[a1];
-                    w[a2] = m >= 2 ? h[a2] : -h[a2];
-                    v[m] = cdl_vec3_add(c, cdl_vec3_make(w[0], w[1], w[2]));
-                }
-                E += lambert_polygon(v, 4, LUM, p, n);
-            }
+        const double tops[4] = {h[2], h[2], h[2], h[2]};
+        double E = box_faces_E(c, h, tops, at[k], n);
         /* the table at 1-degree steps in C and gamma: bilinear interpolation of
          * |cos|, |sin| terms is within (1 deg)^2 / 8 = 4e-5 of them, plus the
          * kinks at the axes, which lie on nodes: 1e-4 */
@@ -838,6 +851,96 @@ static void test_refused(void)
     }
 }
 
+/* ---- a box whose sides are luminous to different heights (EULUMDAT) ------- */
+
+/* Sides facing C0, C90, C180, C270 luminous to these heights from the
+ * bottom of the box, which is as tall as the tallest; the luminous area
+ * (lines 16-17) 0.2 m long (the IES width, along y) by 0.6 m wide (the
+ * IES length, along x: FORMAT_NOTES 3.3's swap, as the reader takes it). */
+static const double side_h[4] = {0.10, 0.06, 0.02, 0.08};
+#define SIDES_W 0.2 /* along y */
+#define SIDES_L 0.6 /* along x */
+
+/* Its projected luminous area along the unit w (luminaire frame), by the
+ * test's own reckoning: the bottom or top W L |w.z|, and the one side
+ * across each horizontal axis that faces w, at its own height. */
+static double sides_projected_area(cdl_vec3 w)
+{
+    double hx = w.x > 0.0 ? side_h[0] : side_h[2], hy = w.y > 0.0 ? side_h[1] : side_h[3];
+    return SIDES_W * SIDES_L * fabs(w.z) + SIDES_W * hx * fabs(w.x) + SIDES_L * hy * fabs(w.y);
+}
+
+/* An EULUMDAT file of that box with I = LUM x its projected area (one
+ * luminance over every luminous part), no symmetry, C and gamma every
+ * degree, 1000 lm so that cd/klm are cd. */
+static cdl_photometry *sides_file(void)
+{
+    size_t cap = 1 << 21, n = 0;
+    char *t = malloc(cap);
+    CHECK(t != NULL);
+    n += (size_t)snprintf(t + n, cap - n, "Candela tests\n1\n0\n360\n1\n181\n1\nreport\nsides\n1\nsides.ldt\n"
+                                          "2026-11-24 / tests\n600\n200\n100\n%g\n%g\n",
+                          SIDES_W * 1000.0, SIDES_L * 1000.0);
+    for (int k = 0; k < 4; ++k) n += (size_t)snprintf(t + n, cap - n, "%g\n", side_h[k] * 1000.0);
+    n += (size_t)snprintf(t + n, cap - n, "50\n100\n1\n0\n1\n1\nLED\n1000\n3000\n80\n10\n");
+    for (int k = 0; k < 10; ++k) n += (size_t)snprintf(t + n, cap - n, "0.5\n");
+    for (int c = 0; c < 360; ++c) n += (size_t)snprintf(t + n, cap - n, "%d\n", c);
+    for (int g = 0; g <= 180; ++g) n += (size_t)snprintf(t + n, cap - n, "%d\n", g);
+    for (int c = 0; c < 360; ++c)
+        for (int g = 0; g <= 180; ++g) {
+            double C = c * CDL_DEG_TO_RAD, G = g * CDL_DEG_TO_RAD;
+            /* type C: C0 along x, gamma from the nadir */
+            cdl_vec3 w = cdl_vec3_make(sin(G) * cos(C), sin(G) * sin(C), -cos(G));
+            n += (size_t)snprintf(t + n, cap - n, "%.17g\n", LUM * sides_projected_area(w));
+        }
+    cdl_photometry *ph = NULL;
+    cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_error err;
+    CHECK_OK(cdl_photometry_read_memory(t, n, "sides.ldt", &opt, &ph, &err), &err);
+    free(t);
+    return ph;
+}
+
+/* The file read: a box, each side's height kept (the mean as LM-63's one
+ * height). Lit from every luminous part at one luminance, so at receivers
+ * around it, each facing the box's centre, E is LUM times Lambert's factor
+ * of every luminous face part in front of it (the bottom and top whole,
+ * each side from the bottom to its height), sampled within 4 standard
+ * errors plus the table's interpolation (1e-4 as for the uniform box).
+ * The sides' dark parts show: were every side lit to the box's top, these
+ * probes would get up to five times their light. The flux through an
+ * enclosing sphere is the file's, which is LUM pi times the luminous area
+ * (Cauchy: the mean projected area of a convex body is a quarter of its
+ * surface), here 2 W L + W (h0 + h2) + L (h1 + h3). */
+static void test_box_side_heights(void)
+{
+    cdl_photometry *ph = sides_file();
+    if (!ph) return;
+    const cdl_luminous_opening *o = &cdl_photometry_get_metadata(ph)->opening;
+    CHECK(o->shape == CDL_LUMINOUS_SHAPE_BOX);
+    CHECK_REL(o->height_m, 0.065, 1e-12);
+    for (int k = 0; k < 4; ++k) CHECK_REL(cdl_luminous_opening_box_side_height_m(o, k), side_h[k], 1e-12);
+    double area = 2.0 * SIDES_W * SIDES_L + SIDES_W * (side_h[0] + side_h[2]) + SIDES_L * (side_h[1] + side_h[3]);
+    /* the table's flux: 1-degree steps, within 1e-4 of the closed form */
+    CHECK_REL(cdl_photometry_flux(ph).lm, LUM * CDL_PI * area, 1e-4);
+    cdl_vec3 c = cdl_vec3_make(1.0, -2.0, 3.0);
+    cdl_emitter *e = spread(ph, c, 0), *point = spread(ph, c, 1);
+    const double h[3] = {0.5 * SIDES_L, 0.5 * SIDES_W, 0.5 * side_h[0]}; /* the tallest side: 0.1 m */
+    const cdl_vec3 at[6] = {{0.0, 0.0, -0.3}, {0.5, 0.05, -0.01}, {-0.5, 0.02, 0.0},
+                            {0.1, 0.4, 0.02}, {-0.2, -0.3, 0.0}, {1.2, 0.9, 0.6}};
+    for (int k = 0; k < 6; ++k) {
+        cdl_vec3 p = cdl_vec3_add(c, at[k]), n = cdl_vec3_normalize(cdl_vec3_neg(at[k]));
+        double tops[4];
+        for (int m = 0; m < 4; ++m) tops[m] = -h[2] + side_h[m];
+        double E = box_faces_E(c, h, tops, at[k], n);
+        check_estimate(sampled(e, p, n, 24, 16, (uint64_t)(100 + k)), E, 1e-4, "box with sides of their own heights");
+    }
+    check_flux(e, point, c, 1.0, "box with sides of their own heights");
+    cdl_emitter_release(e);
+    cdl_emitter_release(point);
+    cdl_photometry_release(ph);
+}
+
 int main(void)
 {
     test_sphere();
@@ -849,5 +952,6 @@ int main(void)
     test_pdf_density();
     test_sign_codes();
     test_refused();
+    test_box_side_heights();
     return check_finish();
 }

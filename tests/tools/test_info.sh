@@ -28,6 +28,7 @@ check "tilt file summary" '[ $st -eq 0 ] && [[ "$out" == *"4 angles, geometry 3"
 out=$("$CANDELA" info "$fix/ldt_comma_blank_crlf.ldt"); st=$?
 check "EULUMDAT summary" '[ $st -eq 0 ] && [[ "$out" == *"EULUMDAT (Isym 4"* ]] && [[ "$out" == *"warnings        none"* ]]'
 
+
 err=$("$CANDELA" info "$fix/no_such_file.ies" 2>&1 >/dev/null); st=$?
 check "a missing file is bad input" '[ $st -eq 1 ] && [[ "$err" == *"no_such_file.ies: cannot open"* ]]'
 
@@ -45,6 +46,15 @@ rm -f /tmp/candela_info_err.$$
 # Content that fits neither format: the extension decides, so the error names
 # the wrong line (here line 2, Ityp, of an EULUMDAT file) instead of line 1.
 tmp=$(mktemp -d)
+
+# EULUMDAT sides luminous to their own heights (lines 18-21) on a
+# rectangular luminous area (lines 16-17: 90 x 40 mm): each shown, in text
+# and JSON, the height their mean
+sed -e '17s/.*/40/' -e '18s/.*/10/' -e '19s/.*/20/' -e '20s/.*/10/' -e '21s/.*/20/' "$fix/warn_lorl.ldt" > "$tmp/sides.ldt"
+out=$("$CANDELA" info "$tmp/sides.ldt"); st=$?
+check "sides of their own heights shown" '[ $st -eq 0 ] && [[ "$out" == *"rectangle with luminous sides, 0.09 x 0.04 x 0.015 m"* ]] && [[ "$out" == *"sides luminous to 0.01 (C0), 0.02 (C90), 0.01 (C180), 0.02 (C270) m"* ]]'
+out=$("$CANDELA" info --json "$tmp/sides.ldt"); st=$?
+check "sides of their own heights in JSON" '[ $st -eq 0 ] && [[ "$(echo "$out" | tr -d " \t\n")" == *"\"side_heights_m\":[0.01,0.02,0.01,0.02]"* ]]'
 sed '2s/.*/x/' "$fix/ldt_comma_blank_crlf.ldt" > "$tmp/ityp.ldt"
 err=$("$CANDELA" info "$tmp/ityp.ldt" 2>&1 >/dev/null); st=$?
 check ".ldt with a non-number on line 2: names line 2" '[ $st -eq 1 ] && [[ "$err" == *"ityp.ldt:2: expected"*"Ityp"*"found"* ]]'
