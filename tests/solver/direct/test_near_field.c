@@ -285,6 +285,26 @@ static void test_skewed_shadow(void)
     calibration_check(&tally, "penumbra of a skewed opening, quality high");
 }
 
+/* The plate scene of the soft-shadow tests: the opening of the file at
+ * `path` 2.5 m up ("always" spread), a black plate at 2 m over x >= 0,
+ * and two rows of floor probes (x from -x_end to x_end in n steps, y 0
+ * and y_step), at target 0.2 % and `seed`; the JSON into json[size]. */
+static void plate_scene(char *json, size_t size, const char *path, int n, double x_end, double y_step, int seed)
+{
+    int at = snprintf(json, size,
+                      "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [0, -6, 2], \"u\": [6, 0, 0], "
+                      "\"v\": [0, 12, 0], \"reflectance\": 0}], \"luminaires\": [{\"type\": \"goniometric\", \"file\": "
+                      "\"%s\", \"position\": [0, 0, 2.5], \"near_field\": \"always\"}], \"grids\": [{\"name\": \"p\", "
+                      "\"type\": \"points\", \"points\": [",
+                      path);
+    for (int r = 0; r < 2; ++r)
+        for (int k = 0; k < n; ++k)
+            at += snprintf(json + at, size - (size_t)at, "%s{\"p\": [%.17g, %.17g, 0], \"n\": [0, 0, 1]}",
+                           r + k ? ", " : "", -x_end + 2.0 * x_end * k / (n - 1), y_step * r);
+    snprintf(json + at, size - (size_t)at,
+             "]}], \"solver\": {\"method\": \"direct\", \"target_error\": 0.002, \"seed\": %d}}", seed);
+}
+
 /* Soft shadow: the 1.2 x 0.3 m Lambertian rectangle at 2.5 m (long side
  * along x), a black plate at 2 m over x >= 0. From a floor probe at
  * (px, py, 0) the segment to an opening point x_o crosses z = 2 at
@@ -304,18 +324,7 @@ static void test_soft_shadow(void)
     int n = 25;
     /* seed 0: the exact route; seeds 1 to 4: sampled */
     for (int seed = 0; seed <= 4; ++seed) {
-        int at = snprintf(json, sizeof json,
-                          "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [0, -6, 2], \"u\": [6, 0, "
-                          "0], \"v\": [0, 12, 0], \"reflectance\": 0}], \"luminaires\": [{\"type\": \"goniometric\", "
-                          "\"file\": \"%s\", \"position\": [0, 0, 2.5], \"near_field\": \"always\"}], \"grids\": "
-                          "[{\"name\": \"p\", \"type\": \"points\", \"points\": [",
-                          path);
-        for (int r = 0; r < 2; ++r)
-            for (int k = 0; k < n; ++k)
-                at += snprintf(json + at, sizeof json - (size_t)at, "%s{\"p\": [%.17g, %.17g, 0], \"n\": [0, 0, 1]}",
-                               r + k ? ", " : "", -3.0 + 6.0 * k / (n - 1), 0.7 * r);
-        snprintf(json + at, sizeof json - (size_t)at,
-                 "]}], \"solver\": {\"method\": \"direct\", \"target_error\": %g, \"seed\": %d}}", target, seed);
+        plate_scene(json, sizeof json, path, n, 3.0, 0.7, seed);
         cdl_scene *scene;
         cdl_solution sol;
         if (!fixture_solve_route(json, &scene, &sol, 2, seed > 0)) return;
@@ -356,18 +365,7 @@ static void test_disk_shadow(void)
     CHECK(write_lambert_ies(path, "2002", -0.6, -0.6));
     double L = I0 / (CDL_PI * 0.09);
     int n = 17;
-    int at = snprintf(json, sizeof json,
-                      "{\"version\": 1, \"surfaces\": [{\"type\": \"rect\", \"origin\": [0, -6, 2], \"u\": [6, 0, 0], "
-                      "\"v\": [0, 12, 0], \"reflectance\": 0}], \"luminaires\": [{\"type\": \"goniometric\", \"file\": "
-                      "\"%s\", \"position\": [0, 0, 2.5], \"near_field\": \"always\"}], \"grids\": [{\"name\": \"p\", "
-                      "\"type\": \"points\", \"points\": [",
-                      path);
-    for (int r = 0; r < 2; ++r)
-        for (int k = 0; k < n; ++k)
-            at += snprintf(json + at, sizeof json - (size_t)at, "%s{\"p\": [%.17g, %.17g, 0], \"n\": [0, 0, 1]}",
-                           r + k ? ", " : "", -1.6 + 3.2 * k / (n - 1), 0.4 * r);
-    snprintf(json + at, sizeof json - (size_t)at,
-             "]}], \"solver\": {\"method\": \"direct\", \"target_error\": 0.002, \"seed\": 1}}");
+    plate_scene(json, sizeof json, path, n, 1.6, 0.4, 1);
     cdl_scene *scene;
     cdl_solution sol;
     if (!fixture_solve(json, &scene, &sol, 2)) return;
