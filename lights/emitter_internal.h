@@ -64,6 +64,26 @@ int cdl_emitter_eval_positional(const cdl_emitter *e, cdl_vec3 position, cdl_emi
  * (emitter_goniometric.c; shared with emitter_opening.c). */
 void cdl_emitter_rotation_columns(const double rotation_deg[3], cdl_vec3 col[3]);
 
+/* A goniometric luminaire spread over a shape (its flat opening,
+ * emitter_opening.c, or luminous solid, emitter_solid.c): its struct
+ * begins with this. Its flux and far-field intensity are those of `point`,
+ * the same luminaire as a point, which it owns. */
+typedef struct cdl_spread_emitter {
+    cdl_emitter base;
+    cdl_emitter *point;
+} cdl_spread_emitter;
+
+/* A zeroed spread emitter of `size` bytes (a struct beginning with a
+ * cdl_spread_emitter) of kind CDL_EMITTER_GONIOMETRIC_OPENING, with the
+ * point model of p made; NULL with *status and err set on failure. */
+void *cdl_spread_emitter_create(size_t size, const cdl_emitter_ops *ops, const cdl_goniometric_params *p,
+                                cdl_status *status, cdl_error *err);
+/* The point model's flux and intensity: a spread emitter's, for its ops. */
+cdl_luminous_flux cdl_spread_emitter_flux(const cdl_emitter *e);
+cdl_luminous_intensity cdl_spread_emitter_intensity(const cdl_emitter *e, cdl_vec3 unit_dir);
+/* Releases the point model (what a spread emitter's destroy must do). */
+void cdl_spread_emitter_destroy(cdl_emitter *e);
+
 /* A goniometric luminaire spread over the luminous solid of its photometry
  * (a box with luminous sides, vertical or horizontal (elliptic) cylinder,
  * sphere or ellipsoid of non-zero size; the caller checked):

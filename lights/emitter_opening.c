@@ -45,8 +45,7 @@
 #define LAMBERT_TOLERANCE 1e-6
 
 typedef struct opening_emitter {
-    cdl_emitter base;
-    cdl_emitter *point;        /* the same luminaire as a point: I(w) */
+    cdl_spread_emitter spread; /* .point: the same luminaire as a point, I(w) */
     cdl_emitter *face[2];      /* unit-luminance area emitters (an ellipse's bounding rectangle): [0] faces the nadir, [1] up */
     cdl_luminous_shape shape;
     cdl_vec3 center;
@@ -65,16 +64,6 @@ static const opening_emitter *as_opening(const cdl_emitter *e)
     return (const opening_emitter *)e;
 }
 
-static cdl_luminous_flux opening_flux(const cdl_emitter *e)
-{
-    return cdl_emitter_flux(as_opening(e)->point);
-}
-
-static cdl_luminous_intensity opening_intensity(const cdl_emitter *e, cdl_vec3 unit_dir)
-{
-    return cdl_emitter_intensity(as_opening(e)->point, unit_dir);
-}
-
 /* Luminance along the emission direction w (unit, away from the opening):
  * L = I(w) / (A |cos theta_o|). */
 static double opening_luminance_towards(const opening_emitter *o, cdl_vec3 w)
@@ -86,7 +75,7 @@ static double opening_luminance_towards(const opening_emitter *o, cdl_vec3 w)
     if (o->lambertian) return cdl_vec3_dot(w, o->axis[2]) < 0.0 ? o->lambert_luminance : 0.0;
     double c = fabs(cdl_vec3_dot(w, o->axis[2]));
     if (!(c > 0.0)) return 0.0;
-    return cdl_emitter_intensity(o->point, w).cd / (o->area * c);
+    return cdl_emitter_intensity(o->spread.point, w).cd / (o->area * c);
 }
 
 /* ---- adaptive cubature of E over the opening ------------------------------ *
@@ -163,7 +152,7 @@ static double opening_intensity_towards(const opening_emitter *o, cdl_vec3 w)
         double down = -cdl_vec3_dot(w, o->axis[2]);
         return down > 0.0 ? o->lambert_luminance * o->area * down : 0.0;
     }
-    return cdl_emitter_intensity(o->point, w).cd;
+    return cdl_emitter_intensity(o->spread.point, w).cd;
 }
 
 /* The integrand at parameter (u, v) of element `element`: I(w)
@@ -350,7 +339,7 @@ static int heap_converge(cell_heap *h, const cubature *q, double *E)
     const opening_emitter *o = q->o;
     cdl_vec3 d = cdl_vec3_sub(q->p, o->center);
     double d2 = cdl_vec3_dot(d, d);
-    double floor = d2 > 0.0 ? 1e-3 * cdl_emitter_flux(o->point).lm / (4.0 * CDL_PI * d2) : 0.0;
+    double floor = d2 > 0.0 ? 1e-3 * cdl_emitter_flux(o->spread.point).lm / (4.0 * CDL_PI * d2) : 0.0;
     while (!h->full && h->count > 0 && h->error > o->tolerance * fmax(fabs(h->sum), floor)) {
         cell w = heap_pop(h);
         double um = 0.5 * (w.u0 + w.u1), vm = 0.5 * (w.v0 + w.v1), lu, lv;
@@ -692,13 +681,14 @@ static cdl_luminance opening_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_vec3
 static void opening_destroy(cdl_emitter *e)
 {
     opening_emitter *o = (opening_emitter *)e;
-    cdl_emitter_release(o->point);
+    cdl_spread_emitter_destroy(e);
     cdl_emitter_release(o->face[0]);
     cdl_emitter_release(o->face[1]);
 }
 
-static const cdl_emitter_ops opening_ops = {opening_flux,     opening_intensity, NULL, opening_exact, opening_sample,
-                                            opening_radiance, opening_destroy,   NULL, NULL};
+static const cdl_emitter_ops opening_ops = {cdl_spread_emitter_flux, cdl_spread_emitter_intensity, NULL,
+                                            opening_exact,           opening_sample,               opening_radiance,
+                                            opening_destroy,         NULL,                         NULL};
 
 /* Is the table I0 cos(gamma) for gamma <= 90 and dark above, in every
  * plane (type C)? *I0 receives the table's nadir value. */
@@ -799,15 +789,9 @@ cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *
                              "%g x %g x %g m",
                              cdl_luminous_shape_name(op->shape), op->width_m, op->length_m, op->height_m);
     if (!cdl_luminous_opening_is_flat(op)) return cdl_emitter_create_goniometric_solid(p, out, err);
-    cdl_emitter *point = NULL;
-    cdl_status st = cdl_emitter_create_goniometric(p, &point, err);
-    if (st != CDL_OK) return st;
-    opening_emitter *o = cdl_emitter_alloc(sizeof *o, CDL_EMITTER_GONIOMETRIC_OPENING, &opening_ops, err);
-    if (!o) {
-        cdl_emitter_release(point);
-        return CDL_ERR_INTERNAL;
-    }
-    o->point = point;
+    cdl_status st;
+    opening_emitter *o = cdl_spread_emitter_create(sizeof *o, &opening_ops, p, &st, err);
+    if (!o) return st;
     o->tolerance = CUBATURE_TOLERANCE;
     o->shape = op->shape;
     o->center = p->position;
@@ -832,15 +816,15 @@ cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *
                                                          : CDL_PI * o->half_length * o->half_width;
     for (int up = 0; up < 2 && st == CDL_OK; ++up) st = make_face(o, up, &o->face[up], err);
     if (st != CDL_OK) {
-        cdl_emitter_release(&o->base);
+        cdl_emitter_release(&o->spread.base);
         return st;
     }
     double I0;
     if (!vertical && o->shape != CDL_LUMINOUS_SHAPE_ELLIPSE && table_is_lambertian(p->photometry, &I0)) {
         o->lambertian = 1;
         /* the table's I0 with every factor of the placed luminaire */
-        o->lambert_luminance = cdl_emitter_intensity(point, cdl_vec3_neg(o->axis[2])).cd / o->area;
+        o->lambert_luminance = cdl_emitter_intensity(o->spread.point, cdl_vec3_neg(o->axis[2])).cd / o->area;
     }
-    *out = &o->base;
+    *out = &o->spread.base;
     return CDL_OK;
 }

@@ -69,8 +69,7 @@
 #include "radiometry/frame.h"
 
 typedef struct solid_emitter {
-    cdl_emitter base;
-    cdl_emitter *point;          /* the same luminaire as a point: I(w) */
+    cdl_spread_emitter spread;   /* .point: the same luminaire as a point, I(w) */
     cdl_luminous_opening opening;
     cdl_vec3 center;
     cdl_vec3 axis[3];            /* the luminaire's x (length), y (width), z (up) in world */
@@ -84,16 +83,6 @@ typedef struct solid_emitter {
 static const solid_emitter *as_solid(const cdl_emitter *e)
 {
     return (const solid_emitter *)e;
-}
-
-static cdl_luminous_flux solid_flux(const cdl_emitter *e)
-{
-    return cdl_emitter_flux(as_solid(e)->point);
-}
-
-static cdl_luminous_intensity solid_intensity(const cdl_emitter *e, cdl_vec3 unit_dir)
-{
-    return cdl_emitter_intensity(as_solid(e)->point, unit_dir);
 }
 
 static cdl_vec3 to_local(const solid_emitter *s, cdl_vec3 v)
@@ -192,7 +181,7 @@ static double solid_luminance_towards(const solid_emitter *s, cdl_vec3 w)
 {
     double A = cdl_luminous_opening_projected_area(&s->opening, to_local(s, w));
     if (!(A > 0.0)) return 0.0;
-    return cdl_emitter_intensity(s->point, w).cd / A;
+    return cdl_emitter_intensity(s->spread.point, w).cd / A;
 }
 
 /* 1 - cos(theta_max) of the bounding sphere's cone from p (2 inside it:
@@ -409,16 +398,14 @@ static double solid_bounding_radius(const solid_emitter *s)
     return fmax(h[0], fmax(h[1], h[2]));
 }
 
-static void solid_destroy(cdl_emitter *e)
-{
-    cdl_emitter_release(((solid_emitter *)e)->point);
-}
-
-/* boxes, cylinders and ellipsoids have no exact E (they do not fill the bounding cone); spheres the cubature */
-static const cdl_emitter_ops solid_ops = {solid_flux,     solid_intensity, NULL, NULL, solid_sample,
-                                          solid_radiance, solid_destroy,   NULL, NULL};
-static const cdl_emitter_ops sphere_ops = {solid_flux,     solid_intensity, NULL, solid_exact, solid_sample,
-                                           solid_radiance, solid_destroy,   NULL, NULL};
+/* boxes, cylinders and ellipsoids have no exact E (they do not fill the
+ * bounding cone); spheres the cubature */
+static const cdl_emitter_ops solid_ops = {cdl_spread_emitter_flux,    cdl_spread_emitter_intensity, NULL, NULL,
+                                          solid_sample,               solid_radiance,
+                                          cdl_spread_emitter_destroy, NULL,                         NULL};
+static const cdl_emitter_ops sphere_ops = {cdl_spread_emitter_flux,    cdl_spread_emitter_intensity, NULL, solid_exact,
+                                           solid_sample,               solid_radiance,
+                                           cdl_spread_emitter_destroy, NULL,                         NULL};
 
 int cdl_emitter_solid_bounding_sphere(const cdl_emitter *emitter, cdl_shape *sphere)
 {
@@ -435,16 +422,10 @@ cdl_status cdl_emitter_create_goniometric_solid(const cdl_goniometric_params *p,
 {
     *out = NULL;
     const cdl_luminous_opening *op = &cdl_photometry_get_metadata(p->photometry)->opening;
-    cdl_emitter *point = NULL;
-    cdl_status st = cdl_emitter_create_goniometric(p, &point, err);
-    if (st != CDL_OK) return st;
-    solid_emitter *s = cdl_emitter_alloc(sizeof *s, CDL_EMITTER_GONIOMETRIC_OPENING,
-                                         op->shape == CDL_LUMINOUS_SHAPE_SPHERE ? &sphere_ops : &solid_ops, err);
-    if (!s) {
-        cdl_emitter_release(point);
-        return CDL_ERR_INTERNAL;
-    }
-    s->point = point;
+    cdl_status st;
+    solid_emitter *s = cdl_spread_emitter_create(
+        sizeof *s, op->shape == CDL_LUMINOUS_SHAPE_SPHERE ? &sphere_ops : &solid_ops, p, &st, err);
+    if (!s) return st;
     s->opening = *op;
     s->center = p->position;
     cdl_emitter_rotation_columns(p->rotation_deg, s->axis);
@@ -470,6 +451,6 @@ cdl_status cdl_emitter_create_goniometric_solid(const cdl_goniometric_params *p,
         }
     }
     s->bound = solid_bounding_radius(s);
-    *out = &s->base;
+    *out = &s->spread.base;
     return CDL_OK;
 }
