@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "polygon_factor.h"
 #include "sphere_factor.h"
 #include "lights/emitter.h"
 #include "lights/photometry.h"
@@ -151,50 +152,6 @@ static void check_estimate(estimate got, double exact, double bias, const char *
               "%s: sampled %.6g +- %.2g, exact %.6g", what, got.mean, got.se, exact);
 }
 
-/* ---- closed forms ------------------------------------------------------------ */
-
-/* Illuminance at p (normal n) from a Lambertian convex polygon of
- * luminance L lying wholly in front of p's plane, by Lambert's contour
- * integral (Siegel and Howell, Thermal Radiation Heat Transfer, the
- * polygon-to-element factor): E = (L / 2) |sum_i beta_i n.u_i|. */
-static double lambert_polygon(const cdl_vec3 *v, int count, double L, cdl_vec3 p, cdl_vec3 n)
-{
-    double sum = 0.0;
-    for (int i = 0; i < count; ++i) {
-        cdl_vec3 a = cdl_vec3_sub(v[i], p), b = cdl_vec3_sub(v[(i + 1) % count], p), x = cdl_vec3_cross(a, b);
-        double lx = cdl_vec3_length(x);
-        if (lx > 0.0) sum += atan2(lx, cdl_vec3_dot(a, b)) * cdl_vec3_dot(n, x) / lx;
-    }
-    return 0.5 * L * fabs(sum);
-}
-
-/* E at c + at (normal n, facing the box so that every face it sees is in
- * front of it) from a box of half sides h about c, every luminous part of
- * luminance LUM: Lambert's factor of each face p lies beyond, a side face
- * (C0 +x, C90 +y, C180 -x, C270 -y) luminous from the bottom up to its
- * tops[] (local z; h[2] for all of it). */
-static double box_faces_E(cdl_vec3 c, const double h[3], const double tops[4], cdl_vec3 at, cdl_vec3 n)
-{
-    cdl_vec3 p = cdl_vec3_add(c, at);
-    double q[3] = {at.x, at.y, at.z}, E = 0.0;
-    for (int axis = 0; axis < 3; ++axis)
-        for (int side = -1; side <= 1; side += 2) {
-            if (q[axis] * side <= h[axis]) continue; /* p behind this face's plane */
-            int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-            double top = axis == 2 ? h[2] : tops[axis == 0 ? (side > 0 ? 0 : 2) : (side > 0 ? 1 : 3)];
-            cdl_vec3 v[4];
-            for (int m = 0; m < 4; ++m) {
-                double w[3];
-                w[axis] = side * h[axis];
-                w[a1] = (m == 1 || m == 2) ? (a1 == 2 ? top : h[a1]) : -h[a1];
-                w[a2] = m >= 2 ? (a2 == 2 ? top : h[a2]) : -h[a2];
-                v[m] = cdl_vec3_add(c, cdl_vec3_make(w[0], w[1], w[2]));
-            }
-            E += lambert_polygon(v, 4, LUM, p, n);
-        }
-    return E;
-}
-
 /* ---- tests ----------------------------------------------------------------- */
 
 /* A uniform sphere seen by a facing element is a point for any d > r:
@@ -262,7 +219,7 @@ static void test_box(void)
     for (int k = 0; k < 5; ++k) {
         cdl_vec3 p = cdl_vec3_add(c, at[k]), n = cdl_vec3_normalize(cdl_vec3_neg(at[k]));
         const double tops[4] = {h[2], h[2], h[2], h[2]};
-        double E = box_faces_E(c, h, tops, at[k], n);
+        double E = lambert_box(c, h, tops, LUM, p, n);
         /* the table at 1-degree steps in C and gamma: bilinear interpolation of
          * |cos|, |sin| terms is within (1 deg)^2 / 8 = 4e-5 of them, plus the
          * kinks at the axes, which lie on nodes: 1e-4 */
@@ -932,7 +889,7 @@ static void test_box_side_heights(void)
         cdl_vec3 p = cdl_vec3_add(c, at[k]), n = cdl_vec3_normalize(cdl_vec3_neg(at[k]));
         double tops[4];
         for (int m = 0; m < 4; ++m) tops[m] = -h[2] + side_h[m];
-        double E = box_faces_E(c, h, tops, at[k], n);
+        double E = lambert_box(c, h, tops, LUM, p, n);
         check_estimate(sampled(e, p, n, 24, 16, (uint64_t)(100 + k)), E, 1e-4, "box with sides of their own heights");
     }
     check_flux(e, point, c, 1.0, "box with sides of their own heights");
