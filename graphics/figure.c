@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "radiometry/atomic_file.h"
+#include "base/atomic_file.h"
 
 typedef struct svg_buffer {
     char *data;

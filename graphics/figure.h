@@ -15,7 +15,7 @@
 #include <cairo.h>
 #include <stddef.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 
 typedef struct cdl_figure {
     double width, height;                 /* points */

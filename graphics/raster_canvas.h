@@ -19,7 +19,7 @@
 #include <stdint.h>
 
 #include "graphics/text.h"
-#include "radiometry/error.h"
+#include "base/error.h"
 
 typedef struct cdl_raster_canvas cdl_raster_canvas;
 

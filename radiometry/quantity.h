@@ -31,7 +31,7 @@
 #ifndef CANDELA_RADIOMETRY_QUANTITY_H
 #define CANDELA_RADIOMETRY_QUANTITY_H
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "radiometry/units.h"
 
 typedef enum cdl_dimension {

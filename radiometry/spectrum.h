@@ -23,7 +23,7 @@
 #include <stddef.h>
 
 #include "radiometry/cie_tables.h"
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "radiometry/units.h"
 
 typedef struct cdl_spectrum {

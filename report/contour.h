@@ -19,7 +19,7 @@
 
 #include <stddef.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "radiometry/vec3.h"
 
 typedef struct cdl_contour_segment {

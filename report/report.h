@@ -14,7 +14,7 @@
 #ifndef CANDELA_REPORT_H
 #define CANDELA_REPORT_H
 
-#include "radiometry/error.h"
+#include "base/error.h"
 
 typedef struct cdl_report_options {
     const char *title;               /* NULL: "Lighting report: SCENE" */

@@ -9,7 +9,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
-#include "lights/photometry_polar.h"
+#include "lights/photometry/photometry_polar.h"
 #include "report/grid_map.h"
 #include "report/summary_table.h"
 

@@ -9,7 +9,7 @@
  *      the requirements;
  *   3. a map per rect and polygon grid (grid_map.h);
  *   4. the luminaire schedule and a polar diagram per photometric file
- *      (lights/photometry_polar.h);
+ *      (lights/photometry/photometry_polar.h);
  *   5. method and accuracy: what the plan modelled and why, bounces, the
  *      error statement, the solve's warnings.
  * report_html.c and report_pdf.c lay the same blocks out, so the HTML and

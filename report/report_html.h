@@ -9,7 +9,7 @@
 #ifndef CANDELA_REPORT_HTML_H
 #define CANDELA_REPORT_HTML_H
 
-#include "radiometry/atomic_file.h"
+#include "base/atomic_file.h"
 #include "report/report_document.h"
 
 /* Write the document into an open atomic file (the caller commits). */

@@ -7,7 +7,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "radiometry/file_bytes.h"
+#include "base/file_bytes.h"
 
 /* summary.json and a requirements file are small; a CSV holds at most
  * CDL_GRID_MAX_POINTS rows of under 400 bytes. */

@@ -27,8 +27,8 @@
 #include <cjson/cJSON.h>
 #include <stddef.h>
 
-#include "lights/photometry.h"
-#include "radiometry/error.h"
+#include "lights/photometry/photometry.h"
+#include "base/error.h"
 #include "solver/grid/grid.h"
 #include "solver/output/grid_result.h"
 #include "solver/scene/scene.h"

@@ -17,7 +17,7 @@
 
 #include <stddef.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/progress.h"
 
 /* Items begin .. end - 1 of a task, on a worker whose own scratch space is

@@ -9,8 +9,8 @@
 #include <unistd.h>
 
 #include "radiometry/constants.h"
-#include "radiometry/content_hash.h"
-#include "radiometry/rng.h"
+#include "base/content_hash.h"
+#include "base/rng.h"
 #include "solver/direct/direct.h"
 #include "solver/direct/direct_grid.h"
 #include "solver/geometry/occluder_index.h"

@@ -24,7 +24,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/progress.h"
 #include "solver/scene/scene.h"
 #include "solver/solution.h"

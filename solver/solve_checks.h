@@ -2,7 +2,7 @@
 #ifndef CANDELA_SOLVER_SOLVE_CHECKS_H
 #define CANDELA_SOLVER_SOLVE_CHECKS_H
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/direct/direct.h"
 #include "solver/scene/scene.h"
 #include "solver/scene/scene_lights.h"

@@ -8,7 +8,7 @@
 
 #include "cli_args.h"
 #include "command.h"
-#include "radiometry/atomic_file.h"
+#include "base/atomic_file.h"
 #include "solver/bench/bench_ladder.h"
 #include "solver/bench/bench_report.h"
 #include "solver/output/solution_write.h"

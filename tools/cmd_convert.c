@@ -5,7 +5,7 @@
 
 #include "cli_args.h"
 #include "command.h"
-#include "lights/photometry.h"
+#include "lights/photometry/photometry.h"
 
 static void print_help(FILE *out)
 {

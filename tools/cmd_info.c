@@ -9,7 +9,7 @@
 
 #include "cli_args.h"
 #include "command.h"
-#include "lights/photometry.h"
+#include "lights/photometry/photometry.h"
 #include "solver/scene/scene.h"
 
 static void print_help(FILE *out)

@@ -5,7 +5,7 @@
  * folders), and the shared library exports exactly the functions they
  * declare (a version script made from them; tests/install checks both).
  *
- *   radiometry/error.h            status codes and the message buffer of every fallible call
+ *   base/error.h            status codes and the message buffer of every fallible call
  *   radiometry/units.h            quantities whose units the compiler checks (cdl_lux, cdl_candelas, ...)
  *   radiometry/constants.h        physical and photometric constants, each with its source
  *   radiometry/conversions.h      named conversions: inverse square, Lambert, efficacy, imperial units
@@ -13,9 +13,9 @@
  *   radiometry/vec3.h             the 3-vector every position and direction is (inline)
  *   radiometry/cie_tables.h       CIE V(lambda) and V'(lambda)
  *   radiometry/spectrum.h         sampled spectra, Planck's law, luminous efficacy of a spectrum
- *   lights/photometry.h           photometric files: read (IES LM-63, EULUMDAT), summarise,
+ *   lights/photometry/photometry.h           photometric files: read (IES LM-63, EULUMDAT), summarise,
  *                                 convert (remap, resample), write
- *   lights/emitter.h              point, spot, goniometric, area, directional and sky emitters
+ *   lights/emitters/emitter.h              point, spot, goniometric, area, directional and sky emitters
  *   solver/geometry/ring3.h       a polygon's ring of points (a field of scene.h)
  *   solver/scene/scene.h          a scene from a file or a JSON string
  *   solver/progress.h             progress reports and cancelling of long calls
@@ -85,7 +85,7 @@
 extern "C" {
 #endif
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "radiometry/units.h"
 #include "radiometry/constants.h"
 #include "radiometry/conversions.h"
@@ -93,8 +93,8 @@ extern "C" {
 #include "radiometry/vec3.h"
 #include "radiometry/cie_tables.h"
 #include "radiometry/spectrum.h"
-#include "lights/photometry.h"
-#include "lights/emitter.h"
+#include "lights/photometry/photometry.h"
+#include "lights/emitters/emitter.h"
 #include "solver/geometry/ring3.h"
 #include "solver/scene/scene.h"
 #include "solver/progress.h"

@@ -6,7 +6,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 
 typedef struct cdl_bench_direct_config {
     size_t points;        /* grid points (rounded to a square grid) */

@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "radiometry/content_hash.h"
-#include "radiometry/rng.h"
+#include "base/content_hash.h"
+#include "base/rng.h"
 #include "solver/grid/grid.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_hash.h"

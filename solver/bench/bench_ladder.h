@@ -29,7 +29,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/scene/scene.h"
 #include "solver/solution.h"
 

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "graphics/raster_canvas.h"
-#include "radiometry/atomic_file.h"
+#include "base/atomic_file.h"
 #include "solver/output/png_write.h"
 #include "solver/solve.h"
 

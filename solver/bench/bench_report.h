@@ -20,7 +20,7 @@
 
 #include <stddef.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/bench/bench_ladder.h"
 
 cdl_status cdl_bench_report_write_csv(const char *path, const cdl_bench_row *rows, size_t count, cdl_error *err);

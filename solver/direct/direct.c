@@ -10,7 +10,7 @@
 
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
-#include "radiometry/rng.h"
+#include "base/rng.h"
 #include "radiometry/sampling.h"
 
 const char *cdl_light_strategy_describe(cdl_light_strategy s, const cdl_scene_light *light)

@@ -17,7 +17,7 @@
  *     (E = E_exact - <f (1 - V)>, a control variate that is exact when
  *     nothing is hidden), with its standard error; an image's hidden part
  *     drawn by luminance x each pixel's projected solid angle on the
- *     receiver's hemisphere (lights/environment_sampler.h).
+ *     receiver's hemisphere (lights/environment/environment_sampler.h).
  * Random numbers are keyed by (seed, grid, point, light, sample): results do
  * not depend on threads or on the order points are computed in.
  */
@@ -27,9 +27,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "lights/emitter.h"
-#include "radiometry/rng.h"
-#include "radiometry/error.h"
+#include "lights/emitters/emitter.h"
+#include "base/rng.h"
+#include "base/error.h"
 #include "radiometry/vec3.h"
 #include "solver/geometry/occluder_index.h"
 #include "solver/geometry/ray_scene.h"

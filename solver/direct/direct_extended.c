@@ -48,9 +48,9 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "lights/environment_sampler.h"
+#include "lights/environment/environment_sampler.h"
 #include "radiometry/estimate.h"
-#include "radiometry/rng.h"
+#include "base/rng.h"
 
 /* Strata per side of a light's first pilot round, and the least of a
  * reported stage: 6 x 6 strata, 72 samples. Further pilot rounds double
@@ -150,7 +150,7 @@ typedef struct term {
 } term;
 
 /* A sample of the light: an image sky by luminance x each pixel's projected
- * solid angle on n's hemisphere (lights/environment_sampler.h; its mean of
+ * solid angle on n's hemisphere (lights/environment/environment_sampler.h; its mean of
  * L cos / pdf with nothing in the way is the exact sum, as the emitter's
  * sampler's is), anything else by the emitter's own sampler. u1 is the
  * coordinate whose strata are staggered row by row (sample_round): it

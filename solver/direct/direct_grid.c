@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "radiometry/bounds.h"
-#include "radiometry/rng.h"
+#include "base/rng.h"
 #include "solver/scene/scene_geometry.h"
 
 #define CHUNK 16

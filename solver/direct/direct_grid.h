@@ -10,7 +10,7 @@
 
 #include <stddef.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/direct/direct.h"
 #include "solver/grid/grid.h"
 #include "solver/pool.h"

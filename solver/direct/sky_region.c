@@ -5,8 +5,8 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "lights/environment_peaks.h"
-#include "lights/projected_solid_angle.h"
+#include "lights/environment/environment_peaks.h"
+#include "lights/emitters/projected_solid_angle.h"
 
 typedef struct region_triangle {
     cdl_vec3 a, ab, ac;   /* corner and edges, world */

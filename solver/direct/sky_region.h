@@ -36,8 +36,8 @@
 #ifndef CANDELA_SOLVER_SKY_REGION_H
 #define CANDELA_SOLVER_SKY_REGION_H
 
-#include "lights/emitter.h"
-#include "radiometry/error.h"
+#include "lights/emitters/emitter.h"
+#include "base/error.h"
 #include "solver/geometry/visible_polygon.h"
 
 typedef struct cdl_sky_region cdl_sky_region;

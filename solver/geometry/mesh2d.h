@@ -17,7 +17,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -23,7 +23,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "radiometry/vec3.h"
 
 typedef struct cdl_occluder_index cdl_occluder_index;

@@ -16,7 +16,7 @@
 
 #include <stddef.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "radiometry/vec3.h"
 #include "solver/geometry/mesh2d.h"
 #include "solver/geometry/ring3.h"

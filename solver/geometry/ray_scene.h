@@ -12,7 +12,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "radiometry/vec3.h"
 
 typedef struct cdl_ray_scene cdl_ray_scene;

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lights/projected_solid_angle.h"
+#include "lights/emitters/projected_solid_angle.h"
 #include "radiometry/frame.h"
 
 /* Vertices of a triangle clipped by the 6 half-spaces of a projection

@@ -22,7 +22,7 @@
  * below 1e-13 of the face's).
  *
  * The visible part's projected solid angle is Lambert's closed form of each
- * piece (lights/projected_solid_angle.h), so a Lambertian face of luminance
+ * piece (lights/emitters/projected_solid_angle.h), so a Lambertian face of luminance
  * L gives E = L x the sum (the configuration factor of the visible polygon
  * times pi L: the method of exact daylight references and CIE 171:2006).
  *

@@ -38,7 +38,7 @@
 
 #include <stddef.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/grid/grid.h"
 #include "solver/icache/icache_record.h"
 #include "solver/pool.h"

@@ -10,9 +10,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "radiometry/atomic_file.h"
-#include "radiometry/content_hash.h"
-#include "radiometry/file_bytes.h"
+#include "base/atomic_file.h"
+#include "base/content_hash.h"
+#include "base/file_bytes.h"
 
 static const unsigned char magic[8] = {'C', 'D', 'L', 'I', 'C', 'A', 'C', 'H'};
 

@@ -56,7 +56,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/grid/grid.h"
 #include "solver/icache/icache.h"
 #include "solver/scene/scene.h"

@@ -28,7 +28,7 @@
 
 #include <stdint.h>
 
-#include "radiometry/rng.h"
+#include "base/rng.h"
 #include "radiometry/vec3.h"
 #include "solver/transport/path.h"
 

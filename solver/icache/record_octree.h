@@ -18,7 +18,7 @@
 #include <stdint.h>
 
 #include "radiometry/bounds.h"
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "radiometry/vec3.h"
 
 typedef struct cdl_record_octree cdl_record_octree;

@@ -13,7 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/output/display_transform.h"
 
 /* The colours of t[0 .. n) into out[3 n] (R, G, B). */

@@ -21,8 +21,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
-#include "radiometry/error.h"
-#include "radiometry/atomic_file.h"
+#include "base/error.h"
+#include "base/atomic_file.h"
 #include "solver/grid/grid.h"
 #include "solver/output/lux_scale.h"
 

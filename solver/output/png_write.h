@@ -11,7 +11,7 @@
 
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 
 cdl_status cdl_png_write_rgb(const char *path, const uint8_t *rgb, int width, int height, const char *description,
                              cdl_error *err);

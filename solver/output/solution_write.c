@@ -11,7 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "radiometry/atomic_file.h"
+#include "base/atomic_file.h"
 #include "solver/output/grid_result.h"
 
 /* Errors of the file system that are the machine's, not the path's. */

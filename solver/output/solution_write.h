@@ -11,7 +11,7 @@
 #ifndef CANDELA_SOLVER_SOLUTION_WRITE_H
 #define CANDELA_SOLVER_SOLUTION_WRITE_H
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/scene/scene.h"
 #include "solver/solution.h"
 

@@ -7,7 +7,7 @@
 
 #include "radiometry/estimate.h"
 #include "radiometry/frame.h"
-#include "radiometry/rng.h"
+#include "base/rng.h"
 #include "radiometry/sampling.h"
 
 /* Strata per side of a point's pilot round, and the least of a reported

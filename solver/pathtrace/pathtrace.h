@@ -19,7 +19,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/direct/direct.h"
 #include "solver/grid/grid.h"
 #include "solver/pool.h"

@@ -11,7 +11,7 @@
 
 #include <stddef.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 
 typedef struct cdl_exr_channel {
     const char *name;    /* e.g. "Y", "E_direct" */

@@ -31,7 +31,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 
 typedef enum cdl_mesh_format { CDL_MESH_OBJ, CDL_MESH_OFF, CDL_MESH_PLY } cdl_mesh_format;
 

@@ -25,7 +25,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "radiometry/vec3.h"
 #include "solver/geometry/ring3.h"
 

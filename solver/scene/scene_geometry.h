@@ -15,8 +15,8 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "lights/emitter.h"
-#include "radiometry/error.h"
+#include "lights/emitters/emitter.h"
+#include "base/error.h"
 #include "solver/geometry/ray_scene.h"
 #include "solver/scene/scene.h"
 

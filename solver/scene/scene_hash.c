@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "radiometry/content_hash.h"
+#include "base/content_hash.h"
 
 static void hash_ring(cdl_content_hash *h, const cdl_ring3 *ring)
 {

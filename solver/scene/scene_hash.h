@@ -23,7 +23,7 @@
 
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/scene/scene.h"
 #include "solver/scene/scene_lights.h"
 

@@ -15,8 +15,8 @@
 
 #include <stddef.h>
 
-#include "lights/emitter.h"
-#include "lights/photometry.h"
+#include "lights/emitters/emitter.h"
+#include "lights/photometry/photometry.h"
 #include "radiometry/bounds.h"
 #include "solver/geometry/occluder_index.h"
 #include "solver/scene/scene.h"

@@ -40,7 +40,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "radiometry/file_bytes.h"
+#include "base/file_bytes.h"
 #include "solver/scene/scene_file.h"
 #include "solver/scene/scene_parse.h"
 

@@ -7,7 +7,7 @@
 #ifndef CANDELA_SOLVER_SCENE_OCCLUDERS_H
 #define CANDELA_SOLVER_SCENE_OCCLUDERS_H
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/geometry/occluder_index.h"
 #include "solver/scene/scene_geometry.h"
 

@@ -13,7 +13,7 @@
 #include <cjson/cJSON.h>
 #include <stddef.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "radiometry/quantity.h"
 #include "radiometry/vec3.h"
 #include "solver/scene/scene.h"

@@ -25,7 +25,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "radiometry/rng.h"
+#include "base/rng.h"
 #include "radiometry/vec3.h"
 #include "solver/direct/direct.h"
 #include "solver/scene/scene_geometry.h"

@@ -41,7 +41,7 @@
 #include "radiometry/bounds.h"
 #include "radiometry/constants.h"
 #include "radiometry/estimate.h"
-#include "radiometry/rng.h"
+#include "base/rng.h"
 
 #define PILOT_SIDE 8
 

@@ -6,7 +6,7 @@
 
 #include <stdint.h>
 
-#include "radiometry/error.h"
+#include "base/error.h"
 #include "solver/grid/grid.h"
 #include "solver/pool.h"
 #include "solver/transport/path.h"

@@ -16,7 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "lights/photometry.h"
+#include "lights/photometry/photometry.h"
 
 static void require(int ok, const char *what, const char *detail)
 {

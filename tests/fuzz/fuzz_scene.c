@@ -39,7 +39,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "lights/emitter.h"
+#include "lights/emitters/emitter.h"
 #include "solver/scene/exr_image.h"
 #include "solver/grid/grid.h"
 #include "solver/output/grid_result.h"

@@ -40,9 +40,9 @@ check "ABI $abi is the latest recorded ($latest)" '[ "$latest" = "$abi" ]'
 
 # Controls on a copy of the headers.
 cp -r "$CANDELA_TEST_PREFIX/include" "$tmp/copy"
-sed -i 's|/\* 1: warnings become errors \*/|/* 1: warnings are errors (reworded) */|' "$tmp/copy/candela/lights/photometry.h"
-check "control: the copy's comment was changed" '! cmp -s "$tmp/copy/candela/lights/photometry.h" "$CANDELA_TEST_PREFIX/include/candela/lights/photometry.h"'
+sed -i 's|/\* 1: warnings become errors \*/|/* 1: warnings are errors (reworded) */|' "$tmp/copy/candela/lights/photometry/photometry.h"
+check "control: the copy's comment was changed" '! cmp -s "$tmp/copy/candela/lights/photometry/photometry.h" "$CANDELA_TEST_PREFIX/include/candela/lights/photometry/photometry.h"'
 check "control: a comment changed keeps the fingerprint" '[ "$(fingerprint "$tmp/copy")" = "$current" ]'
-sed -i 's|    int no_external_files;|    int no_external_files;\n    int added_field;|' "$tmp/copy/candela/lights/photometry.h"
+sed -i 's|    int no_external_files;|    int no_external_files;\n    int added_field;|' "$tmp/copy/candela/lights/photometry/photometry.h"
 check "control: a field added to a public struct changes it" '[ "$(fingerprint "$tmp/copy")" != "$current" ]'
 exit $fail

@@ -37,7 +37,7 @@ cp "$tmp/umbrella.c" "$tmp/umbrella.cpp"
 check "<candela/candela.h> compiles as C++17" '[ $st -eq 0 ]'
 
 # Negative control: a header that is not installed cannot be reached.
-printf '#include "lights/photometry_internal.h"\n' > "$tmp/internal.c"
+printf '#include "lights/photometry/photometry_internal.h"\n' > "$tmp/internal.c"
 "$CC" -std=c11 -fsyntax-only -I"$inc/candela" "$tmp/internal.c" 2>/dev/null; st=$?
 check "an internal header does not compile against the install tree" '[ $st -ne 0 ]'
 
@@ -55,7 +55,7 @@ check "every public function has its entry in the API reference" '[ -z "$unliste
 
 # Negative control: the same check on a copy with one comment removed.
 cp -r "$inc" "$tmp/copy"
-sed -i 's|^/\* Total flux: the exact integral.*\*/$|int cdl_undocumented_probe(void);|' "$tmp/copy/candela/lights/photometry.h"
+sed -i 's|^/\* Total flux: the exact integral.*\*/$|int cdl_undocumented_probe(void);|' "$tmp/copy/candela/lights/photometry/photometry.h"
 out=$("$CANDELA_APIDOC" check --root "$tmp/copy/candela" "$tmp/copy/candela/candela.h" 2>&1); st=$?
 check "the documentation check names an undocumented function" '[ $st -ne 0 ] && [[ "$out" == *cdl_undocumented_probe* ]]'
 exit $fail

@@ -15,7 +15,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
-#include "lights/photometry.h"
+#include "lights/photometry/photometry.h"
 
 static double now(void)
 {

@@ -17,10 +17,10 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "lights/emitter.h"
+#include "lights/emitters/emitter.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
-#include "radiometry/rng.h"
+#include "base/rng.h"
 
 typedef double (*direction_fn)(void *ctx, cdl_vec3 w);
 

@@ -3,7 +3,7 @@
 #define CANDELA_TESTS_ENVIRONMENT_FIXTURE_H
 
 #include "check.h"
-#include "lights/emitter.h"
+#include "lights/emitters/emitter.h"
 
 /* A W x H image sky (scale 1.5), over the whole sphere or (upper = 1)
  * the upper hemisphere only; the test releases it. */

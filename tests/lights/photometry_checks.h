@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lights/photometry.h"
+#include "lights/photometry/photometry.h"
 
 /* Read from a string (strict or not); NULL and a message in *err on failure. */
 static inline cdl_photometry *pc_read_text(const char *name, const char *text, size_t len, int strict, cdl_error *err)

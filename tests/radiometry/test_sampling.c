@@ -5,7 +5,7 @@
 #include "check.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
-#include "radiometry/rng.h"
+#include "base/rng.h"
 #include "radiometry/sampling.h"
 
 /* Cosine-weighted estimate of int f(w) cos(theta) dw with an M x N stratified set. */

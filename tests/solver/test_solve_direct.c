@@ -6,8 +6,8 @@
 #include <string.h>
 
 #include "check.h"
-#include "lights/photometry.h"
-#include "lights/projected_solid_angle.h"
+#include "lights/photometry/photometry.h"
+#include "lights/emitters/projected_solid_angle.h"
 #include "radiometry/constants.h"
 #include "solver/scene/exr_image.h"
 #include "solver/solve.h"
@@ -130,7 +130,7 @@ static cdl_vec3 rotate_xyz(const double deg[3], cdl_vec3 v)
  * I(H, V) = 100 + 3 V + 2 (H mod 180) + (H >= 180 ? 50 : 0) cd off the poles
  * and 100 + 3 V at the poles (one value each): no symmetry. IES horizontal
  * angles run clockwise seen from above, so the frame's C-plane C holds the
- * file's H = (360 - C) mod 360 (lights/photometry.h). */
+ * file's H = (360 - C) mod 360 (lights/photometry/photometry.h). */
 static double gonio_table(int H, int V)
 {
     if (V == 0 || V == 180) return 100 + 3 * V;

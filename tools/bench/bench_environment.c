@@ -13,7 +13,7 @@
  *           plain estimator E = mean of L cos / pdf x V, the only route an
  *           image sky had without a closed form;
  *   after:  the sampler for the point's normal (pixels by L x projected
- *           solid angle, lights/environment_sampler.h) and E = E_0 - mean
+ *           solid angle, lights/environment/environment_sampler.h) and E = E_0 - mean
  *           of L cos / pdf x (1 - V), E_0 the exact pixel sum; its set-up
  *           (one pass over the pixels) is counted in the time.
  * Both use independent samples (no strata), the same shadow rays through
@@ -34,9 +34,9 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "lights/environment_sampler.h"
+#include "lights/environment/environment_sampler.h"
 #include "radiometry/constants.h"
-#include "radiometry/rng.h"
+#include "base/rng.h"
 #include "solver/scene/exr_image.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_lights.h"

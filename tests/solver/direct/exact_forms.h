@@ -7,7 +7,7 @@
 
 #include <math.h>
 
-#include "lights/projected_solid_angle.h"
+#include "lights/emitters/projected_solid_angle.h"
 #include "radiometry/constants.h"
 #include "radiometry/vec3.h"
 

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "radiometry/rng.h"
+#include "base/rng.h"
 #include "solver/direct/direct.h"
 #include "solver/grid/grid.h"
 #include "solver/scene/scene.h"

@@ -4,7 +4,7 @@
  * a room's floor-wall corner line. Every expected value is a closed form: a
  * uniform sky of luminance L seen through openings gives
  * E = L x (projected solid angle of what is open), Lambert's polygon formula
- * (lights/projected_solid_angle.h).
+ * (lights/emitters/projected_solid_angle.h).
  *
  * Sampled terms (a sky partly hidden) are solved to target_error 1e-3; the
  * tolerance is 4 stated standard errors (a false failure is a 6e-5 event
@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "lights/projected_solid_angle.h"
+#include "lights/emitters/projected_solid_angle.h"
 #include "radiometry/constants.h"
 #include "radiometry/vec3.h"
 #include "solver/scene/scene.h"

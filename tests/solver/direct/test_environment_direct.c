@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "lights/projected_solid_angle.h"
+#include "lights/emitters/projected_solid_angle.h"
 #include "radiometry/constants.h"
 #include "solver/scene/exr_image.h"
 #include "solver/solve.h"
@@ -175,7 +175,7 @@ static void test_cap_region(const char *quality, calibration *all)
 
 /* A sun seen through the deep well: the sun's four pixels (1000 times the
  * sky) are summed exactly over their part of the visible sky
- * (lights/environment_peaks.h), and the rest of the sky is 2000 cd/m^2
+ * (lights/environment/environment_peaks.h), and the rest of the sky is 2000 cd/m^2
  * over the opening, one luminance: exact, no sample, no ray, at every
  * preset, and the plan says so. The exact answer: the uniform 2000 over
  * the opening plus the sun's excess over its four pixels, all four wholly

@@ -17,7 +17,7 @@
 
 #include "check.h"
 #include "file_fixture.h"
-#include "radiometry/content_hash.h"
+#include "base/content_hash.h"
 #include "solver/icache/icache_file.h"
 #include "solver/solve_fixture.h"
 

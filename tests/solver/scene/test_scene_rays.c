@@ -9,7 +9,7 @@
 
 #include "check.h"
 #include "radiometry/frame.h"
-#include "radiometry/rng.h"
+#include "base/rng.h"
 #include "solver/scene/scene_geometry.h"
 
 static const double scales[3] = {1e-3, 1.0, 1e3};
