@@ -104,6 +104,17 @@ cdl_status cdl_scene_json_read_ring(const cdl_scene_parse *ctx, const cJSON *nod
 cdl_status cdl_scene_json_read_path(const cdl_scene_parse *ctx, const cJSON *node, const char *path, int required,
                                     char **out);
 
+/* "requirements": {"Em_lx": 500, "U0": 0.6} (grids and surfaces), EN
+ * 12464-1's maintained illuminance (> 0) and uniformity Emin / Em (in
+ * (0, 1]); at least one. Absent: both stay as they are. */
+extern const char *const cdl_scene_requirements_keys[];
+cdl_status cdl_scene_json_read_requirements(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                            double *Em_lx, double *U0);
+
+/* A name usable as a file name: 1 to 64 letters, digits, '.', '_', '-',
+ * not starting with '.' or '-' (grids' names, surface maps' names). */
+int cdl_scene_file_name_ok(const char *name);
+
 /* ---- polygons and surfaces (scene_surface.c) ------------------------------ */
 
 /* Reads "vertices" and "holes" of `object` into outer/holes and checks the
