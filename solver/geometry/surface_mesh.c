@@ -50,10 +50,12 @@ static cdl_status evaluate(refinement *r, cdl_error *err)
         for (size_t t = 0; t < ps->test_count; ++t) n += !ps->tests[t].known;
     }
     if (n == 0) return CDL_OK;
+    size_t channels = (size_t)q->settings.aux_channels;
     pending *which = malloc(n * sizeof *which);
     cdl_field_probe *probes = malloc(n * sizeof *probes);
     double *value = malloc(n * sizeof *value), *sigma = malloc(n * sizeof *sigma);
-    cdl_status st = which && probes && value && sigma ? CDL_OK : cdl_error_out_of_memory(err);
+    double *aux = channels ? calloc(n * channels, sizeof *aux) : NULL;
+    cdl_status st = which && probes && value && sigma && (aux || !channels) ? CDL_OK : cdl_error_out_of_memory(err);
     size_t k = 0;
     for (size_t p = 0; st == CDL_OK && p < q->patch_count; ++p) {
         const cdl_patch_state *ps = &r->states[p];
@@ -70,7 +72,7 @@ static cdl_status evaluate(refinement *r, cdl_error *err)
                 probes[k++] = (cdl_field_probe){ps->tests[t].position, ps->tests[t].normal, surface};
             }
     }
-    if (st == CDL_OK) st = q->field(q->user, probes, n, value, sigma, err);
+    if (st == CDL_OK) st = q->field(q->user, probes, n, value, sigma, aux, err);
     for (size_t i = 0; st == CDL_OK && i < n; ++i) {
         if (!isfinite(value[i]) || !(sigma[i] >= 0.0) || !isfinite(sigma[i])) {
             st = cdl_error_set(err, CDL_ERR_INTERNAL,
@@ -79,21 +81,21 @@ static cdl_status evaluate(refinement *r, cdl_error *err)
             break;
         }
         cdl_patch_state *ps = &r->states[which[i].patch];
-        if (which[i].is_test) {
-            ps->tests[which[i].index].value = value[i];
-            ps->tests[which[i].index].sigma = sigma[i];
-            ps->tests[which[i].index].known = 1;
-        } else {
-            ps->slots[which[i].index].value = value[i];
-            ps->slots[which[i].index].sigma = sigma[i];
-            ps->slots[which[i].index].known = 1;
-        }
+        double *v = which[i].is_test ? &ps->tests[which[i].index].value : &ps->slots[which[i].index].value;
+        double *s = which[i].is_test ? &ps->tests[which[i].index].sigma : &ps->slots[which[i].index].sigma;
+        double *a = which[i].is_test ? ps->tests[which[i].index].aux : ps->slots[which[i].index].aux;
+        *v = value[i];
+        *s = sigma[i];
+        for (size_t c = 0; c < channels; ++c) a[c] = aux[channels * i + c];
+        if (which[i].is_test) ps->tests[which[i].index].known = 1;
+        else ps->slots[which[i].index].known = 1;
     }
     r->stats->evaluations += n;
     free(which);
     free(probes);
     free(value);
     free(sigma);
+    free(aux);
     return st;
 }
 
@@ -246,8 +248,10 @@ static double triangle_rms_error(const double d[3])
     return sqrt(fmax(0.0, 16.0 / 90.0 * (squares + products)));
 }
 
-static cdl_status allocate_mesh(cdl_surface_mesh *m, size_t nv, size_t nt, cdl_error *err)
+static cdl_status allocate_mesh(cdl_surface_mesh *m, size_t nv, size_t nt, int channels, cdl_error *err)
 {
+    if (channels && !(m->aux = malloc((nv + 1) * (size_t)channels * sizeof *m->aux))) return cdl_error_out_of_memory(err);
+    if (!(m->patch = malloc((nv + 1) * sizeof *m->patch))) return cdl_error_out_of_memory(err);
     m->xyz = malloc((nv + 1) * 3 * sizeof *m->xyz);
     m->normal = malloc((nv + 1) * 3 * sizeof *m->normal);
     m->value = malloc((nv + 1) * sizeof *m->value);
@@ -263,7 +267,8 @@ static cdl_status allocate_mesh(cdl_surface_mesh *m, size_t nv, size_t nt, cdl_e
 /* Append patch ps's slots and triangles to its surface's mesh. */
 static void append_patch(const refinement *r, const cdl_patch_state *ps, cdl_surface_mesh *m)
 {
-    size_t base = m->vertex_count;
+    size_t base = m->vertex_count, channels = (size_t)r->request->settings.aux_channels;
+    uint32_t patch = (uint32_t)(ps - r->states);
     for (size_t s = 0; s < ps->slot_count; ++s) {
         const cdl_patch_slot *slot = &ps->slots[s];
         size_t v = base + s;
@@ -276,6 +281,8 @@ static void append_patch(const refinement *r, const cdl_patch_state *ps, cdl_sur
         m->normal[3 * v + 2] = slot->normal.z;
         m->value[v] = slot->value;
         m->sigma[v] = slot->sigma;
+        for (size_t c = 0; c < channels; ++c) m->aux[channels * v + c] = slot->aux[c];
+        m->patch[v] = patch;
         m->on_outline[v] = (unsigned char)cdl_patch_state_on_outline(ps, slot->vertex);
     }
     m->vertex_count += ps->slot_count;
@@ -315,7 +322,7 @@ static cdl_status assemble(const refinement *r, cdl_surface_mesh *out, cdl_error
                 nv += r->states[p].slot_count;
                 nt += r->states[p].tri_count;
             }
-        if (allocate_mesh(&out[s], nv, nt, err) != CDL_OK) return CDL_ERR_INTERNAL;
+        if (allocate_mesh(&out[s], nv, nt, q->settings.aux_channels, err) != CDL_OK) return CDL_ERR_INTERNAL;
         for (size_t p = 0; p < q->patch_count; ++p)
             if (r->states[p].spec->surface == s) append_patch(r, &r->states[p], &out[s]);
     }
@@ -334,7 +341,8 @@ static cdl_status check_request(const cdl_surface_mesh_request *q, cdl_error *er
 {
     const cdl_surface_mesh_settings *s = &q->settings;
     if (!(s->rel_tol > 0.0) || !(s->floor_fraction >= 0.0) || !(s->min_edge > 0.0) || !(s->join_tolerance > 0.0) ||
-        !(s->feature_angle_deg > 0.0 && s->feature_angle_deg < 180.0) || s->max_vertices == 0 || !q->field)
+        !(s->feature_angle_deg > 0.0 && s->feature_angle_deg < 180.0) || s->max_vertices == 0 || !q->field ||
+        s->aux_channels < 0 || s->aux_channels > CDL_FIELD_AUX_MAX)
         return cdl_error_set(err, CDL_ERR_INPUT,
                              "surface meshing: settings out of range (rel_tol %g, floor_fraction %g, min_edge %g m, "
                              "join_tolerance %g m, feature angle %g deg, max_vertices %zu)",
@@ -403,6 +411,8 @@ void cdl_surface_mesh_release(cdl_surface_mesh *mesh)
     free(mesh->value);
     free(mesh->sigma);
     free(mesh->interpolation);
+    free(mesh->aux);
+    free(mesh->patch);
     free(mesh->on_outline);
     free(mesh->triangles);
     memset(mesh, 0, sizeof *mesh);

@@ -102,10 +102,16 @@ typedef struct cdl_field_probe {
     size_t surface;
 } cdl_field_probe;
 
+/* Values a field may carry beside the one it is refined by (the direct
+ * and interreflected parts of an illuminance): at most this many. */
+#define CDL_FIELD_AUX_MAX 2
+
 /* The field at count probes: value[i] and its one-sigma error sigma[i] (0
- * when exact). A failure stops the meshing with its status. */
+ * when exact), and with aux_channels > 0 the probe's other values in
+ * aux[aux_channels i ...] (aux is NULL otherwise). A failure stops the
+ * meshing with its status. */
 typedef cdl_status (*cdl_field_fn)(void *user, const cdl_field_probe *probes, size_t count, double *value,
-                                   double *sigma, cdl_error *err);
+                                   double *sigma, double *aux, cdl_error *err);
 
 typedef struct cdl_surface_mesh_settings {
     double rel_tol;                      /* > 0: interpolation tolerance relative to the value */
@@ -114,6 +120,7 @@ typedef struct cdl_surface_mesh_settings {
     double join_tolerance;               /* m, > 0: outline points closer than this are one */
     double feature_angle_deg;            /* sharp edges of imported meshes: dihedral angle above this */
     size_t max_vertices;                 /* over all surfaces */
+    int aux_channels;                    /* 0 .. CDL_FIELD_AUX_MAX values per probe beside the field */
 } cdl_surface_mesh_settings;
 
 typedef struct cdl_surface_mesh_request {
@@ -134,6 +141,8 @@ typedef struct cdl_surface_mesh {
     size_t triangle_count;
     double *value, *sigma;               /* the field at the vertex and its one-sigma error */
     double *interpolation;               /* rms interpolation error over the vertex's triangles (above) */
+    double *aux;                         /* aux_channels per vertex (NULL without) */
+    uint32_t *patch;                     /* the request's patch each vertex belongs to */
     unsigned char *on_outline;           /* 1: the vertex lies on a planar patch's outline */
     double area;                         /* m^2, of the triangles */
 } cdl_surface_mesh;

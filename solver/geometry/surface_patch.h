@@ -28,7 +28,8 @@ typedef struct cdl_patch_slot {
     uint32_t vertex, region;
     cdl_vec3 normal;
     double value, sigma;
-    int known;                /* value and sigma hold the field */
+    double aux[CDL_FIELD_AUX_MAX];
+    int known;                /* value, sigma and aux hold the field */
 } cdl_patch_slot;
 
 typedef struct cdl_patch_test {
@@ -37,6 +38,7 @@ typedef struct cdl_patch_test {
     size_t next;              /* the edge's test for another region, or CDL_KEY_TABLE_NONE */
     cdl_vec3 position, normal;
     double value, sigma;
+    double aux[CDL_FIELD_AUX_MAX];
     int known;
 } cdl_patch_test;
 

@@ -24,8 +24,9 @@ typedef struct light {
 } light;
 
 static cdl_status lit(void *user, const cdl_field_probe *probes, size_t count, double *value, double *sigma,
-                      cdl_error *err)
+                      double *aux, cdl_error *err)
 {
+    (void)aux;
     (void)err;
     const light *l = user;
     for (size_t i = 0; i < count; ++i) {

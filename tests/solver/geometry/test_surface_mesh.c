@@ -55,7 +55,7 @@ typedef struct field_ctx {
 } field_ctx;
 
 static cdl_status field(void *user, const cdl_field_probe *probes, size_t count, double *value, double *sigma,
-                        cdl_error *err)
+                        double *aux, cdl_error *err)
 {
     (void)err;
     field_ctx *f = user;
@@ -70,6 +70,8 @@ static cdl_status field(void *user, const cdl_field_probe *probes, size_t count,
         case FIELD_NAN: value[i] = i == count / 2 ? NAN : 1.0; break;
         }
         sigma[i] = 0.0;
+        /* Two more channels when asked: a half and a double of the value. */
+        if (aux) aux[2 * i] = 0.5 * value[i], aux[2 * i + 1] = 2.0 * value[i];
     }
     return CDL_OK;
 }
@@ -353,6 +355,17 @@ static void test_seeds_budget_determinism(void)
     CHECK_OK(cdl_surface_mesh_build(&q, &a, &sa, &err), &err);
     CHECK_OK(cdl_surface_mesh_build(&q, &b, &sb, &err), &err);
     CHECK(same_mesh(&a, &b));
+    CHECK(a.aux == NULL);
+    cdl_surface_mesh_release(&b);
+    /* Channels beside the field reach every vertex, inherited ones too. */
+    q.settings.aux_channels = 2;
+    CHECK_OK(cdl_surface_mesh_build(&q, &b, &sb, &err), &err);
+    CHECK(same_mesh(&a, &b) && b.aux != NULL);
+    size_t wrong = 0;
+    for (size_t v = 0; b.aux && v < b.vertex_count; ++v)
+        wrong += b.aux[2 * v] != 0.5 * b.value[v] || b.aux[2 * v + 1] != 2.0 * b.value[v] || b.patch[v] != 0;
+    CHECK(wrong == 0);
+    q.settings.aux_channels = 0;
     size_t at_seed = 0;
     for (uint32_t v = 0; v < a.vertex_count; ++v) at_seed += cdl_vec3_distance(fx_vertex(&a, v), seed) < 1e-12;
     CHECK(at_seed == 1);
