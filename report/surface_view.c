@@ -11,6 +11,7 @@
 #include "solver/geometry/key_table.h"
 #include "solver/output/display_transform.h"
 #include "solver/output/false_colour.h"
+#include "solver/output/surface_output.h"
 #include "solver/output/solution_write.h"
 
 /* Layout, points: panels of at most this size each, side by side. */
@@ -57,14 +58,19 @@ static cdl_status make_colours(cdl_surface_view *v, const char *ocio_config, cdl
     for (size_t m = 0; m < v->mesh_count; ++m)
         if (v->meshes[m].E_lx) mapped += v->meshes[m].vertex_count;
     double *E = malloc((mapped + 1) * sizeof *E), *t = malloc((mapped + 256) * sizeof *t);
+    double *area = malloc((mapped + 1) * sizeof *area);
     uint8_t *rgb = malloc((mapped + 256) * 3);
     v->rgb = calloc(v->mesh_count + 1, sizeof *v->rgb);
-    cdl_status st = E && t && rgb && v->rgb ? CDL_OK : cdl_error_out_of_memory(err);
+    cdl_status st = E && t && area && rgb && v->rgb ? CDL_OK : cdl_error_out_of_memory(err);
     size_t k = 0;
-    for (size_t m = 0; st == CDL_OK && m < v->mesh_count; ++m)
-        if (v->meshes[m].E_lx)
-            for (size_t i = 0; i < v->meshes[m].vertex_count; ++i) E[k++] = v->meshes[m].E_lx[i];
-    v->scale = cdl_lux_scale_linear_for_values(E, mapped);
+    for (size_t m = 0; st == CDL_OK && m < v->mesh_count; ++m) {
+        const cdl_view_mesh *mesh = &v->meshes[m];
+        if (!mesh->E_lx) continue;
+        cdl_mesh_vertex_areas(mesh->xyz, mesh->vertex_count, mesh->triangles, mesh->triangle_count, area + k);
+        for (size_t i = 0; i < mesh->vertex_count; ++i) E[k++] = mesh->E_lx[i];
+    }
+    /* The colours of scene.glb: the top at 99 % of the area (lux_scale.h). */
+    v->scale = cdl_lux_scale_linear_for_areas(E, area, st == CDL_OK ? mapped : 0);
     for (size_t i = 0; i < mapped; ++i) t[i] = cdl_lux_scale_position(&v->scale, cdl_lux(E[i]));
     for (int i = 0; i < 256; ++i) t[mapped + (size_t)i] = i / 255.0;
     cdl_display_transform *view = NULL;
@@ -88,6 +94,7 @@ static cdl_status make_colours(cdl_surface_view *v, const char *ocio_config, cdl
     if (st == CDL_OK) memcpy(v->legend_rgb, rgb + 3 * mapped, sizeof v->legend_rgb);
     free(E);
     free(t);
+    free(area);
     free(rgb);
     return st;
 }
@@ -360,7 +367,8 @@ static void draw_legend(cairo_t *cr, const cdl_surface_view *v)
         cairo_stroke(cr);
         char label[48], value[40];
         cdl_lux_scale_value_label(lx, value, sizeof value);
-        snprintf(label, sizeof label, "%s%s", k == 0 && s->clipped ? "<=" : "", value);
+        snprintf(label, sizeof label, "%s%s", k == 0 && s->clipped ? "<=" : k == ticks && s->clipped_top ? ">=" : "",
+                 value);
         cdl_text_draw(cr, tx, y + LEGEND_H + 4.0, label, &small);
     }
 }

@@ -9,7 +9,8 @@
  * the first, the ceiling and the other walls in the second), painted from
  * the farthest to the nearest. Mapped surfaces are Gouraud-shaded: each
  * triangle a cairo mesh-pattern patch whose corners carry their vertices'
- * false colours (the maps' linear lux scale and OpenColorIO false-colour
+ * false colours (a linear lux scale topped at 99 % of the area, lux_scale.h,
+ * and the maps' OpenColorIO false-colour
  * view), so the colour varies across it as the linear interpolant does;
  * unmapped surfaces are light grey, shaded by the angle they face the
  * viewer at; outlines of every surface are drawn thin and dark,

@@ -1,8 +1,9 @@
 /* solve.c - a solve: plan the scene, run each grid through the integrators, finish.
  *
  * The three steps are integrate/integrator.h's: cdl_solve_plan
- * (solve_plan.c) builds and checks everything first; each grid then goes
- * through the table below, each integrator adding its part where it
+ * (solve_plan.c) builds and checks everything first; the solve-wide
+ * integrators run once (the surface maps); each grid then goes through the
+ * table below, each integrator adding its part where it
  * applies; cdl_solve_finish_grid and cdl_solve_finish (solve_finish.c)
  * combine the parts and say what the solve found besides its numbers. The
  * plan's JSON is narrated by plan_json.c from the counts the steps leave.
@@ -25,6 +26,12 @@ static const cdl_integrator *const integrators[] = {
     &cdl_integrator_icache,
     &cdl_integrator_pathtrace,
     &cdl_integrator_vertical,
+};
+
+/* The integrators that run once, before the grids: the surface maps first,
+ * so that the grids share the cache records placed on them. */
+static const cdl_solve_integrator *const solve_integrators[] = {
+    &cdl_integrator_surfaces,
 };
 
 /* One grid through the table, then its parts combined. */
@@ -57,6 +64,8 @@ cdl_status cdl_solve_scene(const cdl_scene *scene, const cdl_solve_options *opti
     if (options) state.options = *options;
 
     cdl_status st = cdl_solve_plan(&state, err);
+    for (size_t k = 0; st == CDL_OK && k < sizeof solve_integrators / sizeof *solve_integrators; ++k)
+        if (solve_integrators[k]->applies(&state)) st = solve_integrators[k]->run(&state, err);
     for (size_t g = 0; st == CDL_OK && g < scene->grid_count; ++g) st = solve_grid(&state, g, err);
     if (st == CDL_OK) st = cdl_solve_finish(&state, err);
     cdl_solve_state_release(&state);

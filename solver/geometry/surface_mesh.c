@@ -53,9 +53,11 @@ static cdl_status evaluate(refinement *r, cdl_error *err)
     size_t channels = (size_t)q->settings.aux_channels;
     pending *which = malloc(n * sizeof *which);
     cdl_field_probe *probes = malloc(n * sizeof *probes);
-    double *value = malloc(n * sizeof *value), *sigma = malloc(n * sizeof *sigma);
+    double *value = malloc(n * sizeof *value), *sigma = malloc(n * sizeof *sigma), *noise = malloc(n * sizeof *noise);
     double *aux = channels ? calloc(n * channels, sizeof *aux) : NULL;
-    cdl_status st = which && probes && value && sigma && (aux || !channels) ? CDL_OK : cdl_error_out_of_memory(err);
+    cdl_status st =
+        which && probes && value && sigma && noise && (aux || !channels) ? CDL_OK : cdl_error_out_of_memory(err);
+    for (size_t i = 0; noise && i < n; ++i) noise[i] = -1.0;
     size_t k = 0;
     for (size_t p = 0; st == CDL_OK && p < q->patch_count; ++p) {
         const cdl_patch_state *ps = &r->states[p];
@@ -64,15 +66,16 @@ static cdl_status evaluate(refinement *r, cdl_error *err)
             if (!ps->slots[s].known) {
                 which[k] = (pending){p, s, 0};
                 probes[k++] = (cdl_field_probe){cdl_patch_state_position(ps, ps->slots[s].vertex), ps->slots[s].normal,
-                                                surface};
+                                                surface, 1, r->floor[surface] / q->settings.rel_tol};
             }
         for (size_t t = 0; t < ps->test_count; ++t)
             if (!ps->tests[t].known) {
                 which[k] = (pending){p, t, 1};
-                probes[k++] = (cdl_field_probe){ps->tests[t].position, ps->tests[t].normal, surface};
+                probes[k++] = (cdl_field_probe){ps->tests[t].position, ps->tests[t].normal, surface, 0,
+                                                r->floor[surface] / q->settings.rel_tol};
             }
     }
-    if (st == CDL_OK) st = q->field(q->user, probes, n, value, sigma, aux, err);
+    if (st == CDL_OK) st = q->field(q->user, probes, n, value, sigma, noise, aux, err);
     for (size_t i = 0; st == CDL_OK && i < n; ++i) {
         if (!isfinite(value[i]) || !(sigma[i] >= 0.0) || !isfinite(sigma[i])) {
             st = cdl_error_set(err, CDL_ERR_INTERNAL,
@@ -83,9 +86,11 @@ static cdl_status evaluate(refinement *r, cdl_error *err)
         cdl_patch_state *ps = &r->states[which[i].patch];
         double *v = which[i].is_test ? &ps->tests[which[i].index].value : &ps->slots[which[i].index].value;
         double *s = which[i].is_test ? &ps->tests[which[i].index].sigma : &ps->slots[which[i].index].sigma;
+        double *z = which[i].is_test ? &ps->tests[which[i].index].noise : &ps->slots[which[i].index].noise;
         double *a = which[i].is_test ? ps->tests[which[i].index].aux : ps->slots[which[i].index].aux;
         *v = value[i];
         *s = sigma[i];
+        *z = noise[i] < 0.0 || !isfinite(noise[i]) ? sigma[i] : fmin(noise[i], sigma[i]);
         for (size_t c = 0; c < channels; ++c) a[c] = aux[channels * i + c];
         if (which[i].is_test) ps->tests[which[i].index].known = 1;
         else ps->slots[which[i].index].known = 1;
@@ -95,6 +100,7 @@ static cdl_status evaluate(refinement *r, cdl_error *err)
     free(probes);
     free(value);
     free(sigma);
+    free(noise);
     free(aux);
     return st;
 }
@@ -143,7 +149,7 @@ static int edge_deviation(const refinement *r, const cdl_patch_state *ps, uint32
     const cdl_patch_test *t = &ps->tests[cdl_patch_state_test(ps, a, b, region)];
     double interpolated = 0.5 * (sa->value + sb->value);
     *deviation = t->value - interpolated;
-    double noise = sqrt(t->sigma * t->sigma + 0.25 * (sa->sigma * sa->sigma + sb->sigma * sb->sigma));
+    double noise = sqrt(t->noise * t->noise + 0.25 * (sa->noise * sa->noise + sb->noise * sb->noise));
     double tolerance = fmax(r->request->settings.rel_tol * fabs(interpolated), r->floor[ps->spec->surface]);
     double d = fabs(*deviation);
     *score = tolerance > 0.0 ? d / tolerance : (d > 0.0 ? INFINITY : 0.0);

@@ -16,7 +16,7 @@
  *      d = E(mid) - (E(a) + E(b)) / 2; an edge whose |d| is above the
  *      tolerance max(rel_tol |E_ab|, rel_tol floor_fraction Em) (Em the
  *      surface's mean, E_ab the interpolated value) and above twice the
- *      noise of d (the three values' sigmas), and that is longer than
+ *      noise of d (the three values' independent noise), and that is longer than
  *      min_edge, is split at that midpoint, whose value is then known;
  *   3. planar patches restore Delaunay refinement's angle bound (new
  *      vertices), spheres and meshes split by longest-edge bisection
@@ -100,6 +100,9 @@ typedef struct cdl_field_probe {
     cdl_vec3 position;
     cdl_vec3 normal;                     /* unit */
     size_t surface;
+    int is_vertex;                       /* 1: a vertex; 0: an edge's midpoint, tested */
+    double floor;                        /* the least value the tolerance is relative to on its surface
+                                          * (floor_fraction Em); 0 before the first round's values */
 } cdl_field_probe;
 
 /* Values a field may carry beside the one it is refined by (the direct
@@ -107,11 +110,15 @@ typedef struct cdl_field_probe {
 #define CDL_FIELD_AUX_MAX 2
 
 /* The field at count probes: value[i] and its one-sigma error sigma[i] (0
- * when exact), and with aux_channels > 0 the probe's other values in
- * aux[aux_channels i ...] (aux is NULL otherwise). A failure stops the
- * meshing with its status. */
+ * when exact); noise[i] <= sigma[i], the part of that error independent
+ * from probe to probe (sampling noise; not an error neighbouring probes
+ * share, such as interpolation from the same cache records), which is all
+ * that can make an edge look bent when it is not; and with aux_channels > 0
+ * the probe's other values in aux[aux_channels i ...] (aux is NULL
+ * otherwise). noise arrives filled with -1: a field that leaves it so has
+ * it taken as sigma. A failure stops the meshing with its status. */
 typedef cdl_status (*cdl_field_fn)(void *user, const cdl_field_probe *probes, size_t count, double *value,
-                                   double *sigma, double *aux, cdl_error *err);
+                                   double *sigma, double *noise, double *aux, cdl_error *err);
 
 typedef struct cdl_surface_mesh_settings {
     double rel_tol;                      /* > 0: interpolation tolerance relative to the value */

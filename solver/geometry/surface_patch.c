@@ -306,7 +306,7 @@ static cdl_status add_slot(cdl_patch_state *ps, uint32_t vertex, uint32_t region
     ps->slots[ps->slot_count++] = (cdl_patch_slot){vertex, region,
                                                    ps->spec->kind == CDL_PATCH_TRIANGLES ? cdl_vec3_make(0, 0, 0)
                                                                                          : fixed_normal(ps, p),
-                                                   0.0, 0.0, {0.0}, 0};
+                                                   0.0, 0.0, 0.0, {0.0}, 0};
     return cdl_key_table_put(&ps->slot_of, cdl_key_ordered(vertex, region), *slot, err);
 }
 
@@ -321,7 +321,7 @@ static cdl_status add_test(cdl_patch_state *ps, uint32_t a, uint32_t b, uint32_t
     ps->tests[ps->test_count++] = (cdl_patch_test){key, region, cdl_key_table_find(&ps->test_of, key), p,
                                                    ps->spec->kind == CDL_PATCH_TRIANGLES ? cdl_vec3_make(0, 0, 0)
                                                                                          : fixed_normal(ps, p),
-                                                   0.0, 0.0, {0.0}, 0};
+                                                   0.0, 0.0, 0.0, {0.0}, 0};
     return cdl_key_table_put(&ps->test_of, key, *test, err);
 }
 
@@ -411,6 +411,7 @@ static cdl_status inherit(cdl_patch_state *ps, uint32_t vertex, uint32_t a, uint
         if (ps->slots[slot].known) continue;
         ps->slots[slot].value = ps->tests[t].value;
         ps->slots[slot].sigma = ps->tests[t].sigma;
+        ps->slots[slot].noise = ps->tests[t].noise;
         memcpy(ps->slots[slot].aux, ps->tests[t].aux, sizeof ps->slots[slot].aux);
         ps->slots[slot].known = 1;
     }

@@ -27,9 +27,9 @@
 typedef struct cdl_patch_slot {
     uint32_t vertex, region;
     cdl_vec3 normal;
-    double value, sigma;
+    double value, sigma, noise;
     double aux[CDL_FIELD_AUX_MAX];
-    int known;                /* value, sigma and aux hold the field */
+    int known;                /* value, sigma, noise and aux hold the field */
 } cdl_patch_slot;
 
 typedef struct cdl_patch_test {
@@ -37,7 +37,7 @@ typedef struct cdl_patch_test {
     uint32_t region;
     size_t next;              /* the edge's test for another region, or CDL_KEY_TABLE_NONE */
     cdl_vec3 position, normal;
-    double value, sigma;
+    double value, sigma, noise;
     double aux[CDL_FIELD_AUX_MAX];
     int known;
 } cdl_patch_test;

@@ -263,6 +263,7 @@ typedef struct gather_job {
     int own;                  /* 1: records serving only their own point (OWN_RADIUS) */
     const size_t *at;         /* grid point of each new record */
     double floor;             /* with own: least R of any point */
+    const double *floors;     /* with own: NULL, or per point a larger least R */
     cdl_icache_record *out;   /* one per new record */
     cdl_path_tally *tallies;  /* per new record, of its reported gather (summed in record order after) */
 } gather_job;
@@ -292,7 +293,8 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
          * interreflected estimate: its variance is what the target leaves
          * after the direct part's (at least half of it, as pathtrace.c). */
         if (job->own) {
-            double whole = ctx->target * ctx->target * fmax(R, job->floor) * fmax(R, job->floor);
+            double least = job->floors ? fmax(job->floor, job->floors[i]) : job->floor;
+            double whole = ctx->target * ctx->target * fmax(R, least) * fmax(R, least);
             budget = fmax(whole - job->var_direct[i], 0.5 * whole);
         }
         double n_pilot = PILOT_M * PILOT_N;
@@ -388,7 +390,7 @@ static cdl_status add_records(const cdl_icache_context *ctx, const reach_limits 
                               cdl_icache_stats *stats, cdl_error *err)
 {
     size_t first = recs->count;
-    gather_job base = {ctx, grid, grid_index, E_direct, NULL, 0, at, 0.0, NULL, NULL};
+    gather_job base = {ctx, grid, grid_index, E_direct, NULL, 0, at, 0.0, NULL, NULL, NULL};
     cdl_status st = gather(&base, count, recs, threads, progress, stage, stats, err);
     for (size_t c = 0; st == CDL_OK && c < count; ++c) has[at[c]] = 1;
     for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
@@ -403,12 +405,13 @@ static cdl_status add_records(const cdl_icache_context *ctx, const reach_limits 
  * enter them in the tree. */
 static cdl_status add_own_records(const cdl_icache_context *ctx, const reach_limits *l, const cdl_grid *grid,
                                   size_t grid_index, const double *E_direct, const double *var_direct, double floor,
-                                  const size_t *at, size_t count, cdl_icache_records *recs, cdl_record_octree *tree,
+                                  const double *floors, const size_t *at, size_t count, cdl_icache_records *recs,
+                                  cdl_record_octree *tree,
                                   int threads, const cdl_progress_sink *progress, const char *stage,
                                   cdl_icache_stats *stats, cdl_error *err)
 {
     size_t first = recs->count;
-    gather_job base = {ctx, grid, grid_index, E_direct, var_direct, 1, at, floor, NULL, NULL};
+    gather_job base = {ctx, grid, grid_index, E_direct, var_direct, 1, at, floor, floors, NULL, NULL};
     cdl_status st = gather(&base, count, recs, threads, progress, stage, stats, err);
     for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
         recs->items[id].radius = OWN_RADIUS;
@@ -427,6 +430,7 @@ typedef struct point_job {
     const cdl_grid *grid;
     const double *E_direct, *var_direct;
     double floor;             /* least R of any point: 1e-3 of the grid's brightest direct light */
+    const double *floors;     /* NULL, or per point a larger least R (surface maps: their tolerance's floor) */
     int final;                /* 1: write E and var; 0: flag points that need a record */
     int sweep;                /* with final 0: flag only the points no record serves */
     double *E, *var;
@@ -454,7 +458,7 @@ static cdl_status visit_points(void *shared, void *local, size_t begin, size_t e
             job->ask[i] = it.used == 0 ? 1e-300 : 0.0;
             continue;
         }
-        double R = fmax(job->E_direct[i] + it.E, job->floor);
+        double R = fmax(job->E_direct[i] + it.E, job->floors ? fmax(job->floor, job->floors[i]) : job->floor);
         /* A point asks for a record when the interpolation's own variance
          * exceeds (t R)^2 (the records' noise, averaged, comes on top;
          * asking at a quarter of it took 35 % more records for an error
@@ -523,7 +527,8 @@ typedef struct serve_request {
     size_t grid_index;
     const double *E_direct, *var_direct;
     double *E_indirect, *var_indirect, *ao;
-    int place, seed;
+    const double *floors;
+    int place, seed, own;
     int threads;
     const cdl_progress_sink *progress;
     const char *stage;
@@ -552,8 +557,8 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
             st = add_records(q->ctx, l, grid, q->grid_index, q->E_direct, at, count, q->recs, q->tree, has, &lk,
                              q->threads, q->progress, q->stage, q->stats, err);
     }
-    point_job job = {q->ctx, l, q->recs, q->tree, grid, q->E_direct, q->var_direct, 1e-3 * brightest, 0, 0,
-                     q->E_indirect, q->var_indirect, q->ao, ask};
+    point_job job = {q->ctx, l, q->recs, q->tree, grid, q->E_direct, q->var_direct, 1e-3 * brightest, q->floors,
+                     0, 0, q->E_indirect, q->var_indirect, q->ao, ask};
     for (int pass = 1; st == CDL_OK && q->place && pass <= MAX_PASSES; ++pass) {
         st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
         size_t count = 0;
@@ -582,13 +587,14 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
     }
     /* Points still above the target: each gets a record of its own. */
     size_t alone = 0;
-    for (size_t i = 0; st == CDL_OK && q->place && i < grid->count; ++i) {
-        double R = fmax(q->E_direct[i] + q->E_indirect[i], job.floor);
+    for (size_t i = 0; st == CDL_OK && q->place && q->own && i < grid->count; ++i) {
+        double least = q->floors ? fmax(job.floor, q->floors[i]) : job.floor;
+        double R = fmax(q->E_direct[i] + q->E_indirect[i], least);
         if (q->var_direct[i] + q->var_indirect[i] > q->ctx->target * q->ctx->target * R * R) at[alone++] = i;
     }
     if (st == CDL_OK && alone > 0) {
-        st = add_own_records(q->ctx, l, grid, q->grid_index, q->E_direct, q->var_direct, job.floor, at, alone,
-                             q->recs, q->tree, q->threads, q->progress, q->stage, q->stats, err);
+        st = add_own_records(q->ctx, l, grid, q->grid_index, q->E_direct, q->var_direct, job.floor, q->floors, at,
+                             alone, q->recs, q->tree, q->threads, q->progress, q->stage, q->stats, err);
         q->stats->alone += alone;
         if (st == CDL_OK) st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
     }
@@ -616,8 +622,8 @@ cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *
     /* Records read from a cache file keep the radii they were made with. */
     for (size_t id = 0; st == CDL_OK && reuse && id < recs->count; ++id)
         st = cdl_record_octree_insert(tree, (uint32_t)id, recs->items[id].p, tree_reach(&l, &recs->items[id]), err);
-    serve_request q = {ctx,      &l,     recs,   tree,     grid,     grid_index, E_direct, var_direct, E_indirect,
-                       var_indirect, ao, !reuse, !reuse, threads, progress, stage,      stats};
+    serve_request q = {ctx,    &l,     recs, tree,    grid,     grid_index, E_direct, var_direct, E_indirect,
+                       var_indirect, ao, NULL, !reuse, !reuse, 1, threads,  progress, stage,      stats};
     if (st == CDL_OK) st = serve(&q, box, err);
     stats->records += recs->count;
     cdl_record_octree_release(tree);
@@ -683,8 +689,10 @@ cdl_status cdl_icache_solve_shared(const cdl_icache_context *ctx, cdl_icache_sha
                        target->E_indirect,
                        target->var_indirect,
                        target->ao,
-                       1,
+                       target->floors,
+                       !target->interpolate_only,
                        before == 0,
+                       !target->no_own_records,
                        target->threads < 1 ? 1 : target->threads,
                        target->progress,
                        target->stage,

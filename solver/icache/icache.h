@@ -110,6 +110,12 @@ typedef struct cdl_icache_target {
     const double *E_direct, *var_direct;
     double *E_indirect, *var_indirect;
     double *ao;                       /* NULL, or the points' ambient occlusion */
+    const double *floors;             /* NULL, or per point the least E its target is relative to (lux) */
+    int interpolate_only;             /* 1: no record placed, the points interpolated from those there */
+    int no_own_records;               /* 1: points still above the target after placement keep the error
+                                         the interpolation states, rather than get a record of their own
+                                         (surface maps' probes: their count grows with refinement, and a
+                                         record of one's own costs a whole point's paths) */
     int threads;
     const cdl_progress_sink *progress;
     const char *stage;

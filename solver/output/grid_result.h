@@ -92,6 +92,9 @@ void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats)
  * never changes it). */
 cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *path, cdl_error *err);
 
+/* One CSV row of n numbers, each as NAME.csv writes them (above), then "\n". */
+void cdl_csv_write_numbers(FILE *fp, const double *values, size_t n);
+
 /* NAME.exr (rect and polygon grids; a grid without a raster is refused):
  * 32-bit float channels, one pixel per raster pixel, top row first:
  *   E           total illuminance, lux

@@ -52,8 +52,9 @@ static cdl_patch polygon(size_t map, cdl_vec3 *ring, size_t n)
     return p;
 }
 
-/* The patches of surface s (map number `map`), their rings from *next on. */
-static size_t add_surface(const cdl_surface_spec *s, size_t map, cdl_vec3 **next, cdl_patch *out)
+/* The patches of surface s (map number `map`), their rings from *next on,
+ * and each patch's reflectance. */
+static size_t add_surface(const cdl_surface_spec *s, size_t map, cdl_vec3 **next, cdl_patch *out, double *rho)
 {
     cdl_vec3 *r = *next;
     size_t n = 0;
@@ -70,6 +71,7 @@ static size_t add_surface(const cdl_surface_spec *s, size_t map, cdl_vec3 **next
         for (int f = 0; f < CDL_BOX_FACES; ++f) {
             if (s->face_open[f]) continue;
             cdl_box_face_corners(s, f, *next);
+            rho[n] = s->face_reflectance[f];
             out[n++] = polygon(map, *next, 4);
             *next += 4;
         }
@@ -112,6 +114,7 @@ static size_t add_surface(const cdl_surface_spec *s, size_t map, cdl_vec3 **next
         break;
     }
     }
+    if (s->kind != CDL_SURFACE_BOX) rho[0] = s->reflectance;
     return n;
 }
 
@@ -127,7 +130,8 @@ cdl_status cdl_surface_patches_build(const cdl_scene *scene, cdl_surface_patches
     out->points = malloc((points + 1) * sizeof *out->points);
     out->patches = calloc(patches + 1, sizeof *out->patches);
     out->scene_surface = malloc((maps + 1) * sizeof *out->scene_surface);
-    if (!out->points || !out->patches || !out->scene_surface) {
+    out->reflectance = calloc(patches + 1, sizeof *out->reflectance);
+    if (!out->points || !out->patches || !out->scene_surface || !out->reflectance) {
         cdl_surface_patches_release(out);
         return cdl_error_out_of_memory(err);
     }
@@ -135,7 +139,8 @@ cdl_status cdl_surface_patches_build(const cdl_scene *scene, cdl_surface_patches
     for (size_t k = 0; k < scene->surface_count; ++k) {
         if (!scene->surfaces[k].mapped) continue;
         out->scene_surface[out->map_count] = k;
-        out->count += add_surface(&scene->surfaces[k], out->map_count, &next, out->patches + out->count);
+        out->count += add_surface(&scene->surfaces[k], out->map_count, &next, out->patches + out->count,
+                                  out->reflectance + out->count);
         ++out->map_count;
     }
     out->point_count = (size_t)(next - out->points);
@@ -145,6 +150,7 @@ cdl_status cdl_surface_patches_build(const cdl_scene *scene, cdl_surface_patches
 void cdl_surface_patches_release(cdl_surface_patches *p)
 {
     free(p->patches);
+    free(p->reflectance);
     free(p->scene_surface);
     free(p->points);
     memset(p, 0, sizeof *p);

@@ -35,6 +35,7 @@
 typedef struct cdl_surface_patches {
     cdl_patch *patches;          /* their .surface numbers the maps 0 .. map_count */
     size_t count;
+    double *reflectance;         /* per patch: its surface's (a box face: that face's) */
     size_t *scene_surface;       /* map k is scene->surfaces[scene_surface[k]] */
     size_t map_count;
     cdl_vec3 *points;            /* the rings made here (rects, box faces, disks) */

@@ -24,9 +24,10 @@ typedef struct light {
 } light;
 
 static cdl_status lit(void *user, const cdl_field_probe *probes, size_t count, double *value, double *sigma,
-                      double *aux, cdl_error *err)
+                      double *noise, double *aux, cdl_error *err)
 {
     (void)aux;
+    (void)noise;
     (void)err;
     const light *l = user;
     for (size_t i = 0; i < count; ++i) {

@@ -32,9 +32,10 @@ static cdl_vec3 room(const double *w)
 static cdl_vec3 lamp;
 
 static cdl_status point_light(void *user, const cdl_field_probe *probes, size_t count, double *value, double *sigma,
-                              double *aux, cdl_error *err)
+                              double *noise, double *aux, cdl_error *err)
 {
     (void)aux;
+    (void)noise;
     (void)user;
     (void)err;
     for (size_t i = 0; i < count; ++i) {

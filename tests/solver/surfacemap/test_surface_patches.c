@@ -29,9 +29,10 @@ static const char *scene_json =
     "\"solver\": {\"surface_maps\": [\"desk\", \"room\", \"lamp\", \"ramp\", \"shelf\"], \"method\": \"direct\"}}";
 
 static cdl_status constant(void *user, const cdl_field_probe *probes, size_t count, double *value, double *sigma,
-                           double *aux, cdl_error *err)
+                           double *noise, double *aux, cdl_error *err)
 {
     (void)aux;
+    (void)noise;
     (void)user, (void)probes, (void)err;
     for (size_t i = 0; i < count; ++i) value[i] = 100.0, sigma[i] = 0.0;
     return CDL_OK;
