@@ -263,8 +263,8 @@ void cdl_plan_json_surfaces(cdl_plan_json *plan, const cdl_solve_state *state)
     char why[400];
     snprintf(why, sizeof why,
              "meshed from the EN 12464-1 spacing and refined where linear interpolation along an edge is off by more "
-             "than the target (relative to E, or to half the surface's mean where E is below it), down to edges of "
-             "1 cm; direct light as at grid points%s",
+             "than the target (relative to E, or to half the surface's mean where E is below it), down to a "
+             "sixteenth of the coarsest edges (at least 1 cm); direct light as at grid points%s",
              state->surface_method == CDL_METHOD_ICACHE
                  ? "; interreflected light from the solve's one irradiance cache, whose records the grids share"
              : state->surface_method == CDL_METHOD_PATHTRACE ? "; interreflected light by paths from every vertex"

@@ -28,7 +28,7 @@ void cdl_surface_solution_stats(const cdl_surface_solution *m, cdl_surface_stats
     memset(s, 0, sizeof *s);
     s->vertices = m->vertex_count;
     s->triangles = m->triangle_count;
-    double area = 0.0, E = 0.0, L = 0.0, rel = 0.0, rel_area = 0.0;
+    double area = 0.0, E = 0.0, L = 0.0;
     for (size_t t = 0; t < m->triangle_count; ++t) {
         const uint32_t *v = &m->triangles[3 * t];
         double a = triangle_area(m->xyz, v);
@@ -36,16 +36,20 @@ void cdl_surface_solution_stats(const cdl_surface_solution *m, cdl_surface_stats
         /* The mean of a linear function over a triangle is the mean of its corners. */
         E += a * (m->E[v[0]] + m->E[v[1]] + m->E[v[2]]) / 3.0;
         L += a * (m->L[v[0]] + m->L[v[1]] + m->L[v[2]]) / 3.0;
-        for (int k = 0; k < 3; ++k)
-            if (m->E[v[k]] > 0.0) {
-                rel += a / 3.0 * m->E_stderr[v[k]] / m->E[v[k]];
-                rel_area += a / 3.0;
-            }
     }
     s->area_m2 = area;
     s->Em_lx = area > 0.0 ? E / area : 0.0;
     s->L_mean_cd_m2 = area > 0.0 ? L / area : 0.0;
-    s->stderr_mean_rel = rel_area > 0.0 ? rel / rel_area : 0.0;
+    /* Relative to E, or to half of Em where E is below it: the map's own
+     * tolerance (integrate_surfaces.c), so a vertex in a shadow at 1e-9 lx
+     * does not make the mean relative error infinite. */
+    double rel = 0.0, floor = 0.5 * s->Em_lx;
+    for (size_t t = 0; floor > 0.0 && t < m->triangle_count; ++t) {
+        const uint32_t *v = &m->triangles[3 * t];
+        double a = triangle_area(m->xyz, v);
+        for (int k = 0; k < 3; ++k) rel += a / 3.0 * m->E_stderr[v[k]] / fmax(m->E[v[k]], floor);
+    }
+    s->stderr_mean_rel = area > 0.0 && floor > 0.0 ? rel / area : 0.0;
     s->Emin_lx = m->vertex_count ? INFINITY : 0.0;
     s->Emax_lx = 0.0;
     for (size_t v = 0; v < m->vertex_count; ++v) {
