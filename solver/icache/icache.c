@@ -528,7 +528,8 @@ typedef struct serve_request {
     const double *E_direct, *var_direct;
     double *E_indirect, *var_indirect, *ao;
     const double *floors;
-    int place, seed, own;
+    const cdl_grid *gather_at; /* where records for the points are gathered (the same indices), or NULL: at them */
+    int place, seed, passes, own;
     int threads;
     const cdl_progress_sink *progress;
     const char *stage;
@@ -538,6 +539,7 @@ typedef struct serve_request {
 static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
 {
     const cdl_grid *grid = q->grid;
+    const cdl_grid *gather_grid = q->gather_at ? q->gather_at : grid;
     const reach_limits *l = q->limits;
     double brightest = 0.0;
     for (size_t i = 0; i < grid->count; ++i)
@@ -554,18 +556,18 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
         size_t count = 0;
         st = pick(grid, ask, has, box, &at, &count, err);
         if (st == CDL_OK)
-            st = add_records(q->ctx, l, grid, q->grid_index, q->E_direct, at, count, q->recs, q->tree, has, &lk,
+            st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, at, count, q->recs, q->tree, has, &lk,
                              q->threads, q->progress, q->stage, q->stats, err);
     }
     point_job job = {q->ctx, l, q->recs, q->tree, grid, q->E_direct, q->var_direct, 1e-3 * brightest, q->floors,
                      0, 0, q->E_indirect, q->var_indirect, q->ao, ask};
-    for (int pass = 1; st == CDL_OK && q->place && pass <= MAX_PASSES; ++pass) {
+    for (int pass = 1; st == CDL_OK && q->place && q->passes && pass <= MAX_PASSES; ++pass) {
         st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
         size_t count = 0;
         if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
         if (st != CDL_OK || count == 0) break;
         q->stats->passes = (size_t)pass;
-        st = add_records(q->ctx, l, grid, q->grid_index, q->E_direct, at, count, q->recs, q->tree, has, &lk,
+        st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, at, count, q->recs, q->tree, has, &lk,
                          q->threads, q->progress, q->stage, q->stats, err);
     }
     /* No point may go unserved (it would read 0 +- 0): the passes take
@@ -578,7 +580,7 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
         size_t count = 0;
         if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
         if (st == CDL_OK && count > 0)
-            st = add_records(q->ctx, l, grid, q->grid_index, q->E_direct, at, count, q->recs, q->tree, has, &lk,
+            st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, at, count, q->recs, q->tree, has, &lk,
                              q->threads, q->progress, q->stage, q->stats, err);
     }
     if (st == CDL_OK) {
@@ -593,7 +595,7 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
         if (q->var_direct[i] + q->var_indirect[i] > q->ctx->target * q->ctx->target * R * R) at[alone++] = i;
     }
     if (st == CDL_OK && alone > 0) {
-        st = add_own_records(q->ctx, l, grid, q->grid_index, q->E_direct, q->var_direct, job.floor, q->floors, at,
+        st = add_own_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->var_direct, job.floor, q->floors, at,
                              alone, q->recs, q->tree, q->threads, q->progress, q->stage, q->stats, err);
         q->stats->alone += alone;
         if (st == CDL_OK) st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
@@ -622,8 +624,9 @@ cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *
     /* Records read from a cache file keep the radii they were made with. */
     for (size_t id = 0; st == CDL_OK && reuse && id < recs->count; ++id)
         st = cdl_record_octree_insert(tree, (uint32_t)id, recs->items[id].p, tree_reach(&l, &recs->items[id]), err);
-    serve_request q = {ctx,    &l,     recs, tree,    grid,     grid_index, E_direct, var_direct, E_indirect,
-                       var_indirect, ao, NULL, !reuse, !reuse, 1, threads,  progress, stage,      stats};
+    serve_request q = {ctx,  &l,   recs,   tree,   grid, grid_index, E_direct, var_direct, E_indirect, var_indirect,
+                       ao,   NULL, NULL,   !reuse, !reuse, 1,    1,          threads,  progress,   stage,
+                       stats};
     if (st == CDL_OK) st = serve(&q, box, err);
     stats->records += recs->count;
     cdl_record_octree_release(tree);
@@ -690,8 +693,10 @@ cdl_status cdl_icache_solve_shared(const cdl_icache_context *ctx, cdl_icache_sha
                        target->var_indirect,
                        target->ao,
                        target->floors,
-                       !target->interpolate_only,
+                       target->gather_at,
+                       1,
                        before == 0,
+                       !target->only_unserved,
                        !target->no_own_records,
                        target->threads < 1 ? 1 : target->threads,
                        target->progress,

@@ -111,7 +111,12 @@ typedef struct cdl_icache_target {
     double *E_indirect, *var_indirect;
     double *ao;                       /* NULL, or the points' ambient occlusion */
     const double *floors;             /* NULL, or per point the least E its target is relative to (lux) */
-    int interpolate_only;             /* 1: no record placed, the points interpolated from those there */
+    const cdl_grid *gather_at;        /* NULL, or where a record asked for by point i is gathered (point i
+                                         of this grid; normals the same): a point where two surfaces meet
+                                         lies on both, and a gather there loses the rays the other one
+                                         should stop, so its record is gathered a little way in front */
+    int only_unserved;                /* 1: no placement passes: records only at points no record serves
+                                         (which would read 0 +- 0), the rest interpolated from those there */
     int no_own_records;               /* 1: points still above the target after placement keep the error
                                          the interpolation states, rather than get a record of their own
                                          (surface maps' probes: their count grows with refinement, and a

@@ -27,9 +27,17 @@ static cdl_status run_icache(cdl_solve_state *state, cdl_grid_job *job, cdl_erro
     cdl_status st;
     if (state->shared_cache) {
         /* With surface maps: the solve's one cache, records on the maps included. */
-        cdl_icache_target target = {&gs->grid, 0.0, (size_t)job->plan->key, gs->E_direct, job->var_direct,
-                                    gs->E_indirect, job->var_indirect, gs->ao, NULL, 0, 0, state->threads,
-                                    &state->options.progress, stage, &state->icache_stats};
+        cdl_icache_target target = {.points = &gs->grid,
+                                    .key = (size_t)job->plan->key,
+                                    .E_direct = gs->E_direct,
+                                    .var_direct = job->var_direct,
+                                    .E_indirect = gs->E_indirect,
+                                    .var_indirect = job->var_indirect,
+                                    .ao = gs->ao,
+                                    .threads = state->threads,
+                                    .progress = &state->options.progress,
+                                    .stage = stage,
+                                    .stats = &state->icache_stats};
         st = cdl_icache_solve_shared(&state->icache, state->shared_cache, &target, err);
     } else {
         st = cdl_icache_solve_grid(&state->icache, &gs->grid, (size_t)job->plan->key, gs->E_direct, job->var_direct,

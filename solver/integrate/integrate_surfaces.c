@@ -67,10 +67,29 @@ typedef struct surface_field {
     size_t batch;
 } surface_field;
 
+/* Where a record asked for at p is gathered: p, or, where another surface
+ * passes through p (a floor's vertex along the foot of a wall: it lies on
+ * both, so a gather there would send rays through the wall unseen, and
+ * lose the light that wall returns), a tenth of the maps' spacing away
+ * along p's own surface, in front of the other (the direct solver's step
+ * off such points, cdl_direct_edge_point, without its part along n). The
+ * record still serves p: within its reach, with p's normal, p in its
+ * tangent plane (the cache's behind test), and seeing p. */
+static cdl_vec3 gather_point(const cdl_solve_state *state, const surface_field *f, cdl_vec3 p, cdl_vec3 n)
+{
+    cdl_vec3 at;
+    cdl_direct_edge_point(&state->direct, p, n, &at);
+    cdl_vec3 step = cdl_vec3_sub(at, p);
+    step = cdl_vec3_madd(step, -cdl_vec3_dot(step, n), n);
+    double len = cdl_vec3_length(step);
+    return len > 0.0 ? cdl_vec3_madd(p, 0.1 * f->spacing / len, step) : p;
+}
+
 /* The interreflected light at the probes from the solve's one cache:
  * vertices first, for which records are placed where they need them; the
- * edges' midpoints, tested between vertices already served, only
- * interpolated (a record placed for a midpoint would serve little else).
+ * edges' midpoints, tested between vertices already served, interpolated,
+ * with a record only where none serves one (a record placed for a
+ * midpoint would serve little else).
  * Each point's target is relative to its surface's floor as well. */
 static cdl_status cached_indirect(cdl_solve_state *state, const surface_field *f, const cdl_field_probe *probes,
                                   size_t count, const cdl_vec3 *points, const double *E_dir, const double *var_dir,
@@ -87,6 +106,8 @@ static cdl_status cached_indirect(cdl_solve_state *state, const surface_field *f
     for (size_t i = 0; st == CDL_OK && i < count; ++i)
         if (!probes[i].is_vertex) order[k++] = i;
     double *ed = v, *vd = v + count, *ei = v + 2 * count, *vi = v + 3 * count, *fl = v + 4 * count;
+    cdl_vec3 *at = malloc((count + 1) * sizeof *at);
+    if (st == CDL_OK && !at) st = cdl_error_out_of_memory(err);
     for (size_t j = 0; st == CDL_OK && j < count; ++j) {
         size_t i = order[j];
         pn[j] = points[i];
@@ -94,16 +115,30 @@ static cdl_status cached_indirect(cdl_solve_state *state, const surface_field *f
         ed[j] = E_dir[i];
         vd[j] = var_dir[i];
         fl[j] = probes[i].floor;
+        at[j] = gather_point(state, f, pn[j], pn[count + j]);
     }
     for (int part = 0; st == CDL_OK && part < 2; ++part) {
         size_t from = part ? vertices : 0, n = part ? count - vertices : vertices;
         cdl_grid grid = {.count = n, .points = pn + from, .normals = pn + count + from};
+        cdl_grid gather = {.count = n, .points = at + from, .normals = pn + count + from};
         /* Points the interpolation leaves above the target state what
          * they get (no record of their own: their number grows with
          * refinement, and such a record costs a whole point's paths). */
-        cdl_icache_target t = {&grid,    f->spacing, key + (size_t)part, ed + from, vd + from, ei + from, vi + from,
-                               NULL,     fl + from,  part,               1,         state->threads,
-                               &state->options.progress, stage, &state->icache_stats};
+        cdl_icache_target t = {.points = &grid,
+                               .spacing = f->spacing,
+                               .key = key + (size_t)part,
+                               .E_direct = ed + from,
+                               .var_direct = vd + from,
+                               .E_indirect = ei + from,
+                               .var_indirect = vi + from,
+                               .floors = fl + from,
+                               .gather_at = &gather,
+                               .only_unserved = part,
+                               .no_own_records = 1,
+                               .threads = state->threads,
+                               .progress = &state->options.progress,
+                               .stage = stage,
+                               .stats = &state->icache_stats};
         size_t before = cdl_icache_shared_count(state->shared_cache);
         st = cdl_icache_solve_shared(&state->icache, state->shared_cache, &t, err);
         state->surface_records += cdl_icache_shared_count(state->shared_cache) - before;
@@ -115,6 +150,7 @@ static cdl_status cached_indirect(cdl_solve_state *state, const surface_field *f
     free(order);
     free(pn);
     free(v);
+    free(at);
     return st;
 }
 
@@ -151,6 +187,7 @@ static cdl_status field(void *user, const cdl_field_probe *probes, size_t count,
     else if (st == CDL_OK && state->surface_method == CDL_METHOD_PATHTRACE)
         st = cdl_pathtrace_solve_grid(&state->pathtrace, &grid, key, E_dir, var_dir, E_ind, var_ind, state->threads,
                                       &state->options.progress, stage, &state->pathtrace_stats, err);
+
     state->out->compute_seconds += cdl_pool_now_seconds() - t0;
     for (size_t i = 0; st == CDL_OK && i < count; ++i) {
         value[i] = E_dir[i] + E_ind[i];
