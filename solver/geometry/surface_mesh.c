@@ -203,6 +203,7 @@ static cdl_status choose_edges(refinement *r, size_t *unresolved, cdl_error *err
             }
     }
     /* One entry per edge (an inner edge is seen from both its triangles). */
+    if (r->candidate_count == 0) return CDL_OK;
     qsort(r->candidates, r->candidate_count, sizeof *r->candidates, by_patch_edge);
     size_t kept = 0;
     for (size_t i = 0; i < r->candidate_count; ++i)

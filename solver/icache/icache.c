@@ -263,7 +263,7 @@ typedef struct gather_job {
     int own;                  /* 1: records serving only their own point (OWN_RADIUS) */
     const size_t *at;         /* grid point of each new record */
     double floor;             /* with own: least R of any point */
-    const double *floors;     /* with own: NULL, or per point a larger least R */
+    const double *floors;     /* NULL, or per point a larger least R (its target relative to no less) */
     cdl_icache_record *out;   /* one per new record */
     cdl_path_tally *tallies;  /* per new record, of its reported gather (summed in record order after) */
 } gather_job;
@@ -288,6 +288,9 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
          * shrinks by about the number it uses), so a record need not be as
          * accurate as a point. */
         double R = job->E_direct[i] + pilot.E;
+        /* Where the points' target is relative to a floor (surface maps:
+         * half their surface's mean), a record there need be no better. */
+        if (job->floors) R = fmax(R, job->floors[i]);
         double budget = RECORD_SHARE * ctx->target * ctx->target * R * R;
         /* A record serving its point alone is that point's whole
          * interreflected estimate: its variance is what the target leaves
@@ -384,13 +387,14 @@ static void set_radius(const reach_limits *l, cdl_icache_records *recs, size_t i
 /* Gather records at grid points at[0 .. count - 1], give them radii in
  * order and enter them in the tree. */
 static cdl_status add_records(const cdl_icache_context *ctx, const reach_limits *l, const cdl_grid *grid,
-                              size_t grid_index, const double *E_direct, const size_t *at, size_t count,
+                              size_t grid_index, const double *E_direct, const double *floors, const size_t *at,
+                              size_t count,
                               cdl_icache_records *recs, cdl_record_octree *tree, unsigned char *has, lookup *lk,
                               int threads, const cdl_progress_sink *progress, const char *stage,
                               cdl_icache_stats *stats, cdl_error *err)
 {
     size_t first = recs->count;
-    gather_job base = {ctx, grid, grid_index, E_direct, NULL, 0, at, 0.0, NULL, NULL, NULL};
+    gather_job base = {ctx, grid, grid_index, E_direct, NULL, 0, at, 0.0, floors, NULL, NULL};
     cdl_status st = gather(&base, count, recs, threads, progress, stage, stats, err);
     for (size_t c = 0; st == CDL_OK && c < count; ++c) has[at[c]] = 1;
     for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
@@ -556,8 +560,8 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
         size_t count = 0;
         st = pick(grid, ask, has, box, &at, &count, err);
         if (st == CDL_OK)
-            st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, at, count, q->recs, q->tree, has, &lk,
-                             q->threads, q->progress, q->stage, q->stats, err);
+            st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->floors, at, count, q->recs, q->tree,
+                             has, &lk, q->threads, q->progress, q->stage, q->stats, err);
     }
     point_job job = {q->ctx, l, q->recs, q->tree, grid, q->E_direct, q->var_direct, 1e-3 * brightest, q->floors,
                      0, 0, q->E_indirect, q->var_indirect, q->ao, ask};
@@ -567,8 +571,8 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
         if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
         if (st != CDL_OK || count == 0) break;
         q->stats->passes = (size_t)pass;
-        st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, at, count, q->recs, q->tree, has, &lk,
-                         q->threads, q->progress, q->stage, q->stats, err);
+        st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->floors, at, count, q->recs, q->tree,
+                         has, &lk, q->threads, q->progress, q->stage, q->stats, err);
     }
     /* No point may go unserved (it would read 0 +- 0): the passes take
      * asking points apart from each other and may stop before every point
@@ -580,8 +584,8 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
         size_t count = 0;
         if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
         if (st == CDL_OK && count > 0)
-            st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, at, count, q->recs, q->tree, has, &lk,
-                             q->threads, q->progress, q->stage, q->stats, err);
+            st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->floors, at, count, q->recs, q->tree,
+                             has, &lk, q->threads, q->progress, q->stage, q->stats, err);
     }
     if (st == CDL_OK) {
         job.final = 1;
