@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "base/error_report.h"
 #include "base/strings.h"
 #include "lights/photometry/photometry_polar.h"
 #include "report/grid_map.h"

@@ -10,7 +10,7 @@
 #include "cli_args.h"
 #include "command.h"
 #include "lights/photometry/photometry.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 static void print_help(FILE *out)
 {

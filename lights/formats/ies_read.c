@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/formats/photometry_io.h"
 
 typedef struct ies_reader {

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/formats/photometry_io.h"
 #include "lights/formats/photometry_writer.h"
 

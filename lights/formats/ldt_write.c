@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/formats/photometry_writer.h"
 
 /* EULUMDAT text fields are at most 78 characters (line 1 and 8-12). */

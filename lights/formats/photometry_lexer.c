@@ -1,4 +1,5 @@
 /* photometry_lexer.c - lines, tokens and locale-independent numbers. */
+#include "base/error_report.h"
 #include "lights/formats/photometry_lexer.h"
 
 #include <math.h>

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/formats/photometry_io.h"
 
 static int starts_with_nocase(const char *s, size_t len, const char *prefix)

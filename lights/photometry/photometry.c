@@ -1,6 +1,7 @@
 /* photometry.c - the photometric model: construction, validation, accessors,
  * metadata, warnings, tilt and output factors. Interpolation lives in
  * photometry_intensity.c, integration in photometry_flux.c. */
+#include "base/error_report.h"
 #include "lights/photometry/photometry_internal.h"
 
 #include <ctype.h>

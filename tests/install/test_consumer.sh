@@ -110,4 +110,20 @@ check "find_package(Candela): builds" '[ $st -eq 0 ]'
 check "find_package(Candela): links libcandela.so.$CANDELA_ABI_VERSION" \
   'objdump -p "$tmp/cmake/illuminance" | grep -q "NEEDED.*libcandela.so.$CANDELA_ABI_VERSION"'
 check_programs "find_package" "$tmp/cmake"
+
+# The compile-time version macros, the run-time query and the build's
+# version are one: the program prints both, the build says which it made.
+cat > "$tmp/version.c" <<'C'
+#include <stdio.h>
+#include <candela/candela.h>
+int main(void)
+{
+    printf("%d.%d.%d %s\n", CDL_VERSION_MAJOR, CDL_VERSION_MINOR, CDL_VERSION_PATCH, cdl_version());
+    return 0;
+}
+C
+(cd "$tmp" && "$CC" $san version.c $(pkg-config --cflags --libs candela) -o version); st=$?
+out=$(LD_LIBRARY_PATH="$L" "$tmp/version" 2>&1)
+check "CDL_VERSION_MAJOR.MINOR.PATCH = cdl_version() = the build's $CANDELA_PROJECT_VERSION (got '$out')" \
+  '[ $st -eq 0 ] && [ "$out" = "$CANDELA_PROJECT_VERSION $CANDELA_PROJECT_VERSION" ]'
 exit $fail
