@@ -257,6 +257,15 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
     r.size = size;
     cdl_photometry_metadata *m = &p->meta;
     m->format = CDL_PHOTOMETRY_FORMAT_EULUMDAT;
+    /* A UTF-8 byte-order mark is not part of the company name (line 1). */
+    if (cdl_photometry_has_bom(data, size)) {
+        r.pos = 3;
+        if (cdl_photometry_add_warning(p, "byte-order-mark", 1,
+                                       "%s:1: the file starts with a UTF-8 byte-order mark (EULUMDAT is plain "
+                                       "text; some programs take it for part of the company name): ignored",
+                                       r.source) != CDL_OK)
+            return oom(&r);
+    }
     ldt_header h;
     cdl_status st = read_header(&r, &h);
     if (st != CDL_OK) return st;
@@ -266,7 +275,7 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
     m->file_horizontal_count = (size_t)h.mc;
     m->file_vertical_count = (size_t)h.ng;
     if ((h.ityp < 0 || h.ityp > 3) &&
-        cdl_photometry_add_warning(p, "%s:2: expected the type indicator Ityp 0..3, found %ld", r.source, h.ityp) != CDL_OK)
+        cdl_photometry_add_warning(p, "ldt-ityp", 2, "%s:2: expected the type indicator Ityp 0..3, found %ld", r.source, h.ityp) != CDL_OK)
         return oom(&r);
 
     const cdl_photometry_lamp_set *set1 = &m->lamp_sets[0];
@@ -306,7 +315,7 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
     if (st == CDL_OK) st = read_angles(&r, &s, "C", h.mc, 360.0, c, &c_line);
     if (st == CDL_OK) st = read_angles(&r, &s, "gamma", h.ng, 180.0, g, &g_line);
     if (st == CDL_OK && c[0] != 0.0 &&
-        cdl_photometry_add_warning(p, "%s:%u: expected the C-plane list to start at 0, found %g", r.source, c_line,
+        cdl_photometry_add_warning(p, "ldt-c-start", c_line, "%s:%u: expected the C-plane list to start at 0, found %g", r.source, c_line,
                                    c[0]) != CDL_OK)
         st = oom(&r);
     if (st == CDL_OK) {
@@ -371,7 +380,7 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
         unsigned line;
         cdl_photometry_scanner probe = s;
         if (cdl_photometry_scan(&probe, &tok, &len, &line) &&
-            cdl_photometry_add_warning(p, "%s:%u: %zu value%s after the intensity table ignored", r.source, line,
+            cdl_photometry_add_warning(p, "trailing-values", line, "%s:%u: %zu value%s after the intensity table ignored", r.source, line,
                                        extra, extra == 1 ? "" : "s") != CDL_OK)
             st = oom(&r);
     }
@@ -385,7 +394,7 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
         default: sym = np == 1 ? CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL : CDL_PHOTOMETRY_SYMMETRY_NONE; break;
         }
         if (h.isym == 0 && np == 1 &&
-            cdl_photometry_add_warning(p, "%s:%u: Isym 0 with a single C-plane, read as rotationally symmetric",
+            cdl_photometry_add_warning(p, "ldt-isym0-one-plane", h.mc_line, "%s:%u: Isym 0 with a single C-plane, read as rotationally symmetric",
                                        r.source, h.mc_line) != CDL_OK)
             st = oom(&r);
         if (st == CDL_OK) {

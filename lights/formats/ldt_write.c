@@ -112,6 +112,13 @@ cdl_status cdl_photometry_format_ldt(const cdl_photometry *p, const cdl_photomet
     *text = NULL;
     *length = 0;
     const cdl_photometry_metadata *m = &p->meta;
+    /* EULUMDAT's intensities are cd/klm and nothing in it can say otherwise:
+     * a W/sr table written there would be read as light by every program. */
+    if (m->radiometric)
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "expected a photometric table (EULUMDAT holds cd/klm only), found radiant intensity in "
+                             "%s ([%s]): a radiometric file is kept in IES, which says its unit",
+                             cdl_photometry_intensity_unit(p), m->units_keyword);
     int from_ldt = m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT;
     cdl_photometry *q = NULL;
     cdl_status st;

@@ -4,6 +4,7 @@
 #include <stdio.h>
 
 #include "graphics/text.h"
+#include "lights/photometry/photometry_internal.h"
 #include "lights/photometry/photometry_polar.h"
 #include "radiometry/constants.h"
 
@@ -20,7 +21,8 @@ static double round_up_125(double v)
 double cdl_photometry_plot_scale(const cdl_photometry *p, double *per_klm)
 {
     const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
-    double flux = !m->absolute && m->rated_lamp_flux_lm > 0.0 ? m->rated_lamp_flux_lm : cdl_photometry_flux(p).lm;
+    /* the table's own integral (in W/sr x sr for a radiometric file: W/sr per kW) */
+    double flux = !m->absolute && m->rated_lamp_flux_lm > 0.0 ? m->rated_lamp_flux_lm : p->flux_lm;
     /* cd/klm = I x 1000 / flux */
     *per_klm = flux > 0.0 ? 1000.0 / flux : 0.0;
     double top = cdl_photometry_max_intensity(p).cd * *per_klm;

@@ -4,7 +4,8 @@
 # `candela info` and `candela convert` on every real file of the corpus
 # folder: the MALFORMED ones exit 1 with FILE:LINE: expected ..., found ...;
 # every other file is summarised (text and JSON with a finite flux) and
-# converts to the other format and back.
+# converts to the other format and back; a radiometric one (W/sr) is
+# refused by EULUMDAT and kept radiometric in IES.
 set -u
 : "${CANDELA:?}" "${CANDELA_PHOTOMETRIC_DIR:?}"
 dir=$CANDELA_PHOTOMETRIC_DIR
@@ -32,6 +33,15 @@ for path in "$dir"/*; do
   json=$("$CANDELA" info --json "$path" | tr -d '\n\t ')
   check "$f: JSON flux (radiant in W for files in W/sr)" '( [[ "$json" =~ \"flux_lm\":[0-9] ]] || [[ "$json" =~ \"radiant_flux_w\":[0-9] ]] ) && [[ "$json" != *:nan* ]] && [[ "$json" != *:inf* ]] && [[ "$json" != *:-inf* ]]'
   case "$f" in *.ldt|*.LDT) other=ies; back=ldt ;; *) other=ldt; back=ies ;; esac
+  if [[ "$json" == *'"radiometric":true'* ]]; then
+    # EULUMDAT holds cd/klm only: a file in W/sr is refused there, and kept radiometric in IES
+    rm -f "$tmp/a.ldt"
+    "$CANDELA" convert -q "$path" "$tmp/a.ldt" 2>/dev/null; st1=$?
+    "$CANDELA" convert -q "$path" "$tmp/a.ies"; st2=$?
+    again=$("$CANDELA" info --json "$tmp/a.ies" | tr -d '\n\t ')
+    check "$f: radiometric: refused by EULUMDAT, kept in IES" '[ $st1 -eq 1 ] && [ ! -e "$tmp/a.ldt" ] && [ $st2 -eq 0 ] && [[ "$again" == *\"radiometric\":true* ]]'
+    continue
+  fi
   "$CANDELA" convert -q "$path" "$tmp/a.$other"; st1=$?
   "$CANDELA" convert -q "$tmp/a.$other" "$tmp/b.$back"; st2=$?
   check "$f: converts to $other and back" '[ $st1 -eq 0 ] && [ $st2 -eq 0 ]'
