@@ -127,17 +127,24 @@ static void test_ies(void)
         f.second = codes[k];
         ies_case("a standard file generation type", &f, NULL, 0, NULL);
     }
-    f.second = 1.2;
-    ies_case("file generation type 1.2", &f, "ies-file-generation-type", 8, "found 1.2");
-    f.second = 0.88;
-    ies_case("a ballast factor written as the generation type", &f, "ies-file-generation-type", 8, "found 0.88");
-    f = good_ies();
-    f.ballast = 1.3;
-    ies_case("ballast factor 1.3 (the range's end)", &f, NULL, 0, NULL);
-    f.ballast = 88.0;
-    ies_case("ballast factor 88 (a percentage)", &f, "ballast-factor-range", 8, "found 88");
-    f.ballast = 0.45;
-    ies_case("ballast factor 0.45", &f, "ballast-factor-range", 8, "found 0.45");
+    /* record B, line 8: the generation type (field 2) and the ballast factor (field 1) */
+    static const struct {
+        const char *what;
+        double ballast, second;
+        const char *code, *needle;
+    } record_b[] = {
+        {"file generation type 1.2", 1.0, 1.2, "ies-file-generation-type", "found 1.2"},
+        {"a ballast factor written as the generation type", 1.0, 0.88, "ies-file-generation-type", "found 0.88"},
+        {"ballast factor 1.3 (the range's end)", 1.3, 1.1, NULL, NULL},
+        {"ballast factor 88 (a percentage)", 88.0, 1.1, "ballast-factor-range", "found 88"},
+        {"ballast factor 0.45", 0.45, 1.1, "ballast-factor-range", "found 0.45"},
+    };
+    for (size_t k = 0; k < sizeof record_b / sizeof *record_b; ++k) {
+        f = good_ies();
+        f.ballast = record_b[k].ballast;
+        f.second = record_b[k].second;
+        ies_case(record_b[k].what, &f, record_b[k].code, record_b[k].code ? 8 : 0, record_b[k].needle);
+    }
     f = good_ies();
     f.bom = 1;
     ies_case("a byte-order mark", &f, "byte-order-mark", 1, "byte-order mark");
