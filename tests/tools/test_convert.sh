@@ -100,4 +100,10 @@ IES
 check "test lab: IES -> EULUMDAT -> IES converts" '[ $st -eq 0 ]'
 check "test lab: EULUMDAT carries report number and date with the lab" 'grep -q "^REPORT-4711" "$tmp/lab.ldt" && grep -q "^2026-03-14, test lab: Independent Photometry Lab GmbH" "$tmp/lab.ldt"'
 check "test lab: back in IES as [TEST], [TESTLAB], [ISSUEDATE]" 'grep -q "^\[TEST\] REPORT-4711" "$tmp/lab2.ies" && grep -q "^\[TESTLAB\] Independent Photometry Lab GmbH" "$tmp/lab2.ies" && grep -q "^\[ISSUEDATE\] 2026-03-14" "$tmp/lab2.ies"'
+# IES -> EULUMDAT names every keyword EULUMDAT has no field for, each once,
+# and counts them ([MORE] continues the keyword before it)
+sed '5a [LAMPCAT] LC-1\n[BALLAST] electronic\n[OTHER] first note\n[MORE] its second line\n[OTHER] second note\n[_SEARCH_COLOUR] white' "$tmp/lab.ies" > "$tmp/kw.ies"
+err=$("$CANDELA" convert "$tmp/kw.ies" "$tmp/kw.ldt" 2>&1 >/dev/null); st=$?
+check "IES -> EULUMDAT names each lost keyword ($err)" '[ $st -eq 0 ] && [[ "$err" == *"EULUMDAT cannot hold: 5 IES keywords with no EULUMDAT field: [LAMPCAT], [BALLAST], [OTHER], [_SEARCH_COLOUR]"* ]]'
+check "IES -> EULUMDAT: the direct ratios computed, not 0 (line 27, k = 0.6)" '[ "$(sed -n 27p "$tmp/kw.ldt" | tr -d "\r")" != 0 ] && [[ "$err" != *"direct ratios"* ]]'
 exit $fail

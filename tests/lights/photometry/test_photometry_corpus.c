@@ -254,18 +254,7 @@ static void test_pairs(void)
     }
 }
 
-static char *write_as(const cdl_photometry *p, int ldt, int version)
-{
-    cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT;
-    o.ies_version = version;
-    char *text = NULL;
-    size_t len;
-    cdl_error err;
-    cdl_status st = ldt ? cdl_photometry_format_ldt(p, &o, &text, &len, NULL, &err)
-                        : cdl_photometry_format_ies(p, &o, &text, &len, NULL, &err);
-    CHECK_MSG(st == CDL_OK, "%s", err.message);
-    return text;
-}
+static char *write_as(const cdl_photometry *p, int ldt, int version) { return pc_write(p, ldt, version, NULL); }
 
 /* The table's integral in its own unit: lumens, or watts for a radiometric file. */
 static double table_flux(const cdl_photometry *p)
