@@ -427,17 +427,19 @@ typedef struct cdl_photometry_summary {
     int efficacy_known;
     cdl_luminous_efficacy efficacy;          /* flux x output factor / input watts */
     /* Where the beam and field angles are measured: spread_about_peak 0,
-     * in the C0-C180 and C90-C270 planes through nadir; 1 (a maximum off
-     * nadir: batwing, asymmetric, wall-pack and flood distributions), in
+     * in the C0-C180 and C90-C270 planes through nadir (also for a
+     * rotationally symmetric batwing, which reads the same in both); 1 (a
+     * maximum off nadir of a distribution that is not rotationally
+     * symmetric: batwing, asymmetric, wall-pack and flood ones), in
      * the vertical plane through the peak ([0]) and the plane across it
      * through the peak ([1]). Either way about the peak of that plane and
      * undefined (-1) when the half (tenth) level does not close within
      * 180 degrees. */
     int spread_about_peak;
     double spread_axis_c_deg, spread_axis_gamma_deg; /* the peak, when about it */
-    /* Radiometric files (metadata.radiometric): the table's integral and
-     * maximum as what they are; flux and max_intensity then hold the same
-     * numbers in the table's unit and are not luminous. */
+    /* Radiometric files (metadata.radiometric): the table's integral,
+     * zones and maximum as what they are, in W and W/sr; the luminous
+     * fields above are then NaN. */
     int radiometric;
     cdl_radiant_flux radiant_flux;
     cdl_radiant_intensity max_radiant_intensity;
@@ -544,14 +546,18 @@ cdl_status cdl_photometry_format_ldt(const cdl_photometry *photometry, const cdl
 /* ---- plotting (photometry_plot.c) ---------------------------------------- */
 
 /* The polar intensity diagram as SVG at `path` (atomically), drawn by
- * cairo: the C0-C180 (solid) and C90-C270 (dashed) planes in cd/klm, nadir
- * down, `title` on top and in the SVG's <title>. */
+ * cairo: the C0-C180 (solid) and C90-C270 (dashed) planes in cd/klm, and
+ * the plane through the peak (dotted) when it is neither; type A/B tables
+ * in their V and H planes; nadir down, `title` on top (wrapped or cut to
+ * fit) and in the SVG's <title>; the peak and the beam angles below. */
 cdl_status cdl_photometry_write_polar_svg(const cdl_photometry *photometry, const char *title, const char *path,
                                           cdl_error *err);
-/* The diagram's scale: its outer ring's value (a 1-2-5 value at or above
- * the largest cd/klm), and in *per_klm the factor from cd to cd/klm
- * (1000 / the rated lamp flux, or the table's flux for absolute photometry). */
-double cdl_photometry_plot_scale(const cdl_photometry *photometry, double *per_klm);
+/* The diagram's scale: its outer ring's value, the smallest n x step at
+ * or above the largest cd/klm with a step of 1, 2, 2.5 or 5 x 10^k and 3
+ * to 6 rings (their count in *rings, which may be NULL), and in *per_klm
+ * the factor from cd to cd/klm (1000 / the rated lamp flux, or the table's
+ * flux for absolute photometry). */
+double cdl_photometry_plot_scale(const cdl_photometry *photometry, double *per_klm, int *rings);
 
 /* Write a file atomically (temporary name, then rename). */
 cdl_status cdl_photometry_write_file(const cdl_photometry *photometry, const char *path, cdl_photometry_format format,

@@ -90,13 +90,28 @@ double cdl_photometry_spread_angle(const cdl_photometry *p, cdl_photometry_plane
 
 /* A distribution is measured about its peak when its maximum lies more
  * than PEAK_OFF_NADIR_DEG from nadir and nadir has less than
- * PEAK_NADIR_SHARE of it: a batwing, an asymmetric or wall-pack
+ * PEAK_NADIR_SHARE of it, and it is not rotationally symmetric (a
+ * rotationally symmetric batwing keeps the planes through nadir, where its
+ * beam reads the same in both): an asymmetric batwing, an asymmetric or wall-pack
  * distribution, a floodlight (IES LM-35 and CIE 43 measure a flood's
  * spreads in the planes through its beam axis, the direction of maximum
  * intensity). A downlight whose maximum sits a step off nadir by noise
  * keeps the planes through nadir. */
 #define PEAK_OFF_NADIR_DEG 10.0
 #define PEAK_NADIR_SHARE 0.9
+
+/* A table whose every plane is the same (a single plane, or an EULUMDAT
+ * file of Isym 0 with equal planes): its beam is a cone about nadir, and
+ * the planes through nadir show it the same in every direction. */
+static int is_rotational(const cdl_photometry *p)
+{
+    if (p->type != CDL_PHOTOMETRIC_TYPE_C) return 0;
+    double tol = 1e-9 * p->max_cd;
+    for (size_t i = 1; i < p->nh; ++i)
+        for (size_t j = 0; j < p->nv; ++j)
+            if (fabs(p->cd[i * p->nv + j] - p->cd[j]) > tol) return 0;
+    return 1;
+}
 
 static void spreads(const cdl_photometry *p, cdl_photometry_summary *s)
 {
@@ -108,7 +123,7 @@ static void spreads(const cdl_photometry *p, cdl_photometry_summary *s)
     cdl_vec3 up = cdl_vec3_make(0.0, 0.0, 1.0);
     cdl_vec3 vertical = cdl_vec3_sub(up, cdl_vec3_scale(peak, cdl_vec3_dot(up, peak)));
     if (s->max_gamma_deg > PEAK_OFF_NADIR_DEG && nadir < PEAK_NADIR_SHARE * s->max_intensity.cd &&
-        cdl_vec3_length(vertical) > 1e-9) {
+        cdl_vec3_length(vertical) > 1e-9 && !is_rotational(p)) {
         s->spread_about_peak = 1;
         s->spread_axis_c_deg = s->max_c_deg;
         s->spread_axis_gamma_deg = s->max_gamma_deg;
