@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "lights/formats/ldt_full_table.h"
 #include "lights/formats/photometry_io.h"
 
 typedef struct ldt_reader {
@@ -244,6 +245,71 @@ static void fill_opening(cdl_photometry_metadata *m)
     }
 }
 
+/* Isym 1..4 followed by exactly the values of the planes it leaves out:
+ * the file holds all its Mc planes, in C order from C0 (ldt_full_table.c).
+ * When it does, *t becomes what to use (the planes Isym names, or the full
+ * table where the data contradict Isym) and *used is 1, with a warning. */
+static cdl_status full_table(ldt_reader *r, cdl_photometry_scanner *s, const ldt_header *h, const double *c,
+                             const double *g, double scale, cdl_ldt_table *t, int *used)
+{
+    size_t mc = (size_t)h->mc, ng = t->ng;
+    if (mc >= 2 && c[mc - 1] == 360.0) --mc; /* C360 is C0 again */
+    if (mc <= t->np || cdl_photometry_count_numbers(s, 1) != (mc - t->np) * ng) return CDL_OK;
+    cdl_ldt_table all = {malloc(mc * sizeof *all.planes), malloc(mc * ng * sizeof *all.cd), mc, ng,
+                         CDL_PHOTOMETRY_SYMMETRY_NONE};
+    if (!all.planes || !all.cd) {
+        free(all.planes);
+        free(all.cd);
+        return oom(r);
+    }
+    memcpy(all.planes, c, mc * sizeof *c);
+    memcpy(all.cd, t->cd, t->np * ng * sizeof *t->cd);
+    cdl_photometry_scanner probe = *s;
+    int numbers = 1;
+    for (size_t k = t->np * ng; k < mc * ng && numbers; ++k) {
+        double x;
+        numbers = cdl_photometry_take_number(&probe, &x) == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * scale);
+        all.cd[k] = x * scale;
+    }
+    cdl_ldt_table use;
+    double worst = 0.0;
+    size_t at_plane = 0, at_gamma = 0;
+    int agree = numbers ? cdl_ldt_check_full_table(&all, h->isym, g, &use, &worst, &at_plane, &at_gamma) : -2;
+    cdl_status st = agree == -1 ? oom(r) : CDL_OK;
+    if (agree == 1) {
+        st = cdl_photometry_add_warning(r->p, "ldt-full-table", h->mc_line,
+                                        "%s:%u: the file holds all %zu C-planes although Isym %ld stores %zu: they are "
+                                        "the mirror images Isym %ld says (within 1 %% of the peak), and its planes are "
+                                        "used",
+                                        r->source, h->mc_line, mc, h->isym, t->np, h->isym) == CDL_OK
+                 ? CDL_OK
+                 : oom(r);
+        free(all.planes);
+        free(all.cd);
+        all = use;
+    } else if (agree == 0) {
+        st = cdl_photometry_add_warning(r->p, "ldt-symmetry-indicator", h->isym_line,
+                                        "%s:%u: the symmetry indicator Isym %ld is contradicted by the data: the file "
+                                        "holds all %zu C-planes, and at C%g, gamma %g it has %.4g cd/klm where the "
+                                        "symmetry gives %.4g more or less; read as the full table (Isym 0)",
+                                        r->source, h->isym_line, h->isym, mc, all.planes[at_plane], g[at_gamma],
+                                        all.cd[at_plane * ng + at_gamma] / scale, worst / scale) == CDL_OK
+                 ? CDL_OK
+                 : oom(r);
+    }
+    if (agree < 0 || st != CDL_OK) {
+        free(all.planes);
+        free(all.cd);
+        return st;
+    }
+    free(t->planes);
+    free(t->cd);
+    *t = all;
+    *s = probe;
+    *used = 1;
+    return CDL_OK;
+}
+
 cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const cdl_photometry_read_options *options,
                         cdl_photometry *p, cdl_error *err)
 {
@@ -373,7 +439,13 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
                                    r.source, line, what, x);
             if (st == CDL_OK) cd[i * ng + j] = x * scale;
         }
-    if (st == CDL_OK) {
+    cdl_ldt_table table = {planes, cd, np, ng, CDL_PHOTOMETRY_SYMMETRY_INFER};
+    int full = 0;
+    if (st == CDL_OK && h.isym != 0) st = full_table(&r, &s, &h, c, g, scale, &table, &full);
+    planes = table.planes;
+    cd = table.cd;
+    np = table.np;
+    if (st == CDL_OK && !full) {
         size_t extra = cdl_photometry_count_numbers(&s, 1);
         const char *tok;
         size_t len;
@@ -393,7 +465,8 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
         case 4: sym = CDL_PHOTOMETRY_SYMMETRY_QUADRANT; break;
         default: sym = np == 1 ? CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL : CDL_PHOTOMETRY_SYMMETRY_NONE; break;
         }
-        if (h.isym == 0 && np == 1 &&
+        if (full) sym = table.symmetry; /* what the full table it holds showed */
+        if (h.isym == 0 && np == 1 && !full &&
             cdl_photometry_add_warning(p, "ldt-isym0-one-plane", h.mc_line, "%s:%u: Isym 0 with a single C-plane, read as rotationally symmetric",
                                        r.source, h.mc_line) != CDL_OK)
             st = oom(&r);

@@ -20,12 +20,14 @@ typedef struct ldt_fields {
     double tilt;
     double dr[10];
     double c90[4]; /* the C90 plane when Isym 4 (C0 is 250 200 100 0) */
+    int all_planes;      /* 1: the file holds C0, C90, C180 and C270, whatever Isym says */
+    double planes[4][4]; /* their values then */
 } ldt_fields;
 
 static ldt_fields good_ldt(void)
 {
     ldt_fields f = {"Maker", "Luminaire", 1, 1, {600, 600, 80}, {580, 580}, {0, 0, 0, 0}, 0.0,
-                    {0.3, 0.4, 0.5, 0.55, 0.6, 0.7, 0.75, 0.8, 0.85, 0.9}, {250, 200, 100, 0}};
+                    {0.3, 0.4, 0.5, 0.55, 0.6, 0.7, 0.75, 0.8, 0.85, 0.9}, {250, 200, 100, 0}, 0, {{0}}};
     return f;
 }
 
@@ -40,7 +42,13 @@ static size_t ldt_text(const ldt_fields *f, char *out, size_t size)
     for (int k = 0; k < 4; ++k) PUT("%g\r\n", f->heights[k]);
     PUT("100\r\n0\r\n1\r\n%g\r\n1\r\n1\r\nLED\r\n1000\r\n3000\r\n80\r\n10\r\n", f->tilt);
     for (int k = 0; k < 10; ++k) PUT("%g\r\n", f->dr[k]);
-    PUT("0\r\n90\r\n180\r\n270\r\n0\r\n30\r\n60\r\n90\r\n250\r\n200\r\n100\r\n0\r\n");
+    PUT("0\r\n90\r\n180\r\n270\r\n0\r\n30\r\n60\r\n90\r\n");
+    if (f->all_planes) {
+        for (int i = 0; i < 4; ++i)
+            for (int k = 0; k < 4; ++k) PUT("%g\r\n", f->planes[i][k]);
+        return n;
+    }
+    PUT("250\r\n200\r\n100\r\n0\r\n");
     if (f->isym == 4)
         for (int k = 0; k < 4; ++k) PUT("%g\r\n", f->c90[k]);
 #undef PUT
@@ -212,13 +220,41 @@ static void test_ldt(void)
     f.ityp = 3;
     ldt_case("the same data as Ityp 3", &f, NULL, 0, NULL);
 
+    /* Isym 3 (symmetric to C90-C270) over a file that holds all four planes
+     * from C0: C0 and C180 mirror each other, so the data agree; the stored
+     * planes are the file's C90, C180 and C270, whose values come from the
+     * full table (the second plane the file writes is C90's). */
+    f = good_ldt();
+    f.ityp = 3;
+    f.isym = 3;
+    f.all_planes = 1;
+    const double agree[4][4] = {{250, 200, 100, 0}, {300, 220, 90, 0}, {250, 200, 100, 0}, {280, 210, 95, 0}};
+    memcpy(f.planes, agree, sizeof agree);
+    ldt_case("Isym 3 over all four planes, symmetric", &f, "ldt-full-table", 4, "holds all 4 C-planes although Isym 3 stores 3");
+    cdl_error err;
+    cdl_photometry *p = pc_read_text("full", buf, ldt_text(&f, buf, sizeof buf), 0, &err);
+    /* 1000 lm, cd/klm x 1: C90 at gamma 0 is 300 cd, C270 280 cd */
+    CHECK(p && cdl_photometry_intensity_c_gamma(p, 90.0, 0.0).cd == 300.0 &&
+          cdl_photometry_intensity_c_gamma(p, 270.0, 0.0).cd == 280.0);
+    cdl_photometry_release(p);
+    /* the same planes under Isym 2 (symmetric to C0-C180): C90 and C270 differ by 20 cd/klm at nadir */
+    f.isym = 2;
+    ldt_case("Isym 2 over all four planes that are not", &f, "ldt-symmetry-indicator", 3,
+             "Isym 2 is contradicted by the data: the file holds all 4 C-planes, and at C270, gamma 0 it has 280 "
+             "cd/klm where the symmetry gives 20 more or less; read as the full table");
+    p = pc_read_text("full", buf, ldt_text(&f, buf, sizeof buf), 0, &err);
+    cdl_photometry_table t;
+    if (p) cdl_photometry_get_table(p, &t);
+    CHECK(p && t.symmetry == CDL_PHOTOMETRY_SYMMETRY_NONE && t.horizontal_count == 4 &&
+          cdl_photometry_intensity_c_gamma(p, 270.0, 0.0).cd == 280.0);
+    cdl_photometry_release(p);
+
     /* a byte-order mark: warned, and not kept in the company name */
     f = good_ldt();
     size_t n = ldt_text(&f, buf + 3, sizeof buf - 3);
     memcpy(buf, "\xEF\xBB\xBF", 3);
     expect("an EULUMDAT byte-order mark", buf, n + 3, "byte-order-mark", 1, "byte-order mark");
-    cdl_error err;
-    cdl_photometry *p = pc_read_text("bom", buf, n + 3, 0, &err);
+    p = pc_read_text("bom", buf, n + 3, 0, &err);
     CHECK(p && strcmp(cdl_photometry_get_metadata(p)->ldt_company, "Maker") == 0);
     cdl_photometry_release(p);
 }
