@@ -16,7 +16,7 @@
  * the rounding and measurement noise real files leave between mirror planes. */
 #define MIRROR_TOLERANCE 0.01
 
-static int in_sector(long isym, double c)
+int cdl_ldt_stored_plane(long isym, double c)
 {
     switch (isym) {
     case 1: return c == 0.0;
@@ -27,7 +27,7 @@ static int in_sector(long isym, double c)
     }
 }
 
-static cdl_photometry_symmetry symmetry_of(long isym)
+cdl_photometry_symmetry cdl_ldt_symmetry(long isym)
 {
     return isym == 1   ? CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL
            : isym == 2 ? CDL_PHOTOMETRY_SYMMETRY_BILATERAL_C0_C180
@@ -45,12 +45,12 @@ static int sector(const cdl_ldt_table *full, long isym, cdl_ldt_table *out)
     out->ng = full->ng;
     if (!out->planes || !out->cd) return 0;
     for (size_t i = 0; i < full->np; ++i) {
-        if (!in_sector(isym, full->planes[i])) continue;
+        if (!cdl_ldt_stored_plane(isym, full->planes[i])) continue;
         out->planes[out->np] = full->planes[i];
         memcpy(out->cd + out->np * full->ng, full->cd + i * full->ng, full->ng * sizeof *out->cd);
         ++out->np;
     }
-    out->symmetry = symmetry_of(isym);
+    out->symmetry = cdl_ldt_symmetry(isym);
     return out->np > 0;
 }
 

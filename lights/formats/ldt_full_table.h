@@ -8,6 +8,12 @@
 
 #include "lights/photometry/photometry_internal.h"
 
+/* Does Isym store the plane C? 1 the C0 plane, 2 C in [0, 180], 3 [90, 270], 4 [0, 90], 0 all. */
+int cdl_ldt_stored_plane(long isym, double c);
+
+/* The table symmetry an Isym stands for (none for 0 and anything else). */
+cdl_photometry_symmetry cdl_ldt_symmetry(long isym);
+
 /* Planes (ascending C), ng values each, plane outermost. */
 typedef struct cdl_ldt_table {
     double *planes, *cd;

@@ -184,17 +184,6 @@ static cdl_status read_header(ldt_reader *r, ldt_header *h)
     return CDL_OK;
 }
 
-/* Stored plane selection by angle: Isym 2 keeps C in [0, 180], 3 [90, 270], 4 [0, 90]. */
-static int stored(long isym, double c)
-{
-    switch (isym) {
-    case 2: return c >= 0.0 && c <= 180.0;
-    case 3: return c >= 90.0 && c <= 270.0;
-    case 4: return c >= 0.0 && c <= 90.0;
-    default: return 1;
-    }
-}
-
 static cdl_status read_angles(ldt_reader *r, cdl_photometry_scanner *s, const char *kind, long n, double hi,
                               double *x, unsigned *first_line)
 {
@@ -389,7 +378,7 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
             planes[np++] = 0.0;
         } else {
             for (size_t i = 0; i < mc; ++i)
-                if (stored(h.isym, c[i])) planes[np++] = c[i];
+                if (cdl_ldt_stored_plane(h.isym, c[i])) planes[np++] = c[i];
         }
         if (h.isym == 0 && np >= 2 && c[mc - 1] == 360.0) --np; /* C360 is C0 again */
         static const double lo[5] = {0, 0, 0, 90, 0}, hi[5] = {0, 0, 180, 270, 90};
@@ -457,14 +446,8 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
             st = oom(&r);
     }
     if (st == CDL_OK) {
-        cdl_photometry_symmetry sym;
-        switch (h.isym) {
-        case 1: sym = CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL; break;
-        case 2: sym = CDL_PHOTOMETRY_SYMMETRY_BILATERAL_C0_C180; break;
-        case 3: sym = CDL_PHOTOMETRY_SYMMETRY_BILATERAL_C90_C270; break;
-        case 4: sym = CDL_PHOTOMETRY_SYMMETRY_QUADRANT; break;
-        default: sym = np == 1 ? CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL : CDL_PHOTOMETRY_SYMMETRY_NONE; break;
-        }
+        cdl_photometry_symmetry sym = cdl_ldt_symmetry(h.isym);
+        if (h.isym == 0 && np == 1) sym = CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL;
         if (full) sym = table.symmetry; /* what the full table it holds showed */
         if (h.isym == 0 && np == 1 && !full &&
             cdl_photometry_add_warning(p, "ldt-isym0-one-plane", h.mc_line, "%s:%u: Isym 0 with a single C-plane, read as rotationally symmetric",

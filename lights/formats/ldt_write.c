@@ -23,6 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "lights/formats/ldt_full_table.h"
 #include "lights/formats/ldt_keywords.h"
 #include "lights/formats/photometry_writer.h"
 
@@ -165,18 +166,6 @@ static int compact_isym(cdl_photometry_symmetry s)
                                                               : 0;
 }
 
-/* Stored planes by Isym: 2 keeps C in [0, 180], 3 [90, 270], 4 [0, 90], 1 the C0 plane. */
-static int stored_plane(int isym, double c)
-{
-    switch (isym) {
-    case 1: return c == 0.0;
-    case 2: return c >= 0.0 && c <= 180.0;
-    case 3: return c >= 90.0 && c <= 270.0;
-    case 4: return c >= 0.0 && c <= 90.0;
-    default: return 1;
-    }
-}
-
 static int plan_layout(const cdl_photometry *q, const cdl_ldt_header *h, ldt_layout *l)
 {
     memset(l, 0, sizeof *l);
@@ -192,7 +181,7 @@ static int plan_layout(const cdl_photometry *q, const cdl_ldt_header *h, ldt_lay
     l->stored = l->full ? malloc(l->nfull * sizeof *l->stored) : NULL;
     if (!l->stored) return 0;
     for (size_t i = 0; i < l->nfull; ++i)
-        if (stored_plane(l->isym, l->full[i])) l->stored[l->nstored++] = l->full[i];
+        if (cdl_ldt_stored_plane(l->isym, l->full[i])) l->stored[l->nstored++] = l->full[i];
     return 1;
 }
 
