@@ -458,10 +458,11 @@ void cdl_photometry_summarize(const cdl_photometry *photometry, cdl_photometry_s
 
 /* ---- figures for lighting design ------------------------------------------ */
 
+#define CDL_DIRECT_RATIO_COUNT 10
+
 /* EULUMDAT's direct ratios (lines 27-36) are given for these ten room
  * indices k = a b / (h (a + b)): 0.60, 0.80, 1.00, 1.25, 1.50, 2.00, 2.50,
  * 3.00, 4.00 and 5.00 (index 0..9; 0 outside). */
-#define CDL_DIRECT_RATIO_COUNT 10
 double cdl_direct_ratio_room_index(int k);
 
 /* The direct ratios (CIE 52, LiTG): for each room index, the share of the
