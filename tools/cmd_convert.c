@@ -156,7 +156,8 @@ static int run(int argc, char **argv)
     }
     if (!quiet)
         for (size_t i = 0; i < cdl_photometry_warning_count(p); ++i)
-            fprintf(stderr, "candela convert: warning: %s\n", cdl_photometry_warning(p, i));
+            fprintf(stderr, "candela convert: warning: [%s] %s\n", cdl_photometry_warning_code(p, i),
+                    cdl_photometry_warning(p, i));
 
     const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
     cdl_photometry_table t;

@@ -106,4 +106,7 @@ sed '5a [LAMPCAT] LC-1\n[BALLAST] electronic\n[OTHER] first note\n[MORE] its sec
 err=$("$CANDELA" convert "$tmp/kw.ies" "$tmp/kw.ldt" 2>&1 >/dev/null); st=$?
 check "IES -> EULUMDAT names each lost keyword ($err)" '[ $st -eq 0 ] && [[ "$err" == *"EULUMDAT cannot hold: 5 IES keywords with no EULUMDAT field: [LAMPCAT], [BALLAST], [OTHER], [_SEARCH_COLOUR]"* ]]'
 check "IES -> EULUMDAT: the direct ratios computed, not 0 (line 27, k = 0.6)" '[ "$(sed -n 27p "$tmp/kw.ldt" | tr -d "\r")" != 0 ] && [[ "$err" != *"direct ratios"* ]]'
+# the input's warnings are passed on with their codes
+err=$("$CANDELA" convert "$fix/warn_seam.ies" "$tmp/seam.ldt" 2>&1 >/dev/null); st=$?
+check "the input's warnings on stderr with their codes" '[ $st -eq 0 ] && [[ "$err" == *"candela convert: warning: [seam-differs] "*"H = 360"* ]]'
 exit $fail
