@@ -234,6 +234,33 @@ static void fill_opening(cdl_photometry_metadata *m)
     }
 }
 
+/* np x ng intensities in cd/klm, times `scale` to candela, into cd;
+ * *first_line: the line of the first. */
+static cdl_status read_intensities(ldt_reader *r, cdl_photometry_scanner *s, const double *planes, size_t np,
+                                   const double *g, size_t ng, double scale, double *cd, unsigned *first_line)
+{
+    char what[96];
+    for (size_t i = 0; i < np; ++i)
+        for (size_t j = 0; j < ng; ++j) {
+            double x;
+            cdl_token_kind k = cdl_photometry_take_number(s, &x);
+            unsigned line = s->tok_line;
+            if (i == 0 && j == 0) *first_line = line;
+            if (k == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * scale)) {
+                cd[i * ng + j] = x * scale;
+                continue;
+            }
+            snprintf(what, sizeof what, "the intensity at C%g, gamma %g", planes[i], g[j]);
+            if (k != CDL_TOKEN_NUMBER) return cdl_photometry_token_error(s, k, r->source, what, r->err);
+            if (x < 0.0)
+                return cdl_error_set(r->err, CDL_ERR_INPUT, "%s:%u: expected %s >= 0, found %g (negative intensity)",
+                                     r->source, line, what, x);
+            return cdl_error_set(r->err, CDL_ERR_INPUT, "%s:%u: expected %s to give a finite candela value, found %g",
+                                 r->source, line, what, x);
+        }
+    return CDL_OK;
+}
+
 /* Isym 1..4 followed by exactly the values of the planes it leaves out:
  * the file holds all its Mc planes, in C order from C0 (ldt_full_table.c).
  * When it does, *t becomes what to use (the planes Isym names, or the full
@@ -406,28 +433,8 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
                            r.source, s.line, np * ng, np, ng, h.isym);
     if (st == CDL_OK && !(cd = malloc(np * ng * sizeof *cd))) st = oom(&r);
     double scale = h.cfli * set1->flux_lm / 1000.0;
-    char what[96];
     unsigned values_line = s.line; /* line of the first intensity: where table-wide errors point */
-    for (size_t i = 0; i < np && st == CDL_OK; ++i)
-        for (size_t j = 0; j < ng && st == CDL_OK; ++j) {
-            double x;
-            cdl_token_kind k = cdl_photometry_take_number(&s, &x);
-            unsigned line = s.tok_line;
-            if (i == 0 && j == 0) values_line = line;
-            if (k == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * scale)) {
-                cd[i * ng + j] = x * scale;
-                continue;
-            }
-            snprintf(what, sizeof what, "the intensity at C%g, gamma %g", planes[i], g[j]);
-            if (k != CDL_TOKEN_NUMBER) st = cdl_photometry_token_error(&s, k, r.source, what, err);
-            if (st == CDL_OK && x < 0.0)
-                st = cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected %s >= 0, found %g (negative intensity)",
-                                   r.source, line, what, x);
-            if (st == CDL_OK && !isfinite(x * scale))
-                st = cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected %s to give a finite candela value, found %g",
-                                   r.source, line, what, x);
-            if (st == CDL_OK) cd[i * ng + j] = x * scale;
-        }
+    if (st == CDL_OK) st = read_intensities(&r, &s, planes, np, g, ng, scale, cd, &values_line);
     cdl_ldt_table table = {planes, cd, np, ng, CDL_PHOTOMETRY_SYMMETRY_INFER};
     int full = 0;
     if (st == CDL_OK && h.isym != 0) st = full_table(&r, &s, &h, c, g, scale, &table, &full);
