@@ -283,8 +283,9 @@ static void schedule_row(builder *b, cdl_report_block *t, size_t r, const cdl_re
     cell(b, t, r, 1, "%s", maker[0] ? maker : "-");
     cell(b, t, r, 2, "%s", catalogue[0] ? catalogue : "-");
     cell(b, t, r, 3, "%s", lamp[0] ? lamp : "-");
-    if (s.radiometric) cell(b, t, r, 4, "%.4g W (radiant)", s.radiant_flux.W);
-    else cell(b, t, r, 4, "%.4g lm", s.flux.lm);
+    /* the luminaire's flux as the solve used it: the table times its ballast (output) factor */
+    if (s.radiometric) cell(b, t, r, 4, "%.4g W (radiant)", s.radiant_flux.W * s.output_factor);
+    else cell(b, t, r, 4, "%.4g lm", s.luminaire_flux.lm);
     if (m->input_watts > 0.0) cell(b, t, r, 5, "%.4g W", m->input_watts);
     else cell(b, t, r, 5, "-");
     if (s.efficacy_known) cell(b, t, r, 6, "%.4g lm/W", s.efficacy.lm_W);

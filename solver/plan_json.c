@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "base/error_report.h"
+#include "lights/emitters/near_field_bound.h"
 #include "solver/auto_method.h"
 #include "solver/solve_cache.h"
 

@@ -10,12 +10,20 @@
 /* The receiver's distance, in opening radii, at which K is measured: far
  * enough that the (R / d)^4 term is below 1/400 of the measured one. */
 #define MEASURE_RADII 20.0
-/* Directions of emission measured: rings of polar angle every 15 degrees
- * (13 rings), 12 azimuths on each ring but the poles: 11 x 12 + 2 = 134. */
-#define RING_STEP_DEG 15.0
-#define RING_AZIMUTHS 12
-/* Directions carrying less than this share of the peak are left out. */
-#define DIM_SHARE 1e-3
+/* Directions of emission measured: rings of polar angle every 5 degrees
+ * (37 rings), 24 azimuths on each ring but the poles: 35 x 24 + 2 = 842. */
+#define RING_STEP_DEG 5.0
+#define RING_AZIMUTHS 24
+/* The largest error between the measured directions exceeds the largest
+ * measured by up to this factor (a cos^8 beam on a 1.2 m slot: 1.13 at 15
+ * degrees' spacing; tests/lights/emitters/test_near_field_bound.c). */
+#define BETWEEN_DIRECTIONS 1.25
+/* The point model's error in a direction counts relative to the light
+ * there, but no less than this share of the peak: in a beam's fringe (a
+ * downlight fading to nothing at 80 degrees) its relative error grows
+ * without bound while the light it errs on is a few per cent of what the
+ * luminaire gives; any point lit mostly by such a fringe is lit by little. */
+#define DIM_SHARE 0.1
 
 /* E of `e` at the receiver `distance` from `centre` along w, facing back. */
 static int facing_illuminance(const cdl_emitter *e, cdl_vec3 centre, cdl_vec3 w, double distance, double *E)
@@ -48,8 +56,8 @@ static double largest_difference(const cdl_emitter *point, const cdl_emitter *op
                     peak = fmax(peak, Ep);
                     continue;
                 }
-                if (!(Ep > DIM_SHARE * peak) || !facing_illuminance(opening, centre, w, distance, &Eo)) continue;
-                worst = fmax(worst, fabs(Eo - Ep) / Ep);
+                if (!(peak > 0.0) || !facing_illuminance(opening, centre, w, distance, &Eo)) continue;
+                worst = fmax(worst, fabs(Eo - Ep) / fmax(Ep, DIM_SHARE * peak));
             }
         }
     return worst;
@@ -71,7 +79,7 @@ cdl_status cdl_near_field_bound_measure(const cdl_goniometric_params *params, cd
         double worst = largest_difference(point, opening, params->position, MEASURE_RADII * out->radius_m);
         /* At least the Lambertian disk's coefficient: a table measured flat
          * by these directions is no better than that. */
-        out->k = fmax(1.0, worst * MEASURE_RADII * MEASURE_RADII);
+        out->k = fmax(1.0, BETWEEN_DIRECTIONS * worst * MEASURE_RADII * MEASURE_RADII);
     }
     cdl_emitter_release(point);
     cdl_emitter_release(opening);
@@ -108,4 +116,21 @@ double cdl_near_field_bound_distance(const cdl_near_field_bound *b, double relat
         else hi = mid;
     }
     return hi;
+}
+
+double cdl_near_field_switch_distance(const cdl_near_field_bound *b, double target)
+{
+    return fmax(CDL_NEAR_FIELD_DISTANCES * 2.0 * b->radius_m,
+                cdl_near_field_bound_distance(b, CDL_NEAR_FIELD_SHARE * target));
+}
+
+cdl_status cdl_near_field_switch_distances(const cdl_photometry *photometry, const double *targets, size_t count,
+                                           double *out, cdl_error *err)
+{
+    cdl_goniometric_params params = CDL_GONIOMETRIC_PARAMS_DEFAULT;
+    params.photometry = photometry;
+    cdl_near_field_bound bound;
+    cdl_status st = cdl_near_field_bound_measure(&params, &bound, err);
+    for (size_t i = 0; st == CDL_OK && i < count; ++i) out[i] = cdl_near_field_switch_distance(&bound, targets[i]);
+    return st;
 }

@@ -30,6 +30,14 @@
 #include "base/error.h"
 #include "lights/emitters/emitter.h"
 
+/* "auto" spreads a luminaire over its opening nearer than the distance
+ * where the bound falls to CDL_NEAR_FIELD_SHARE of the target, and never
+ * nearer than CDL_NEAR_FIELD_DISTANCES opening sizes. A quarter: a bias of
+ * a quarter sigma adds 3 % to the error in quadrature and leaves the stated
+ * error's calibration as it is. */
+#define CDL_NEAR_FIELD_DISTANCES 5.0
+#define CDL_NEAR_FIELD_SHARE 0.25
+
 typedef struct cdl_near_field_bound {
     int flat;                 /* 1: a flat opening (second order); 0: a luminous solid (first order) */
     double radius_m;          /* R: half the opening's largest dimension */
@@ -39,10 +47,11 @@ typedef struct cdl_near_field_bound {
 /* The bound for the goniometric luminaire of `params` (its photometry has
  * a spread opening, cdl_luminous_opening_is_spread). For a flat opening K
  * is the largest relative difference between the point model and the
- * opening's cubature (to 1e-7) over 134 directions of emission (every 15 degrees of polar angle, 30 of azimuth), each seen
- * from 20 R by a receiver facing the luminaire, times (20)^2; directions
- * where the luminaire emits less than 1e-3 of its peak are left out (the
- * point model's error there is a tiny part of any point's light). Errors:
+ * opening's cubature (to 1e-7) over 842 directions of emission (every 5 degrees of polar angle, 15 of azimuth), and a quarter more for the directions between them, each seen
+ * from 20 R by a receiver facing the luminaire, times (20)^2; the
+ * difference counts relative to the point model's value there, but to no
+ * less than a tenth of the peak (in a beam's fringe the relative error
+ * grows without bound on light that is a few per cent of the luminaire's). Errors:
  * those of creating the emitters. */
 cdl_status cdl_near_field_bound_measure(const cdl_goniometric_params *params, cdl_near_field_bound *out,
                                         cdl_error *err);
@@ -53,5 +62,15 @@ double cdl_near_field_bound_error(const cdl_near_field_bound *bound, double d);
 
 /* The smallest distance beyond which the bound is at most `relative` (> 0). */
 double cdl_near_field_bound_distance(const cdl_near_field_bound *bound, double relative);
+
+/* Where "auto" switches for a solve's target error (relative): the bound's
+ * distance for CDL_NEAR_FIELD_SHARE of it, at least CDL_NEAR_FIELD_DISTANCES
+ * times the opening's largest dimension (2 R). */
+double cdl_near_field_switch_distance(const cdl_near_field_bound *bound, double target);
+
+/* The switch distances of a photometry's opening (placed as it is, at the
+ * origin) for `count` targets, into out[]. Errors: those of measuring. */
+cdl_status cdl_near_field_switch_distances(const cdl_photometry *photometry, const double *targets, size_t count,
+                                           double *out, cdl_error *err);
 
 #endif

@@ -14,6 +14,12 @@ size_t cdl_photometry_text_length(const char *data, size_t size)
     return z ? (size_t)(z - data) : size;
 }
 
+int cdl_photometry_has_bom(const char *data, size_t size)
+{
+    return size >= 3 && (unsigned char)data[0] == 0xEF && (unsigned char)data[1] == 0xBB &&
+           (unsigned char)data[2] == 0xBF;
+}
+
 int cdl_photometry_next_line(const char *data, size_t size, size_t *pos, const char **line, size_t *len)
 {
     size_t p = *pos;

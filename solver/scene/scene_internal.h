@@ -101,10 +101,6 @@ typedef enum cdl_luminaire_kind {
  * horizontal (elliptic) cylinder, sphere, ellipsoid) of non-zero size)
  * stays a point; under ALWAYS the plan and a warning say so. */
 typedef enum cdl_near_field_mode { CDL_NEAR_FIELD_AUTO = 0, CDL_NEAR_FIELD_ALWAYS, CDL_NEAR_FIELD_NEVER } cdl_near_field_mode;
-#define CDL_NEAR_FIELD_DISTANCES 5.0
-/* A quarter: a bias of a quarter sigma adds 3 % to the error in quadrature
- * and leaves the stated error's calibration as it is. */
-#define CDL_NEAR_FIELD_SHARE 0.25
 
 typedef struct cdl_luminaire_spec {
     char json_path[CDL_JSON_PATH_SIZE];  /* "luminaires[2]": the entry it comes from */

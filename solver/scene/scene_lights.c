@@ -296,7 +296,6 @@ static cdl_status add_near_field(const cdl_scene *scene, const cdl_luminaire_spe
                                  cdl_emitter *point, const cdl_scene_light *point_proto, cdl_scene_lights *L,
                                  cdl_error *err)
 {
-    double size = cdl_luminous_opening_largest_m(&cdl_photometry_get_metadata(p->photometry)->opening);
     cdl_scene_light proto = *point_proto;
     cdl_status st;
     if (sp->near_field == CDL_NEAR_FIELD_AUTO) {
@@ -308,11 +307,10 @@ static cdl_status add_near_field(const cdl_scene *scene, const cdl_luminaire_spe
             cdl_emitter_release(point);
             return fail_at(err, scene, sp->json_path, st);
         }
-        double share = CDL_NEAR_FIELD_SHARE * cdl_solver_settings_target(&scene->settings);
         cdl_scene_light far = *point_proto;
         far.near_part = -1;
         far.near_center = sp->position;
-        far.near_radius = fmax(CDL_NEAR_FIELD_DISTANCES * size, cdl_near_field_bound_distance(&bound, share));
+        far.near_radius = cdl_near_field_switch_distance(&bound, cdl_solver_settings_target(&scene->settings));
         far.near_model_error = cdl_near_field_bound_error(&bound, far.near_radius);
         st = add_light(L, point, "goniometric", &far, err);
         if (st != CDL_OK) return fail_at(err, scene, sp->json_path, st);

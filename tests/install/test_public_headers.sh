@@ -81,7 +81,7 @@ check "every public function has its entry in the API reference" '[ -z "$unliste
 
 # Negative control: the same check on a copy with one comment removed.
 cp -r "$inc" "$tmp/copy"
-sed -i 's|^/\* Total flux: the exact integral.*\*/$|int cdl_undocumented_probe(void);|' "$tmp/copy/candela/lights/photometry/photometry.h"
+sed -i 's|^/\* Free a photometry (NULL is fine); nothing may use it afterwards. \*/$|int cdl_undocumented_probe(void);|' "$tmp/copy/candela/lights/photometry/photometry.h"
 out=$("$CANDELA_APIDOC" check --root "$tmp/copy/candela" "$tmp/copy/candela/candela.h" 2>&1); st=$?
 check "the documentation check names an undocumented function" '[ $st -ne 0 ] && [[ "$out" == *cdl_undocumented_probe* ]]'
 exit $fail
