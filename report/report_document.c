@@ -14,6 +14,7 @@
 #include "lights/photometry/photometry_polar.h"
 #include "report/grid_map.h"
 #include "report/summary_table.h"
+#include "lights/photometry/photometry_metadata.h"
 
 int cdl_report_cell_verdict(const char *cell)
 {
@@ -270,14 +271,11 @@ static void schedule_row(builder *b, cdl_report_block *t, size_t r, const cdl_re
     const cdl_photometry *p = type->photometry;
     const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
     cdl_photometry_summary s;
-    cdl_photometry_summarize(p, &s);
-    int ldt = m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT;
+    cdl_photometry_summary_compute(p, &s);
     char maker[160], catalogue[160], lamp[160];
-    first_line(maker, sizeof maker, ldt ? m->ldt_company : cdl_photometry_keyword_value(p, "MANUFAC"));
-    first_line(catalogue, sizeof catalogue, ldt ? m->ldt_luminaire_number : cdl_photometry_keyword_value(p, "LUMCAT"));
-    const char *lamp_keyword = cdl_photometry_keyword_value(p, "LAMP");
-    if (!lamp_keyword) lamp_keyword = cdl_photometry_keyword_value(p, "LAMPCAT");
-    first_line(lamp, sizeof lamp, ldt ? m->lamp_sets[0].type : lamp_keyword);
+    first_line(maker, sizeof maker, cdl_photometry_get_text(p, CDL_PHOTOMETRY_MANUFACTURER));
+    first_line(catalogue, sizeof catalogue, cdl_photometry_get_text(p, CDL_PHOTOMETRY_CATALOGUE));
+    first_line(lamp, sizeof lamp, cdl_photometry_get_text(p, CDL_PHOTOMETRY_LAMP));
     const char *slash = strrchr(l->file, '/');
     cell(b, t, r, 0, "%s", slash ? slash + 1 : l->file);
     cell(b, t, r, 1, "%s", maker[0] ? maker : "-");

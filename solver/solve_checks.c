@@ -28,6 +28,7 @@
 #include "radiometry/bounds.h"
 #include "solver/geometry/polygon.h"
 #include "solver/direct/direct.h"
+#include "lights/photometry/photometry_metadata.h"
 
 /* Samples of an extended light tried per point before calling it hidden there. */
 #define EXTENDED_PROBES 4

@@ -6,6 +6,7 @@
 #include "cli_args.h"
 #include "command.h"
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 
 static void print_help(FILE *out)
 {
@@ -119,7 +120,7 @@ static int run(int argc, char **argv)
         fprintf(stderr, "candela convert: %s: expected an output name ending in .ies or .ldt\n", out);
         return CDL_EXIT_USAGE;
     }
-    cdl_photometry_write_options wo = CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT;
+    cdl_photometry_write_options wo = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
     const cdl_cli_option *ver = cdl_cli_find(options, count, "ies-version");
     if (ver->present) {
         if (strcmp(ver->value, "2019") == 0) wo.ies_version = 2019;
@@ -144,7 +145,7 @@ static int run(int argc, char **argv)
     }
     int quiet = cdl_cli_find(options, count, "quiet")->present;
 
-    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     ro.strict = cdl_cli_find(options, count, "strict")->present;
     cdl_photometry *p = NULL;
     cdl_error err;

@@ -11,6 +11,7 @@
 #include "command.h"
 #include "info_output.h"
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 
 static void print_help(FILE *out)
 {
@@ -254,7 +255,7 @@ static int run(int argc, char **argv)
                         "(see 'candela info --help')\n");
         return CDL_EXIT_USAGE;
     }
-    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     ro.strict = cdl_cli_find(options, count, "strict")->present;
     int json = cdl_cli_find(options, count, "json")->present;
     const cdl_cli_option *plot = cdl_cli_find(options, count, "plot");

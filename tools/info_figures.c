@@ -4,11 +4,12 @@
 #include <string.h>
 
 #include "info_output.h"
+#include "lights/photometry/photometry_metadata.h"
 
 int cdl_info_figures_compute(const cdl_photometry *p, int classify, cdl_info_figures *f)
 {
     memset(f, 0, sizeof *f);
-    cdl_photometry_summarize(p, &f->s);
+    cdl_photometry_summary_compute(p, &f->s);
     const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
     f->scale = f->s.output_factor * (m->radiometric ? m->radiometric_scale : 1.0);
     if (!classify) return 1;

@@ -7,6 +7,7 @@
 #include "info_output.h"
 #include "lights/emitters/near_field_bound.h"
 #include "solver/scene/scene.h"
+#include "lights/photometry/photometry_metadata.h"
 
 static void add_string(cJSON *obj, const char *key, const char *value)
 {

@@ -16,6 +16,7 @@
 #include <stddef.h>
 
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 
 typedef struct cdl_info_figures {
     cdl_photometry_summary s;

@@ -7,6 +7,7 @@
 #include "info_output.h"
 #include "lights/emitters/near_field_bound.h"
 #include "solver/scene/scene.h"
+#include "lights/photometry/photometry_metadata.h"
 
 #define LABEL "%-16s"
 
@@ -34,9 +35,8 @@ static void print_header(const char *path, const cdl_photometry *p)
                m->version_tag, m->version_tag[0] ? "')" : "");
     else
         printf(LABEL "EULUMDAT (Isym %d, Ityp %d)\n", "format", m->ldt_isym, m->ldt_ityp);
-    int ldt = m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT;
-    const char *name = ldt ? m->ldt_luminaire_name : cdl_photometry_keyword_value(p, "LUMINAIRE");
-    const char *maker = ldt ? m->ldt_company : cdl_photometry_keyword_value(p, "MANUFAC");
+    const char *name = cdl_photometry_get_text(p, CDL_PHOTOMETRY_LUMINAIRE);
+    const char *maker = cdl_photometry_get_text(p, CDL_PHOTOMETRY_MANUFACTURER);
     if (maker && *maker) printf(LABEL "%s\n", "manufacturer", maker);
     if (name && *name) printf(LABEL "%.*s\n", "luminaire", (int)strcspn(name, "\n"), name);
     printf(LABEL "type %s, symmetry %s, %zu x %zu angles in the file (%zu planes stored)\n", "photometry",

@@ -38,6 +38,7 @@
 #include "lights/emitters/emitter.h"
 #include "lights/emitters/emitter_internal.h"
 #include "radiometry/constants.h"
+#include "lights/photometry/photometry_metadata.h"
 
 /* Relative tolerance of a table sample from I0 cos(gamma) for the table to
  * count as Lambertian: the closed form then differs from the sampled

@@ -5,6 +5,7 @@
 
 #include "base/error_report.h"
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 #include "radiometry/constants.h"
 
 /* The receiver's distance, in opening radii, at which K is measured: far

@@ -21,6 +21,7 @@
 
 #include "base/error_report.h"
 #include "lights/formats/photometry_io.h"
+#include "lights/photometry/photometry_metadata.h"
 
 typedef struct ies_reader {
     const char *source; /* name for messages */

@@ -16,9 +16,11 @@
 #include <string.h>
 
 #include "base/error_report.h"
+#include "base/sized_struct.h"
 #include "lights/formats/ldt_keywords.h"
 #include "lights/formats/photometry_io.h"
 #include "lights/formats/photometry_writer.h"
+#include "lights/photometry/photometry_metadata.h"
 
 #define PER_LINE 10
 #define KEYWORD_CHUNK 200
@@ -227,7 +229,10 @@ cdl_status cdl_photometry_format_ies(const cdl_photometry *p, const cdl_photomet
 {
     *text = NULL;
     *length = 0;
-    int version = options && options->ies_version ? options->ies_version : 2019;
+    cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
+    cdl_sized_struct_read(&o, sizeof o, options);
+    options = &o;
+    int version = options->ies_version ? options->ies_version : 2019;
     if (version != 2019 && version != 2002)
         return cdl_error_set(err, CDL_ERR_USAGE, "IES output is LM-63-2019 or LM-63-2002, not %d", version);
     const cdl_photometry_metadata *m = &p->meta;

@@ -1,5 +1,6 @@
 /* ldt_keywords.c - EULUMDAT fields carried through IES as keywords (ldt_keywords.h). */
 #include "lights/formats/ldt_keywords.h"
+#include "lights/photometry/photometry_metadata.h"
 
 #include <stdio.h>
 #include <stdlib.h>

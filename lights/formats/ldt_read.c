@@ -18,6 +18,7 @@
 #include "base/error_report.h"
 #include "lights/formats/ldt_full_table.h"
 #include "lights/formats/photometry_io.h"
+#include "lights/photometry/photometry_metadata.h"
 
 typedef struct ldt_reader {
     const char *source;

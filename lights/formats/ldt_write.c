@@ -24,9 +24,11 @@
 #include <string.h>
 
 #include "base/error_report.h"
+#include "base/sized_struct.h"
 #include "lights/formats/ldt_full_table.h"
 #include "lights/formats/ldt_keywords.h"
 #include "lights/formats/photometry_writer.h"
+#include "lights/photometry/photometry_metadata.h"
 
 /* EULUMDAT text fields are at most 78 characters (line 1 and 8-12). */
 #define TEXT_MAX 78
@@ -265,6 +267,9 @@ cdl_status cdl_photometry_format_ldt(const cdl_photometry *p, const cdl_photomet
 {
     *text = NULL;
     *length = 0;
+    cdl_photometry_write_options given = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
+    cdl_sized_struct_read(&given, sizeof given, options);
+    options = &given;
     const cdl_photometry_metadata *m = &p->meta;
     /* EULUMDAT's intensities are cd/klm and nothing in it can say otherwise:
      * a W/sr table written there would be read as light by every program. */

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "base/error_report.h"
+#include "base/sized_struct.h"
 #include "lights/formats/photometry_io.h"
 
 static int starts_with_nocase(const char *s, size_t len, const char *prefix)
@@ -66,8 +67,9 @@ cdl_status cdl_photometry_read_memory(const void *bytes, size_t size, const char
                                       cdl_error *err)
 {
     *out = NULL;
-    cdl_photometry_read_options defaults = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
-    if (!options) options = &defaults;
+    cdl_photometry_read_options given = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
+    cdl_sized_struct_read(&given, sizeof given, options);
+    options = &given;
     const char *source = name ? name : "<memory>";
     const char *data = bytes;
     size = cdl_photometry_text_length(data, size);

@@ -96,11 +96,15 @@ const char *cdl_photometry_symmetry_name(cdl_photometry_symmetry symmetry);
 
 typedef struct cdl_photometry cdl_photometry;
 
+/* How a file is read. Start from CDL_PHOTOMETRY_READ_OPTIONS_INIT (it sets
+ * `size`, so that fields added later keep their defaults for a program
+ * built before them). */
 typedef struct cdl_photometry_read_options {
+    size_t size;             /* sizeof(cdl_photometry_read_options) */
     int strict;              /* 1: warnings become errors */
     int no_external_files;   /* 1: refuse TILT=<file> instead of opening it (fuzzing, sandboxes) */
 } cdl_photometry_read_options;
-#define CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT {0, 0}
+#define CDL_PHOTOMETRY_READ_OPTIONS_INIT {.size = sizeof(cdl_photometry_read_options), .strict = 0, .no_external_files = 0}
 
 /* Read an IES (any LM-63 version) or EULUMDAT file; the format is detected
  * from the content, not the extension. Errors: CDL_ERR_INPUT with
@@ -300,6 +304,8 @@ double cdl_luminous_opening_projected_area(const cdl_luminous_opening *opening, 
 void cdl_photometry_opening_luminance(const cdl_photometry *photometry, double c_deg, double gamma_deg,
                                       cdl_luminance *average, cdl_luminance *maximum);
 
+/* ---- the file's header ------------------------------------------------------ */
+
 /* One lamp set. An IES file has one (lamp count x lumens per lamp); an
  * EULUMDAT file has 1..20, the first being the measured equipment and the
  * others alternatives. */
@@ -312,68 +318,49 @@ typedef struct cdl_photometry_lamp_set {
     char cri[64];       /* colour rendering group / index as written */
 } cdl_photometry_lamp_set;
 
-typedef struct cdl_photometry_keyword {
-    char *key;          /* without brackets, e.g. "MANUFAC", "_ABSOLUTELUMENS"; "" for free text */
-    char *value;        /* [MORE] continuations joined with '\n' */
-    unsigned line;      /* line of the file where the keyword starts; 0 when not read from a file */
-} cdl_photometry_keyword;
+/* Which format the photometry was read from (CDL_PHOTOMETRY_FORMAT_TABLE
+ * when built in memory), and the LM-63 version of an IES file (1986, 1991,
+ * 1995, 2002 or 2019; 0 when not IES). */
+cdl_photometry_format cdl_photometry_get_format(const cdl_photometry *photometry);
+int cdl_photometry_ies_version(const cdl_photometry *photometry);
 
-typedef enum cdl_tilt_kind { CDL_TILT_NONE = 0, CDL_TILT_INCLUDE, CDL_TILT_FILE } cdl_tilt_kind;
+/* The input power the file states, in watts (0 when unknown); its ballast
+ * (output) factor (1 when the format has none); 1 for absolute photometry
+ * (no lamp reference); 1 when the table is radiant intensity (W/sr, its
+ * figures never lumens: cdl_photometry_radiant_flux). */
+double cdl_photometry_input_watts(const cdl_photometry *photometry);
+double cdl_photometry_ballast_factor(const cdl_photometry *photometry);
+int cdl_photometry_is_absolute(const cdl_photometry *photometry);
+int cdl_photometry_is_radiometric(const cdl_photometry *photometry);
 
-#define CDL_PHOTOMETRY_MAX_LAMP_SETS 20
+/* The luminous opening the file gives (a point when it gives none). */
+const cdl_luminous_opening *cdl_photometry_opening(const cdl_photometry *photometry);
 
-typedef struct cdl_photometry_metadata {
-    cdl_photometry_format format;
-    int ies_version;              /* 1986, 1991, 1995, 2002 or 2019; 0 when not IES */
-    char version_tag[64];         /* IES line 1 as found (trimmed); "" for 1986 */
-    size_t file_horizontal_count; /* as written: IES horizontal angles (with a closing 360) or EULUMDAT Mc */
-    size_t file_vertical_count;   /* as written: IES vertical angles or EULUMDAT Ng */
-    int absolute;                 /* 1: absolute photometry, no lamp reference */
-    double rated_lamp_flux_lm;    /* lamps x lumens (IES) or lamp set 1 (EULUMDAT); 0 if absolute */
-    double candela_multiplier;    /* IES multiplier or EULUMDAT conversion factor, as found (applied) */
-    double ballast_factor;        /* 1 when the format has none */
-    double ballast_lamp_factor;   /* LM-63-1995 and older record B field 2; 1 otherwise */
-    double file_generation_type;  /* LM-63-2019 record B field 2 (a code, not a factor); 0 otherwise */
-    double input_watts;           /* 0 when unknown */
-    size_t lamp_set_count;
-    cdl_photometry_lamp_set lamp_sets[CDL_PHOTOMETRY_MAX_LAMP_SETS];
-    cdl_luminous_opening opening;
-    size_t keyword_count;
-    cdl_photometry_keyword *keywords;
-    /* tilt */
-    cdl_tilt_kind tilt_kind;
-    char tilt_file[256];          /* TILT=<file> as written */
-    int tilt_geometry;            /* 1, 2 or 3 (LM-63 lamp-to-luminaire geometry); 0 without tilt */
-    size_t tilt_count;
-    const double *tilt_angles_deg;
-    const double *tilt_factors;
-    /* EULUMDAT fields (0 / "" when not from EULUMDAT) */
-    int ldt_ityp;                  /* type indicator 0..3 */
-    int ldt_isym;                  /* symmetry indicator 0..4 as found */
-    char ldt_company[128];
-    char ldt_report[128];          /* measurement report number */
-    char ldt_luminaire_name[128];
-    char ldt_luminaire_number[128];
-    char ldt_file_name[128];
-    char ldt_date_user[128];
-    double ldt_luminaire_mm[3];    /* length/diameter, width (0 = round), height */
-    double ldt_luminous_mm[2];     /* luminous length/diameter, width (0 = round) */
-    double ldt_luminous_height_mm[4]; /* in the C0, C90, C180, C270 planes */
-    double ldt_dff_percent;        /* downward flux fraction as stated */
-    double ldt_lorl_percent;       /* light output ratio as stated */
-    double ldt_measurement_tilt_deg;
-    double ldt_direct_ratios[10];  /* for room indices 0.60 ... 5.00 */
-    /* Radiometric files (photometry_units.c): the table is radiant
-     * intensity, radiometric_scale W/sr per unit (1 for W/sr, 1e-3 for
-     * mW/sr), as a keyword named units_keyword says; its "flux" is then
-     * radiant flux in W / radiometric_scale, not lumens. */
-    int radiometric;
-    double radiometric_scale;
-    char units_keyword[64];
-} cdl_photometry_metadata;
+/* The lamp sets: their number, and a copy of set `index` into *out
+ * (returns 0 and leaves *out untouched past the end). */
+size_t cdl_photometry_lamp_set_count(const cdl_photometry *photometry);
+int cdl_photometry_get_lamp_set(const cdl_photometry *photometry, size_t index, cdl_photometry_lamp_set *out);
 
-/* The file data. Never NULL for a valid photometry. */
-const cdl_photometry_metadata *cdl_photometry_get_metadata(const cdl_photometry *photometry);
+/* The texts a file names in either format (cdl_photometry_get_text). */
+typedef enum cdl_photometry_text {
+    CDL_PHOTOMETRY_MANUFACTURER,            /* IES [MANUFAC], EULUMDAT line 1 */
+    CDL_PHOTOMETRY_LUMINAIRE,               /* [LUMINAIRE], line 9 */
+    CDL_PHOTOMETRY_CATALOGUE,               /* [LUMCAT], line 10 */
+    CDL_PHOTOMETRY_LAMP                     /* [LAMP] or [LAMPCAT], the first lamp set's type */
+} cdl_photometry_text;
+
+/* What the file names: the maker, the luminaire, its catalogue number, the
+ * lamp; "" when the file does not say. */
+const char *cdl_photometry_get_text(const cdl_photometry *photometry, cdl_photometry_text which);
+
+/* The file's keywords in order: their number, and each one's name (without
+ * brackets: "MANUFAC", "_ABSOLUTELUMENS"; "" for free text) and value
+ * ([MORE] continuations joined with '\n'); NULL past the end. An IES
+ * file's keywords as written; an EULUMDAT file has few (its fields have
+ * fixed lines). */
+size_t cdl_photometry_keyword_count(const cdl_photometry *photometry);
+const char *cdl_photometry_keyword_name(const cdl_photometry *photometry, size_t index);
+const char *cdl_photometry_keyword_text(const cdl_photometry *photometry, size_t index);
 
 /* The value of the first keyword named `key` (case-insensitive), or NULL. */
 const char *cdl_photometry_keyword_value(const cdl_photometry *photometry, const char *key);
@@ -410,6 +397,8 @@ double cdl_photometry_spread_angle(const cdl_photometry *photometry, cdl_photome
  * luminous fields are NaN and the radiant ones hold the table's figures in
  * W and W/sr. */
 typedef struct cdl_photometry_summary {
+    size_t size;                             /* sizeof(cdl_photometry_summary): set by the caller
+                                                (CDL_PHOTOMETRY_SUMMARY_INIT); only the fields it covers are filled */
     cdl_luminous_flux flux;                  /* exact integral of the table */
     cdl_luminous_flux downward_flux;         /* frame gamma in [0, 90] (below the horizontal) */
     cdl_luminous_flux upward_flux;           /* frame gamma in [90, 180] */
@@ -451,9 +440,11 @@ typedef struct cdl_photometry_summary {
     double upward_fraction;                  /* upward / total, 0 without light */
 } cdl_photometry_summary;
 
-/* Fill *summary (caller's) with the figures above, all from the table
- * (flux: the exact integral; efficacy from the stated input watts).
- * Never fails. */
+#define CDL_PHOTOMETRY_SUMMARY_INIT {.size = sizeof(cdl_photometry_summary)}
+
+/* Fill *summary (caller's, its size set) with the figures above, all from
+ * the table (flux: the exact integral; efficacy from the stated input
+ * watts). Never fails. */
 void cdl_photometry_summarize(const cdl_photometry *photometry, cdl_photometry_summary *summary);
 
 /* ---- figures for lighting design ------------------------------------------ */
@@ -526,11 +517,14 @@ typedef struct cdl_photometry_notes {
 /* Free the notes' lines and leave them empty (NULL and empty notes are fine). */
 void cdl_photometry_notes_free(cdl_photometry_notes *notes);
 
+/* How a file is written. Start from CDL_PHOTOMETRY_WRITE_OPTIONS_INIT (it
+ * sets `size`, as for the read options). */
 typedef struct cdl_photometry_write_options {
+    size_t size;            /* sizeof(cdl_photometry_write_options) */
     int ies_version;        /* IES output: 2019 (also when 0) or 2002 */
     const char *file_name;  /* EULUMDAT line 11; NULL: the output file's name */
 } cdl_photometry_write_options;
-#define CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT {2019, NULL}
+#define CDL_PHOTOMETRY_WRITE_OPTIONS_INIT {.size = sizeof(cdl_photometry_write_options), .ies_version = 2019, .file_name = NULL}
 
 /* The file text in a malloc'd buffer (*text, NUL-terminated, *length
  * bytes). IES: LM-63-2019 or -2002, lines end in CR LF as the standard

@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 
 /* Symmetry value meaning "infer it from the horizontal range". */
 #define CDL_PHOTOMETRY_SYMMETRY_INFER ((cdl_photometry_symmetry)-1)

@@ -237,7 +237,7 @@ void cdl_polar_diagram_draw(cairo_t *cr, const cdl_polar_diagram *d)
 {
     const cdl_photometry *p = d->photometry;
     cdl_photometry_summary s;
-    cdl_photometry_summarize(p, &s);
+    cdl_photometry_summary_compute(p, &s);
     double per_klm = 0.0;
     int rings;
     double top = cdl_photometry_plot_scale(p, &per_klm, &rings);

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/sized_struct.h"
 #include "lights/photometry/photometry_internal.h"
 #include "radiometry/constants.h"
 
@@ -158,9 +159,17 @@ static void radiometric_figures(const cdl_photometry *p, cdl_photometry_summary 
     s->max_intensity = s->luminaire_max_intensity = cdl_candelas(NAN);
 }
 
-void cdl_photometry_summarize(const cdl_photometry *p, cdl_photometry_summary *s)
+void cdl_photometry_summarize(const cdl_photometry *p, cdl_photometry_summary *summary)
+{
+    cdl_photometry_summary all;
+    cdl_photometry_summary_compute(p, &all);
+    cdl_sized_struct_fill(summary, &all, sizeof all);
+}
+
+void cdl_photometry_summary_compute(const cdl_photometry *p, cdl_photometry_summary *s)
 {
     memset(s, 0, sizeof *s);
+    s->size = sizeof *s;
     const cdl_photometry_metadata *m = &p->meta;
     double flux = p->flux_lm; /* the table's integral in its own unit (lm, or W/sr x sr) */
     s->flux = cdl_lumens(flux);

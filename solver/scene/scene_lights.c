@@ -12,6 +12,7 @@
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "solver/scene/exr_image.h"
+#include "lights/photometry/photometry_metadata.h"
 
 static const char *luminaire_kind_name(cdl_luminaire_kind k)
 {
@@ -406,7 +407,7 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
             /* Copies of one entry ("array", "positions") share its file, read once. */
             ph = L->photometries[L->photometry_count - 1];
         } else {
-            cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+            cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
             st = cdl_photometry_read_file(sp->file, &opt, &ph, err);
             if (st != CDL_OK) {
                 cdl_error_prefix(err, "%s.file: ", sp->json_path);

@@ -20,6 +20,7 @@
 #include <stdlib.h>
 
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 
 static void require(int ok, const char *what, const char *detail)
 {
@@ -33,13 +34,13 @@ static void require(int ok, const char *what, const char *detail)
 static double table_flux(const cdl_photometry *p)
 {
     cdl_photometry_summary s;
-    cdl_photometry_summarize(p, &s);
+    cdl_photometry_summary_compute(p, &s);
     return s.radiometric ? s.radiant_flux.W : s.flux.lm;
 }
 
 static void round_trip(const cdl_photometry *p, int ldt, int version)
 {
-    cdl_photometry_write_options wo = CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT;
+    cdl_photometry_write_options wo = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
     wo.ies_version = version;
     char *text = NULL;
     size_t len = 0;
@@ -55,7 +56,7 @@ static void round_trip(const cdl_photometry *p, int ldt, int version)
         return;
     }
     require(st == CDL_OK, "a read table can be written", err.message);
-    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     ro.no_external_files = 1;
     cdl_photometry *q = NULL;
     st = cdl_photometry_read_memory(text, len, "written", &ro, &q, &err);
@@ -82,7 +83,7 @@ static void round_trip(const cdl_photometry *p, int ldt, int version)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     ro.no_external_files = 1;
     cdl_photometry *p = NULL;
     cdl_error err;
@@ -91,7 +92,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     }
     cdl_photometry_summary s;
-    cdl_photometry_summarize(p, &s);
+    cdl_photometry_summary_compute(p, &s);
     double flux = s.radiometric ? s.radiant_flux.W : s.flux.lm;
     require(isfinite(flux) && flux >= 0.0, "finite flux", NULL);
     require(!s.radiometric || isnan(s.flux.lm), "no lumens from a file in W/sr", NULL);

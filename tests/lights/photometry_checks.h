@@ -13,7 +13,7 @@
 /* Read from a string (strict or not); NULL and a message in *err on failure. */
 static inline cdl_photometry *pc_read_text(const char *name, const char *text, size_t len, int strict, cdl_error *err)
 {
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     o.strict = strict;
     cdl_photometry *p = NULL;
     cdl_error_clear(err);
@@ -23,7 +23,7 @@ static inline cdl_photometry *pc_read_text(const char *name, const char *text, s
 
 static inline cdl_photometry *pc_read_file(const char *path, int strict, cdl_error *err)
 {
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     o.strict = strict;
     cdl_photometry *p = NULL;
     cdl_error_clear(err);
@@ -35,7 +35,7 @@ static inline cdl_photometry *pc_read_file(const char *path, int strict, cdl_err
  * (NULL: the writer's default); NULL and a failed check when the writer fails. */
 static inline char *pc_write(const cdl_photometry *p, int ldt, int version, const char *name)
 {
-    cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT;
+    cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
     o.ies_version = version;
     o.file_name = name;
     char *text = NULL;

@@ -36,7 +36,7 @@ static cdl_photometry *make(const char *opening, double n)
     at += snprintf(text + at, sizeof text - (size_t)at, "\n0\n");
     for (int g = 0; g <= 180; ++g)
         at += snprintf(text + at, sizeof text - (size_t)at, "%.17g ", g < 90 ? 1000.0 * pow(cos(g * CDL_DEG_TO_RAD), n) : 0.0);
-    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     cdl_photometry *p = NULL;
     cdl_error err;
     CHECK_OK(cdl_photometry_read_memory(text, strlen(text), "bound.ies", &ro, &p, &err), &err);

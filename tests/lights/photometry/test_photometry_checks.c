@@ -9,6 +9,7 @@
 
 #include "check.h"
 #include "lights/photometry_checks.h"
+#include "lights/photometry/photometry_metadata.h"
 
 /* An EULUMDAT file: rotationally symmetric, 250/200/100/0 cd/klm at gamma
  * 0/30/60/90 of 1000 lm, all downward (DFF 100), LORL left 0 (not

@@ -200,7 +200,7 @@ static double wide(double h, double v)
  * = 0.0016 degree per side. Tolerance 0.005 degree on the full angle. */
 static void test_beam_and_field(void)
 {
-    cdl_photometry_summary s;
+    cdl_photometry_summary s = CDL_PHOTOMETRY_SUMMARY_INIT;
     double half90;
     if (summary_of(90.0, 15.0, 90.0, cos_cos2, &s, &half90)) {
         /* C0-C180: cos gamma = 0.5 at 60, = 0.1 at acos 0.1 on either side of nadir */
@@ -243,7 +243,7 @@ static void test_beam_and_field(void)
  * the same in both; a beam wider than 180 degrees: none. */
 static void test_spreads_about_peak(void)
 {
-    cdl_photometry_summary s;
+    cdl_photometry_summary s = CDL_PHOTOMETRY_SUMMARY_INIT;
     double half90;
     if (summary_of(0.0, 15.0, 90.0, batwing, &s, &half90)) {
         CHECK(s.spread_about_peak == 0);

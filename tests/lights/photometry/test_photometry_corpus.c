@@ -13,6 +13,7 @@
 
 #include "check.h"
 #include "lights/photometry_checks.h"
+#include "lights/photometry/photometry_metadata.h"
 
 #define DIR_ CANDELA_PHOTOMETRIC_DIR
 
@@ -166,7 +167,7 @@ static void test_every_file(void)
             cdl_photometry_release(strict);
             /* every figure of the summary is finite: luminous ones, or radiant ones for a file in W/sr */
             cdl_photometry_summary s;
-            cdl_photometry_summarize(p, &s);
+            cdl_photometry_summary_compute(p, &s);
             double flux = s.radiometric ? s.radiant_flux.W : s.flux.lm;
             double peak = s.radiometric ? s.max_radiant_intensity.W_sr : s.max_intensity.cd;
             CHECK_MSG(isfinite(flux) && flux > 0.0 && isfinite(s.downward_fraction) && isfinite(peak) &&
@@ -260,7 +261,7 @@ static char *write_as(const cdl_photometry *p, int ldt, int version) { return pc
 static double table_flux(const cdl_photometry *p)
 {
     cdl_photometry_summary s;
-    cdl_photometry_summarize(p, &s);
+    cdl_photometry_summary_compute(p, &s);
     return s.radiometric ? s.radiant_flux.W : s.flux.lm;
 }
 
@@ -288,7 +289,7 @@ static void test_round_trips(void)
             /* EULUMDAT has no radiometric units: refused, never written as cd/klm */
             char *ldt = NULL;
             size_t ldt_len;
-            cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT;
+            cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
             if (radiometric)
                 CHECK_MSG(cdl_photometry_format_ldt(p, &o, &ldt, &ldt_len, NULL, &err) == CDL_ERR_INPUT && !ldt &&
                               strstr(err.message, "mW/sr"),
@@ -353,7 +354,7 @@ static void test_radiometric_units(void)
         if (want) {
             CHECK(m->radiometric_scale == 1e-3);
             cdl_photometry_summary s;
-            cdl_photometry_summarize(p, &s);
+            cdl_photometry_summary_compute(p, &s);
             /* The same table built as candela (cdl_photometry_create_type_c) integrates to
              * lumens; read from a file in mW/sr, that integral is milliwatts, and no lumens. */
             cdl_photometry_table t;

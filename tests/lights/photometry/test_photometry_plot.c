@@ -103,7 +103,7 @@ int main(void)
     cdl_photometry_release(p);
 
     p = table(CDL_PHOTOMETRIC_TYPE_C, &c0, 1, gb, 181, batwing);
-    cdl_photometry_summary s;
+    cdl_photometry_summary s = CDL_PHOTOMETRY_SUMMARY_INIT;
     cdl_photometry_summarize(p, &s);
     CHECK(!s.spread_about_peak);
     /* 0.01 degree: the table samples the parabola every half degree, and linear
