@@ -106,13 +106,13 @@ static cdl_status check_options(const cdl_ugr_table_options *o, cdl_error *err)
 {
     double shr = o->spacing_to_height;
     if (!(shr > 0.0) || !isfinite(shr) || shr > 2.0 || 1.0 / shr > 1000.0)
-        return cdl_error_set(err, CDL_ERR_INPUT, "UGR table: spacing to height ratio: expected 0.001 to 2, found %g",
+        return cdl_error_set(err, CDL_ERR_USAGE, "UGR table: spacing to height ratio: expected 0.001 to 2, found %g",
                              shr);
     for (size_t i = 0; i < CDL_UGR_TABLE_ROOMS; ++i)
         for (int k = 0; k < 2; ++k) {
             double n = cdl_ugr_table_rooms[i][k] / shr;
             if (fabs(n - nearbyint(n)) > 1e-9 * n)
-                return cdl_error_set(err, CDL_ERR_INPUT,
+                return cdl_error_set(err, CDL_ERR_USAGE,
                                      "UGR table: spacing to height ratio %g does not divide the %gH side of the "
                                      "standard rooms into whole spacings (0.25, 0.5, 1 or 2 do)",
                                      shr, cdl_ugr_table_rooms[i][k]);

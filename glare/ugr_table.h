@@ -49,7 +49,7 @@
  * Units: metres, lumens, cd/m^2. The computation reads the photometry
  * only: thread-safe. Errors: CDL_ERR_INPUT when the file cannot be rated
  * (no luminous opening, radiometric data, no light), the message saying
- * why; CDL_ERR_INTERNAL for memory.
+ * why; CDL_ERR_USAGE for options out of range; CDL_ERR_INTERNAL for memory.
  */
 #ifndef CANDELA_GLARE_UGR_TABLE_H
 #define CANDELA_GLARE_UGR_TABLE_H

@@ -9,12 +9,13 @@
 
 #include "cli_args.h"
 #include "command.h"
+#include "info_ugr.h"
 #include "lights/photometry/photometry.h"
 #include "solver/scene/scene.h"
 
 static void print_help(FILE *out)
 {
-    fputs("usage: candela info LUMINAIRE [--json] [--strict] [--plot OUT.svg]\n"
+    fputs("usage: candela info LUMINAIRE [--json] [--strict] [--plot OUT.svg] [--ugr [--ugr-shr R]]\n"
           "       candela info FILE_OR_FOLDER... [--json] [--strict]\n"
           "\n"
           "Reads an IES LM-63 (any version) or EULUMDAT file and prints a summary:\n"
@@ -27,6 +28,22 @@ static void print_help(FILE *out)
           "  --strict   treat warnings (inconsistent header values) as errors\n"
           "  --plot OUT.svg  also draw the polar intensity diagram (C0-C180 solid,\n"
           "             C90-C270 dashed, cd/klm, nadir down) into OUT.svg\n"
+          "  --ugr      also the luminaire's UGR table as catalogues print it (CIE\n"
+          "             190:2010): the 19 standard rooms 2H x 2H ... 12H x 8H (X across\n"
+          "             the line of sight, Y along it, H = 2 m from the eye up to the\n"
+          "             luminaires), the luminaires at spacing 0.25 H over the whole\n"
+          "             ceiling, viewed crosswise (their C0 plane along the line of sight)\n"
+          "             and endwise, reflectances ceiling/walls/floor 0.70/0.50/0.20,\n"
+          "             0.70/0.30/0.20, 0.50/0.50/0.20, 0.50/0.30/0.20, 0.30/0.30/0.20;\n"
+          "             UGR = 8 log10((0.25 / Lb) sum L^2 omega / p^2) (CIE 117:1995) with\n"
+          "             L = I / A the luminance of the file's luminous opening towards\n"
+          "             the eye, omega = A / r^2, p Guth's position index (CIE 117\n"
+          "             Table 4.1), and Lb the walls' indirect illuminance over pi by\n"
+          "             CIE 190's flux transfer between ceiling, walls and floor. The\n"
+          "             luminaire's real flux (\"corrected\" table). A file without a\n"
+          "             luminous opening (a point) cannot be rated: exit 1.\n"
+          "  --ugr-shr R  the spacing to height ratio of the table (default 0.25; CIE\n"
+          "             190's own example uses 1)\n"
           "\n"
           "Several files, or folders (every .ies and .ldt file in them and their\n"
           "subfolders, in name order): one line per file, then how many were read,\n"
@@ -54,7 +71,11 @@ static void print_help(FILE *out)
           "input_watts, ballast_factor, output_factor, tilt, opening, keywords,\n"
           "spread_about (\"nadir\" or \"peak\", with spread_axis and the angles'\n"
           "keys vertical_plane and across), radiometric (with radiant_flux_w and\n"
-          "max_radiant_intensity_w_sr), warnings.\n"
+          "max_radiant_intensity_w_sr), warnings; with --ugr, ugr_table (method,\n"
+          "spacing_to_height, height_m, flux_lm, output_factor, reflectances, and\n"
+          "rooms: x_h, y_h, luminaires, room_index, direct_floor_lm,\n"
+          "direct_walls_lm, direct_ceiling_lm, background_cd_m2, crosswise and\n"
+          "endwise, five values each in the order of reflectances).\n"
           "\n"
           "Exit status: 0 success, 1 bad input (any file), 2 usage error.\n", out);
 }
@@ -517,7 +538,11 @@ static int run_many(const file_list *files, int json, const cdl_photometry_read_
 
 static int run(int argc, char **argv)
 {
-    cdl_cli_option options[] = {{"json", 0, 0, 0, NULL}, {"strict", 0, 0, 0, NULL}, {"plot", 0, 1, 0, NULL}};
+    cdl_cli_option options[] = {{"json", 0, 0, 0, NULL},
+                                {"strict", 0, 0, 0, NULL},
+                                {"plot", 0, 1, 0, NULL},
+                                {"ugr", 0, 0, 0, NULL},
+                                {"ugr-shr", 0, 1, 0, NULL}};
     const size_t count = sizeof options / sizeof options[0];
     cdl_cli_result r;
     if (cdl_cli_scan(argc, argv, options, count, &r) != 0) {
@@ -537,6 +562,14 @@ static int run(int argc, char **argv)
     ro.strict = cdl_cli_find(options, count, "strict")->present;
     int json = cdl_cli_find(options, count, "json")->present;
     const cdl_cli_option *plot = cdl_cli_find(options, count, "plot");
+    int ugr = cdl_cli_find(options, count, "ugr")->present;
+    const cdl_cli_option *shr = cdl_cli_find(options, count, "ugr-shr");
+    cdl_ugr_table_options uo = CDL_UGR_TABLE_OPTIONS_DEFAULT;
+    if (shr->present && !ugr) {
+        fprintf(stderr, "candela info: --ugr-shr: goes with --ugr\n(see 'candela info --help')\n");
+        return CDL_EXIT_USAGE;
+    }
+    if (shr->present && cdl_info_ugr_parse_shr(shr->value, &uo.spacing_to_height) != 0) return CDL_EXIT_USAGE;
     /* Folders, and more than one file, are a batch: a line per file. */
     file_list files = {0};
     int batch = r.positional_count > 1;
@@ -550,10 +583,10 @@ static int run(int argc, char **argv)
             return CDL_EXIT_INTERNAL;
         }
     }
-    if (batch && plot->present) {
+    if (batch && (plot->present || ugr)) {
         list_free(&files);
-        fprintf(stderr, "candela info: --plot: expected one luminaire file, found %zu files and folders\n"
-                        "(see 'candela info --help')\n", r.positional_count);
+        fprintf(stderr, "candela info: --%s: expected one luminaire file, found %zu files and folders\n"
+                        "(see 'candela info --help')\n", plot->present ? "plot" : "ugr", r.positional_count);
         return CDL_EXIT_USAGE;
     }
     if (batch) {
@@ -574,6 +607,12 @@ static int run(int argc, char **argv)
     cdl_photometry_summary s;
     cdl_photometry_summarize(p, &s);
     int rc = CDL_EXIT_OK;
+    cdl_ugr_table table;
+    if (ugr && (st = cdl_ugr_table_compute(p, &uo, &table, &err)) != CDL_OK) {
+        fprintf(stderr, "candela info: %s: %s\n", path, err.message);
+        cdl_photometry_release(p);
+        return (int)st;
+    }
     if (plot->present) {
         const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
         const char *name = m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT ? m->ldt_luminaire_name
@@ -588,8 +627,17 @@ static int run(int argc, char **argv)
             return (int)st;
         }
     }
-    if (json) rc = put_json(info_json(path, p, &s));
-    else print_text(path, p, &s);
+    if (json) {
+        cJSON *j = info_json(path, p, &s);
+        if (j && ugr) cJSON_AddItemToObject(j, "ugr_table", cdl_info_ugr_json(&table));
+        rc = put_json(j);
+    } else {
+        print_text(path, p, &s);
+        if (ugr) {
+            printf("\n");
+            cdl_info_ugr_print(&table, stdout);
+        }
+    }
     cdl_photometry_release(p);
     if (fflush(stdout) != 0) {
         fprintf(stderr, "candela info: cannot write the output\n");
