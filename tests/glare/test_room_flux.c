@@ -4,15 +4,10 @@
 #include <math.h>
 
 #include "check.h"
+#include "gauss_legendre.h"
 #include "glare/room_flux.h"
 #include "polygon_factor.h"
 #include "radiometry/constants.h"
-
-/* 8-point Gauss-Legendre on [0, 1] */
-static const double gx[8] = {0.019855071751231856, 0.101666761293186631, 0.237233795041835507, 0.408282678752175098,
-                             0.591717321247824902, 0.762766204958164493, 0.898333238706813369, 0.980144928248768144};
-static const double gw[8] = {0.050614268145188130, 0.111190517226687235, 0.156853322938943644, 0.181341891689180991,
-                             0.181341891689180991, 0.156853322938943644, 0.111190517226687235, 0.050614268145188130};
 
 /* The floor-to-ceiling factor as the mean over the floor of Lambert's
  * point-to-rectangle factor (its contour integral), by a product
@@ -26,8 +21,8 @@ static double floor_to_ceiling_by_quadrature(double X, double Y, double H)
         for (int pj = 0; pj < 8; ++pj)
             for (int a = 0; a < 8; ++a)
                 for (int b = 0; b < 8; ++b) {
-                    cdl_vec3 p = {X * (pi + gx[a]) / 8.0, Y * (pj + gx[b]) / 8.0, 0.0};
-                    sum += gw[a] * gw[b] / 64.0 * lambert_polygon(ceiling, 4, 1.0, p, cdl_vec3_make(0, 0, 1)) / CDL_PI;
+                    cdl_vec3 p = {X * (pi + gl8_x[a]) / 8.0, Y * (pj + gl8_x[b]) / 8.0, 0.0};
+                    sum += gl8_w[a] * gl8_w[b] / 64.0 * lambert_polygon(ceiling, 4, 1.0, p, cdl_vec3_make(0, 0, 1)) / CDL_PI;
                 }
     return sum;
 }
