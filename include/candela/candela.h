@@ -21,6 +21,7 @@
  *   solver/progress.h             progress reports and cancelling of long calls
  *   solver/grid/grid.h            a grid's calculation points (part of the results)
  *   solver/solution.h             results in memory: E, direct, indirect, stderr per point
+ *   solver/solve_options.h        the options of a solve
  *   solver/solve.h                solving a scene
  *   solver/output/solution_write.h  writing a solve's files (CSV, EXR, PNG, summary.json)
  *
@@ -100,6 +101,7 @@ extern "C" {
 #include "solver/progress.h"
 #include "solver/grid/grid.h"
 #include "solver/solution.h"
+#include "solver/solve_options.h"
 #include "solver/solve.h"
 #include "solver/output/solution_write.h"
 

@@ -1,0 +1,130 @@
+/* integrator.h - the solve's state, one grid's job, and the integrators that compute it.
+ *
+ * A solve runs in three steps, as pbrt's integrators do (solve.c):
+ *  1. plan (solve_plan.c): the scene's geometry and lights are built once,
+ *     the method is chosen, every grid is built and checked, and each
+ *     grid's interreflection method is decided, all before any long work;
+ *  2. integrate: each grid, as a cdl_grid_job, goes through the table of
+ *     integrators in order; each integrator says whether it applies to the
+ *     job and, when it does, adds its part (direct light, interreflected
+ *     light by the cache or by paths, the sampled part of the vertical
+ *     outputs) to the job's buffers and its facts to the job for the plan;
+ *  3. finish (solve_finish.c): each grid's parts are combined (E = E_direct
+ *     + E_indirect, its standard error from the two variances) and checked;
+ *     then what the solve says besides its numbers (warnings, installed
+ *     power, the cache file, the plan's JSON from plan_json.c).
+ *
+ * A variance lives in a variance buffer of the job (var_direct,
+ * var_indirect), never in a result array. Integrators do not write the
+ * plan's JSON: they leave counts and routes in the job, and plan_json.c
+ * narrates them. A new method (glare at observers, surface maps, daylight
+ * coefficients) is a new entry of the table, not code in solve.c.
+ *
+ * Not public. Thread safety: one state per solve; integrators run their
+ * own worker threads (pool.h) and return when those are done.
+ */
+#ifndef CANDELA_SOLVER_INTEGRATE_INTEGRATOR_H
+#define CANDELA_SOLVER_INTEGRATE_INTEGRATOR_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "base/error.h"
+#include "solver/direct/direct.h"
+#include "solver/icache/icache.h"
+#include "solver/icache/icache_file.h"
+#include "solver/pathtrace/pathtrace.h"
+#include "solver/scene/scene.h"
+#include "solver/scene/scene_lights.h"
+#include "solver/solution.h"
+#include "solver/solve_options.h"
+#include "solver/transport/vertical_sampled.h"
+
+/* The irradiance-cache file of a solve (solve_cache.c). */
+typedef struct cdl_solve_cache {
+    const char *path;                 /* NULL: no file asked for */
+    cdl_icache_key key;
+    size_t *grids;                    /* the grids the irradiance cache solves */
+    size_t count;
+    int reused;                       /* 1: their records were read from the file */
+    uint64_t records_read;
+} cdl_solve_cache;
+
+/* What planning decided for one grid. */
+typedef struct cdl_grid_plan {
+    uint64_t key;                     /* keys its random numbers: a hash of its name */
+    cdl_method method;                /* its interreflection: ICACHE or PATHTRACE; DIRECT when none */
+    double score;                     /* points x target, which chose the method under "auto" */
+    int vertical_sampled;             /* its vertical outputs need the sampled part */
+} cdl_grid_plan;
+
+/* Everything a solve holds from planning to finishing. */
+typedef struct cdl_solve_state {
+    const cdl_scene *scene;           /* borrowed */
+    cdl_solve_options options;
+    cdl_solution *out;                /* borrowed: the results being filled */
+    double target;                    /* relative standard error asked of E per point (computed once) */
+    int indirect;                     /* 1: interreflection is modelled */
+    const char *reflector;            /* the first surface that reflects (its JSON path), NULL when none */
+    double reflector_rho;
+    int threads;
+
+    cdl_scene_geometry *geometry;     /* owned */
+    size_t pieces;                    /* its surface pieces (0: nothing can occlude or reflect) */
+    cdl_occluder_index *occluders;    /* owned; NULL without geometry */
+    cdl_scene_lights lights;          /* owned */
+
+    cdl_direct_context direct;
+    cdl_pathtrace_context pathtrace;
+    cdl_icache_context icache;
+    cdl_vertical_context vertical;
+
+    cdl_grid_plan *grids;             /* per grid of the scene */
+    cdl_icache_records *records;      /* per grid: the cache's records (read from the file or gathered) */
+    cdl_solve_cache cache;
+
+    /* Totals over the grids, for the plan and the solution. */
+    cdl_direct_sample_stats direct_stats;
+    cdl_path_stats pathtrace_stats;
+    cdl_icache_stats icache_stats;
+    cdl_path_stats vertical_stats;
+
+    /* Scratch reused from grid to grid (per light). */
+    cdl_light_strategy *strategies;
+    cdl_direct_route_tally *routes;
+
+    struct cdl_plan_json *plan;       /* owned: the plan's JSON as it is narrated (plan_json.h) */
+} cdl_solve_state;
+
+/* One grid going through the integrators. */
+typedef struct cdl_grid_job {
+    size_t index;                     /* in the scene's grids */
+    const cdl_grid_spec *spec;
+    cdl_grid_solution *gs;            /* its results (borrowed from the solution) */
+    const cdl_grid_plan *plan;
+    double *var_direct;               /* per point: variance of E_direct (lx^2) */
+    double *var_indirect;             /* per point: variance of E_indirect (lx^2); 0 without interreflection */
+    unsigned char *on_surface;        /* per point, 1 where it lies on a surface (vertical outputs); NULL */
+    size_t on_surface_count;
+    /* Facts for the plan. */
+    uint64_t records, passes, alone;  /* icache: records gathered for this grid, placement passes, own records */
+    uint64_t paths;                   /* pathtrace: paths traced for this grid */
+    uint64_t vertical_rays;           /* the vertical outputs' sampled part */
+} cdl_grid_job;
+
+typedef struct cdl_integrator {
+    const char *name;
+    int (*applies)(const cdl_solve_state *state, const cdl_grid_job *job);
+    cdl_status (*run)(cdl_solve_state *state, cdl_grid_job *job, cdl_error *err);
+} cdl_integrator;
+
+/* The integrators, in the order a grid goes through them. */
+extern const cdl_integrator cdl_integrator_direct;      /* integrate_direct.c */
+extern const cdl_integrator cdl_integrator_icache;      /* integrate_icache.c */
+extern const cdl_integrator cdl_integrator_pathtrace;   /* integrate_pathtrace.c */
+extern const cdl_integrator cdl_integrator_vertical;    /* integrate_vertical.c */
+
+/* "grid NAME" or "grid NAME: WHAT", the stage a progress report names. */
+void cdl_grid_job_stage(const cdl_grid_job *job, const char *what, char *out, size_t size);
+
+#endif
