@@ -3,10 +3,7 @@
 #include <string.h>
 
 #include "glare/glare_source.h"
-#include "lights/emitters/spherical_triangle.h"
 #include "radiometry/constants.h"
-
-#define ELLIPSE_SIDES 256
 
 void cdl_glare_observer_coordinates(const cdl_glare_observer *o, cdl_vec3 q, double *R, double *T, double *H)
 {
@@ -17,92 +14,92 @@ void cdl_glare_observer_coordinates(const cdl_glare_observer *o, cdl_vec3 q, dou
     *H = d.z;
 }
 
-/* Solid angle at the eye of the parallelogram c +- u +- v (eye-relative c). */
-static double parallelogram(cdl_vec3 c, cdl_vec3 u, cdl_vec3 v)
+static void add(cdl_glare_parts *parts, cdl_glare_piece_kind kind, cdl_vec3 c, cdl_vec3 u, cdl_vec3 v)
 {
-    cdl_vec3 a = cdl_vec3_sub(cdl_vec3_sub(c, u), v), b = cdl_vec3_sub(cdl_vec3_add(c, u), v);
-    cdl_vec3 d = cdl_vec3_add(cdl_vec3_add(c, u), v), e = cdl_vec3_add(cdl_vec3_sub(c, u), v);
-    return cdl_triangle_solid_angle(a, b, d) + cdl_triangle_solid_angle(a, d, e);
+    cdl_glare_piece p = {kind, c, u, v, 0};
+    parts->piece[parts->count++] = p;
 }
 
-/* Solid angle of the ellipse c + cos(t) u + sin(t) v (semi-axes u, v): a
- * fan of a regular polygon scaled to the ellipse's area (its radius times
- * sqrt((2 pi / n) / sin(2 pi / n))), whose solid angle then differs from
- * the curve's by O(n^-4) of it. */
-static double ellipse(cdl_vec3 c, cdl_vec3 u, cdl_vec3 v)
+/* A face of a solid, seen only from outside: u x v along `outward`. */
+static void add_face(cdl_glare_parts *parts, cdl_vec3 c, cdl_vec3 u, cdl_vec3 v, cdl_vec3 outward)
 {
-    double step = CDL_TWO_PI / ELLIPSE_SIDES, k = sqrt(step / sin(step)), sum = 0.0;
-    cdl_vec3 prev = cdl_vec3_add(c, cdl_vec3_scale(u, k));
-    for (int i = 1; i <= ELLIPSE_SIDES; ++i) {
-        double t = i * step;
-        cdl_vec3 next = cdl_vec3_add(c, cdl_vec3_add(cdl_vec3_scale(u, k * cos(t)), cdl_vec3_scale(v, k * sin(t))));
-        sum += cdl_triangle_solid_angle(c, prev, next);
-        prev = next;
-    }
-    return sum;
+    if (cdl_vec3_dot(cdl_vec3_cross(u, v), outward) < 0.0) v = cdl_vec3_neg(v);
+    add(parts, CDL_GLARE_PIECE_PARALLELOGRAM, c, u, v);
+    parts->piece[parts->count - 1].one_sided = 1;
 }
 
-/* Solid angle of a box's faces the eye sees (it lies outside the box, so
- * they do not overlap): local half sizes h, eye at `eye` in the box's
- * frame about its centre; each side face luminous from the bottom up to its
- * own height. */
-static double box(const cdl_glare_luminaire *l, const cdl_luminous_opening *o, cdl_vec3 c)
+/* A box's faces about its centre c (axes ax, half sizes h), each side
+ * luminous from the bottom up to its own height (side k faces C0, C90,
+ * C180, C270); the eye sees at most three, which do not overlap. */
+static void box_parts(const cdl_vec3 ax[3], cdl_vec3 c, const cdl_luminous_opening *o, cdl_glare_parts *parts)
 {
     double h[3] = {0.5 * o->length_m, 0.5 * o->width_m, 0.0};
     for (int k = 0; k < 4; ++k) h[2] = fmax(h[2], 0.5 * cdl_luminous_opening_box_side_height_m(o, k));
-    /* the eye in the box's frame (c: the centre relative to the eye) */
-    double e[3] = {-cdl_vec3_dot(c, l->axis[0]), -cdl_vec3_dot(c, l->axis[1]), -cdl_vec3_dot(c, l->axis[2])};
-    double sum = 0.0;
-    for (int axis = 0; axis < 3; ++axis) {
-        if (!(fabs(e[axis]) > h[axis])) continue;
-        double side = e[axis] > 0.0 ? 1.0 : -1.0;
-        int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-        cdl_vec3 centre = cdl_vec3_add(c, cdl_vec3_scale(l->axis[axis], side * h[axis]));
-        cdl_vec3 u = cdl_vec3_scale(l->axis[a1], h[a1]), v = cdl_vec3_scale(l->axis[a2], h[a2]);
-        if (axis < 2) {
-            /* a side: luminous from the bottom (-h[2]) to its own top */
-            int which = axis == 0 ? (side > 0.0 ? 0 : 2) : (side > 0.0 ? 1 : 3);
-            double top = -h[2] + cdl_luminous_opening_box_side_height_m(o, which);
-            cdl_vec3 z = l->axis[2];
-            double mid = 0.5 * (top - h[2]) + 0.0, half = 0.5 * (top + h[2]);
-            centre = cdl_vec3_add(centre, cdl_vec3_scale(z, mid));
-            if (axis == 0) v = cdl_vec3_scale(z, half); /* a1 = y, a2 = z */
-            else u = cdl_vec3_scale(z, half);           /* a1 = z, a2 = x */
-            if (!(half > 0.0)) continue;
-        }
-        sum += parallelogram(centre, u, v);
+    for (int z = -1; z <= 1; z += 2)
+        add_face(parts, cdl_vec3_madd(c, z * h[2], ax[2]), cdl_vec3_scale(ax[0], h[0]), cdl_vec3_scale(ax[1], h[1]),
+                 cdl_vec3_scale(ax[2], z));
+    for (int k = 0; k < 4; ++k) {
+        int axis = k % 2;           /* 0: an x face (C0, C180), 1: a y face (C90, C270) */
+        double side = k < 2 ? 1.0 : -1.0;
+        double top = -h[2] + cdl_luminous_opening_box_side_height_m(o, k), half = 0.5 * (top + h[2]);
+        if (!(half > 0.0)) continue;
+        cdl_vec3 centre = cdl_vec3_madd(cdl_vec3_madd(c, side * h[axis], ax[axis]), 0.5 * (top - h[2]), ax[2]);
+        add_face(parts, centre, cdl_vec3_scale(ax[1 - axis], h[1 - axis]), cdl_vec3_scale(ax[2], half),
+                 cdl_vec3_scale(ax[axis], side));
     }
-    return sum;
 }
 
-/* The solid angle of the opening at the eye (c: its centre relative to the
- * eye), *exact 1 where it is exact. */
-static double opening_solid_angle(const cdl_glare_luminaire *l, const cdl_luminous_opening *o, cdl_vec3 c,
-                                  double projected_area, int *exact)
+/* A disk about c facing the eye (unit direction to it: to_eye) of radius r. */
+static void facing_disk(cdl_vec3 c, cdl_vec3 to_eye, double r, cdl_glare_parts *parts)
 {
-    *exact = 1;
+    cdl_vec3 a = fabs(to_eye.z) < 0.9 ? cdl_vec3_make(0, 0, 1) : cdl_vec3_make(1, 0, 0);
+    cdl_vec3 s = cdl_vec3_normalize(cdl_vec3_cross(a, to_eye)), t = cdl_vec3_cross(to_eye, s);
+    add(parts, CDL_GLARE_PIECE_ELLIPSE, c, cdl_vec3_scale(s, r), cdl_vec3_scale(t, r));
+}
+
+void cdl_glare_opening_parts(const cdl_glare_luminaire *l, cdl_vec3 eye, cdl_glare_parts *parts, int *exact)
+{
+    const cdl_luminous_opening *o = &cdl_photometry_get_metadata(l->photometry)->opening;
     const cdl_vec3 *ax = l->axis;
+    cdl_vec3 c = l->position;
     double L = o->length_m, W = o->width_m, Hh = o->height_m;
+    parts->count = 0;
+    *exact = 1;
     switch (o->shape) {
     case CDL_LUMINOUS_SHAPE_RECTANGLE:
-        return parallelogram(c, cdl_vec3_scale(ax[0], 0.5 * L), cdl_vec3_scale(ax[1], 0.5 * W));
-    case CDL_LUMINOUS_SHAPE_CIRCLE: return ellipse(c, cdl_vec3_scale(ax[0], 0.5 * W), cdl_vec3_scale(ax[1], 0.5 * W));
+        add(parts, CDL_GLARE_PIECE_PARALLELOGRAM, c, cdl_vec3_scale(ax[0], 0.5 * L), cdl_vec3_scale(ax[1], 0.5 * W));
+        return;
+    case CDL_LUMINOUS_SHAPE_CIRCLE:
+        add(parts, CDL_GLARE_PIECE_ELLIPSE, c, cdl_vec3_scale(ax[0], 0.5 * W), cdl_vec3_scale(ax[1], 0.5 * W));
+        return;
     case CDL_LUMINOUS_SHAPE_ELLIPSE:
-        return ellipse(c, cdl_vec3_scale(ax[0], 0.5 * L), cdl_vec3_scale(ax[1], 0.5 * W));
+        add(parts, CDL_GLARE_PIECE_ELLIPSE, c, cdl_vec3_scale(ax[0], 0.5 * L), cdl_vec3_scale(ax[1], 0.5 * W));
+        return;
     case CDL_LUMINOUS_SHAPE_VERTICAL_CIRCLE:
     case CDL_LUMINOUS_SHAPE_VERTICAL_ELLIPSE:
-        return ellipse(c, cdl_vec3_scale(ax[1], 0.5 * W), cdl_vec3_scale(ax[2], 0.5 * Hh));
-    case CDL_LUMINOUS_SHAPE_BOX: return box(l, o, c);
-    case CDL_LUMINOUS_SHAPE_SPHERE: {
-        double d = cdl_vec3_length(c), a = 0.5 * W;
-        /* the cap a sphere of radius a fills at distance d: 2 pi (1 - cos theta), sin theta = a / d */
-        return d > a ? CDL_TWO_PI * (1.0 - sqrt(1.0 - (a / d) * (a / d))) : 0.0;
+        add(parts, CDL_GLARE_PIECE_ELLIPSE, c, cdl_vec3_scale(ax[1], 0.5 * W), cdl_vec3_scale(ax[2], 0.5 * Hh));
+        return;
+    case CDL_LUMINOUS_SHAPE_BOX: box_parts(ax, c, o, parts); return;
+    case CDL_LUMINOUS_SHAPE_POINT:
+    case CDL_LUMINOUS_SHAPE_UNKNOWN: return;
+    default: break;
     }
-    default:
-        *exact = 0;
-        /* CIE 117:1995 4.5: omega = A_p / r^2 */
-        return projected_area / cdl_vec3_length_squared(c);
+    cdl_vec3 w = cdl_vec3_sub(eye, c);
+    double d = cdl_vec3_length(w);
+    if (!(d > 0.0)) return;
+    cdl_vec3 to_eye = cdl_vec3_scale(w, 1.0 / d);
+    if (o->shape == CDL_LUMINOUS_SHAPE_SPHERE) {
+        /* the tangent cone of a sphere of radius a at distance d cuts the
+         * plane through its centre in a circle of radius a d / sqrt(d^2 - a^2) */
+        double a = 0.5 * W;
+        if (d > a) facing_disk(c, to_eye, a * d / sqrt(d * d - a * a), parts);
+        return;
     }
+    /* cylinders and ellipsoids: the disk of their projected area */
+    cdl_vec3 local = cdl_vec3_make(cdl_vec3_dot(w, ax[0]), cdl_vec3_dot(w, ax[1]), cdl_vec3_dot(w, ax[2]));
+    double A = cdl_luminous_opening_projected_area(o, local);
+    if (A > 0.0) facing_disk(c, to_eye, sqrt(A / CDL_PI), parts);
+    *exact = 0;
 }
 
 void cdl_glare_source_evaluate(const cdl_glare_luminaire *l, const cdl_glare_observer *o, cdl_glare_source *s)
@@ -120,8 +117,11 @@ void cdl_glare_source_evaluate(const cdl_glare_luminaire *l, const cdl_glare_obs
     s->intensity = cdl_candelas(l->scale * cdl_photometry_intensity(l->photometry, local).cd);
     const cdl_luminous_opening *op = &cdl_photometry_get_metadata(l->photometry)->opening;
     s->projected_area_m2 = cdl_luminous_opening_projected_area(op, local);
-    if (s->projected_area_m2 > 0.0) s->luminance = cdl_nits(s->intensity.cd / s->projected_area_m2);
-    if (s->projected_area_m2 > 0.0)
-        s->omega_sr = opening_solid_angle(l, op, cdl_vec3_neg(w), s->projected_area_m2, &s->omega_exact);
+    if (!(s->projected_area_m2 > 0.0)) return;
+    /* L = I / A_p: the luminance of the source seen as a whole */
+    s->luminance = cdl_nits(s->intensity.cd / s->projected_area_m2);
+    cdl_glare_parts parts;
+    cdl_glare_opening_parts(l, o->eye, &parts, &s->omega_exact);
+    s->omega_sr = cdl_glare_parts_solid_angle(&parts, o->eye, NULL);
     if (s->zone == CDL_GLARE_IN_VIEW) s->term = cdl_ugr_term_make(s->luminance, 0.0, s->omega_sr, 0.0, s->p);
 }

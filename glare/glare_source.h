@@ -26,6 +26,7 @@
 #ifndef CANDELA_GLARE_GLARE_SOURCE_H
 #define CANDELA_GLARE_GLARE_SOURCE_H
 
+#include "glare/glare_parts.h"
 #include "glare/position_index.h"
 #include "glare/ugr.h"
 #include "lights/photometry/photometry.h"
@@ -56,6 +57,16 @@ typedef struct cdl_glare_source {
     double p;                  /* position index; 0 out of view */
     cdl_ugr_term term;         /* L^2 omega / p^2; 0 out of view or dark */
 } cdl_glare_source;
+
+/* The luminous parts of a goniometric luminaire's opening in the world as
+ * an eye sees them (glare_parts.h): a flat opening (rectangle, circle,
+ * ellipse, LM-63-2019's vertical circle or ellipse) as itself; a box as
+ * its six faces, each side at its luminous height; a sphere as the disk
+ * across its tangent cone through its centre (the same solid angle,
+ * exactly); the other solids (cylinders, ellipsoids) as the disk facing
+ * the eye of their projected area, *exact = 0 (then omega = A_p / r^2 as
+ * CIE 117 4.5 takes it); *exact = 1 otherwise. No parts for a point. */
+void cdl_glare_opening_parts(const cdl_glare_luminaire *luminaire, cdl_vec3 eye, cdl_glare_parts *parts, int *exact);
 
 /* The source as the observer sees it. */
 void cdl_glare_source_evaluate(const cdl_glare_luminaire *luminaire, const cdl_glare_observer *observer,

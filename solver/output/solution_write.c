@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "base/atomic_file.h"
+#include "solver/output/glare_output.h"
 #include "solver/output/grid_result.h"
 
 /* Errors of the file system that are the machine's, not the path's. */
@@ -192,6 +193,14 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
     cJSON_AddNumberToObject(root, "rays", (double)sol->rays);
     cJSON *plan = cJSON_Parse(sol->plan_json ? sol->plan_json : "{}");
     if (plan) cJSON_AddItemToObject(root, "plan", plan);
+    if (scene->observer_count > 0) {
+        cJSON *glare = cdl_glare_summary_json(scene, sol);
+        if (!glare) {
+            cJSON_Delete(root);
+            return cdl_error_out_of_memory(err);
+        }
+        cJSON_AddItemToObject(root, "glare", glare);
+    }
     cJSON *warnings = cJSON_AddArrayToObject(root, "warnings");
     for (size_t w = 0; w < sol->warning_count; ++w) cJSON_AddItemToArray(warnings, cJSON_CreateString(sol->warnings[w]));
     char *text = cJSON_Print(root);
@@ -259,6 +268,11 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
         free(csv);
         free(exr);
         free(png);
+    }
+    if (st == CDL_OK && scene->observer_count > 0) {
+        char *glare = join_path(out_dir, "glare", ".csv");
+        st = glare ? cdl_glare_write_csv(scene, sol, glare, err) : cdl_error_out_of_memory(err);
+        free(glare);
     }
     if (st == CDL_OK) {
         char *summary = join_path(out_dir, "summary", ".json");
