@@ -62,7 +62,8 @@ static void test_openings_under_a_sky(void)
     snprintf(json, sizeof json,
              "{\"version\": 1, \"luminaires\": ["
              "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [%g, %g, 3.0]},"
-             "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [%g, %g, 3.0]},"
+             "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [%g, %g, 3.0],"
+             " \"maintenance_factor\": 0.8},"
              "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [%g, %g, 3.0]},"
              "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [0.5, -1.0, 3.0]},"
              "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [-10, 1.0, 3.0]},"
@@ -88,13 +89,14 @@ static void test_openings_under_a_sky(void)
         /* luminaire x (C0, LM-63 length) along world x, y (width) along y */
         double omega = rect_omega(T - 0.5 * len, T + 0.5 * len, R - 0.5 * w, R + 0.5 * w, H);
         CHECK(s->luminaire == k);
-        /* the table interpolates the cosine at 0.5 degree steps: 1e-5 */
-        CHECK_REL(s->L_cd_m2, I0 / (w * len), 1e-5);
+        /* the table interpolates the cosine at 0.5 degree steps: 1e-5; the
+         * second luminaire's maintenance factor 0.8 dims it */
+        double L = (k == 1 ? 0.8 : 1.0) * I0 / (w * len);
+        CHECK_REL(s->L_cd_m2, L, 1e-5);
         /* two closed forms of one solid angle: rounding only */
         CHECK_REL(s->omega_sr, omega, 1e-12);
         CHECK(s->omega_stderr_sr == 0.0); /* nothing can hide it: exact */
         CHECK_ABS(s->p, in_view[k].p, 1e-12);
-        double L = I0 / (w * len);
         sum += L * L * omega / (in_view[k].p * in_view[k].p);
     }
     double expected = 8.0 * log10(0.25 / Lsky * sum);
@@ -110,6 +112,42 @@ static void test_openings_under_a_sky(void)
         CHECK(r->excluded[0].luminaire == 3 && strcmp(r->excluded[0].reason, "behind the eye") == 0);
         CHECK(r->excluded[1].luminaire == 4 && strcmp(r->excluded[1].reason, "beyond T/R = 3") == 0);
         CHECK(r->excluded[2].luminaire == 5 && strstr(r->excluded[2].reason, "point source cannot be rated"));
+    }
+    fixture_release(scene, &sol);
+}
+
+/* An area luminaire (a luminous rect facing down, 800 cd/m2) and a disk
+ * under the same sky: L its luminance, omega its exact solid angle; the
+ * one facing away adds nothing, said. */
+static void test_area_luminaires(void)
+{
+    const char *json =
+        "{\"version\": 1, \"luminaires\": ["
+        "{\"type\": \"area\", \"shape\": {\"type\": \"rect\", \"origin\": [1.5, 3.45, 3.0], \"u\": [0, 0.3, 0],"
+        " \"v\": [0.6, 0, 0]}, \"luminance_cd_m2\": 800},"
+        "{\"type\": \"area\", \"shape\": {\"type\": \"rect\", \"origin\": [-0.3, 5.85, 3.0], \"u\": [0.6, 0, 0],"
+        " \"v\": [0, 0.3, 0]}, \"luminance_cd_m2\": 800},"
+        "{\"type\": \"environment\", \"luminance_cd_m2\": 30}],"
+        " \"observers\": [{\"name\": \"desk\", \"eye\": [0, 0, 1.2], \"view\": [0, 1, 0]}]}";
+    cdl_scene *scene;
+    cdl_solution sol;
+    if (!fixture_solve(json, &scene, &sol, 2)) return;
+    const cdl_observer_result *r = &sol.observers[0];
+    /* the first emits downwards (u x v = -z), centred at T 1.8, R 3.6: p 2.91 */
+    CHECK(r->source_count == 1 && r->excluded_count == 1);
+    if (r->source_count == 1 && r->excluded_count == 1) {
+        const cdl_glare_source_result *s = &r->sources[0];
+        double omega = rect_omega(1.5, 2.1, 3.45, 3.75, 1.8);
+        CHECK(s->luminaire == 0 && s->L_cd_m2 == 800.0);
+        CHECK_REL(s->omega_sr, omega, 1e-12);
+        CHECK_ABS(s->p, 2.91, 1e-12);
+        /* the second faces up (u x v = +z): the eye sees its back */
+        CHECK(r->excluded[0].luminaire == 1 && strcmp(r->excluded[0].reason, "no light towards the eye") == 0);
+        /* the rating by hand from the solved background: the luminaires'
+         * own shapes hide a little of the sky (Lb just under 30) */
+        double Lb = r->background_cd_m2;
+        CHECK(Lb < 30.0 && Lb > 29.5);
+        CHECK_ABS(r->ugr, 8.0 * log10(0.25 / Lb * 800.0 * 800.0 * omega / (2.91 * 2.91)), 1e-9);
     }
     fixture_release(scene, &sol);
 }
@@ -236,6 +274,7 @@ static void test_threads(void)
 int main(void)
 {
     test_openings_under_a_sky();
+    test_area_luminaires();
     test_half_hidden();
     test_integrating_sphere();
     test_threads();
