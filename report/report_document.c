@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "base/strings.h"
 #include "lights/photometry/photometry_polar.h"
 #include "report/report_builder.h"
 #include "report/report_glare.h"
@@ -341,7 +342,7 @@ cdl_status cdl_report_document_build(const cdl_report_input *in, const char *tit
     if (!d) return cdl_error_out_of_memory(err);
     cdl_report_builder b = {d, 0};
     if (title) {
-        d->title = strdup(title);
+        d->title = cdl_string_copy(title);
     } else {
         size_t n = strlen(scene_name(in)) + 32;
         d->title = malloc(n);

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "base/file_bytes.h"
+#include "base/strings.h"
 #include "glare/ugr_table.h"
 #include "graphics/text.h"
 #include "radiometry/constants.h"
@@ -39,10 +40,8 @@ static int same_number(double a, double b)
  * and numbers (both written from the same doubles). */
 static cdl_status check_csv(const cdl_report_input *in, cdl_error *err)
 {
-    size_t n = strlen(in->out_dir) + 16;
-    char *path = malloc(n);
+    char *path = cdl_path_join(in->out_dir, "glare", ".csv");
     if (!path) return cdl_error_out_of_memory(err);
-    snprintf(path, n, "%s/glare.csv", in->out_dir);
     char *text = NULL;
     size_t size = 0;
     cdl_status st = cdl_file_read_bytes(path, "glare results", GLARE_CSV_MAX_BYTES, &text, &size, err);

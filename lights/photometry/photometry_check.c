@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "lights/photometry/photometry_internal.h"
+#include "radiometry/constants.h"
 
 /* A stated downward fraction may differ from the table's by rounding of
  * the table and of DFF itself; real files agree within 1 point. */
@@ -61,9 +62,6 @@ static const struct {
     {"CFL", 120.0, "fluorescent"},
 };
 
-/* The luminous efficacy of radiation at 555 nm, the most any light has (CIE S 017:2020). */
-#define CDL_MAX_LUMINOUS_EFFICACY 683.0
-
 /* Does `word` stand as a word in `text` (case-insensitive; not inside a longer word)? */
 static int has_word(const char *text, const char *word)
 {
@@ -94,13 +92,13 @@ static cdl_status check_efficacy(cdl_photometry *p, const char *name)
     const cdl_photometry_metadata *m = &p->meta;
     if (m->radiometric || !(m->input_watts > 0.0) || !(p->flux_lm > 0.0)) return CDL_OK;
     double efficacy = p->flux_lm * cdl_photometry_output_factor(p) / m->input_watts;
-    if (efficacy > CDL_MAX_LUMINOUS_EFFICACY)
+    if (efficacy > CDL_KM_PHOTOPIC_LM_PER_W)
         return cdl_photometry_add_warning(p,
-                                          "%s: efficacy %.4g lm/W (%.6g lm from %.6g W) is above 683 lm/W, the "
+                                          "%s: efficacy %.4g lm/W (%.6g lm from %.6g W) is above %g lm/W, the "
                                           "efficacy of monochromatic 555 nm light, which no light source can "
                                           "exceed: are the input watts or the lumens wrong?",
                                           name, efficacy, p->flux_lm * cdl_photometry_output_factor(p),
-                                          m->input_watts);
+                                          m->input_watts, CDL_KM_PHOTOPIC_LM_PER_W);
     const char *lamp = lamp_text(p);
     for (size_t k = 0; lamp && k < sizeof lamp_efficacy_limits / sizeof lamp_efficacy_limits[0]; ++k) {
         if (!has_word(lamp, lamp_efficacy_limits[k].word)) continue;

@@ -107,10 +107,8 @@ static void raster_triangle(cdl_grid *g, double x0, double y1, double s, const d
 static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_error *err)
 {
     cdl_polygon_plane plane;
-    cdl_polygon_problem problem;
-    if (!cdl_polygon_check(&spec->outer, spec->holes, spec->hole_count, &plane, &problem))
-        return cdl_error_set(err, CDL_ERR_INPUT, "%s: expected a valid polygon, found defect %d at ring %ld vertex %zu",
-                             spec->json_path, (int)problem.defect, problem.ring, problem.vertex);
+    if (cdl_polygon_plane_of_checked(&spec->outer, spec->holes, spec->hole_count, &plane, err) != CDL_OK)
+        return cdl_error_prefix(err, "%s: ", spec->json_path);
     /* Bounding rectangle in the plane, axes along the first edge and across it. */
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
     for (size_t i = 0; i < spec->outer.count; ++i) {
@@ -125,11 +123,7 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
     double p = spec->spacing > 0.0 ? spec->spacing : cdl_grid_auto_spacing(fmax(width, height));
 
     /* Estimate the count from the outer ring's area before meshing. */
-    cdl_mesh2d mesh;
-    cdl_status st = cdl_polygon_triangulate(&plane, &spec->outer, NULL, 0, 0.0, SIZE_MAX, &mesh, err);
-    if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", spec->json_path);
-    double outer_area = mesh.area;
-    cdl_mesh2d_release(&mesh);
+    double outer_area = cdl_polygon_outer_area(&plane, &spec->outer);
     double estimate = POINTS_PER_SQUARE_SPACING * outer_area / (p * p);
     if (estimate > (double)CDL_GRID_MAX_POINTS)
         return cdl_error_set(err, CDL_ERR_INPUT,
@@ -143,7 +137,8 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
      * the estimate, plus room for grading down to small features, then stop
      * (a vertex a hair's breadth from an edge would otherwise take minutes). */
     double vertex_cap = fmin((double)CDL_GRID_MAX_POINTS, 2.0 * estimate + 10000.0);
-    st = cdl_polygon_triangulate(&plane, &spec->outer, spec->holes, spec->hole_count, p, (size_t)vertex_cap,
+    cdl_mesh2d mesh;
+    cdl_status st = cdl_polygon_triangulate(&plane, &spec->outer, spec->holes, spec->hole_count, p, (size_t)vertex_cap,
                                        &mesh, err);
     if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", spec->json_path);
     if (mesh.triangle_count > CDL_GRID_MAX_POINTS) {

@@ -45,7 +45,7 @@ cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *
                  {"Ez_stderr_lx", result->Ez_stderr}, {"Esz_lx", result->Esz}, {"Esz_stderr_lx", result->Esz_stderr},
                  {"L_cd_m2", result->L}};
     enum { EXTRA = sizeof extra / sizeof extra[0] };
-    fputs("x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx", file.fp);
+    fputs(CDL_GRID_CSV_COLUMNS, file.fp);
     for (int c = 0; c < EXTRA; ++c)
         if (extra[c].values) fprintf(file.fp, ",%s", extra[c].name);
     fputc('\n', file.fp);

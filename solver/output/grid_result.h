@@ -83,7 +83,10 @@ typedef struct cdl_grid_stats {
  * values (cdl_grid_result_check). */
 void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats);
 
-/* NAME.csv: header x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx
+/* The columns every NAME.csv starts with (DESIGN.md), in order. */
+#define CDL_GRID_CSV_COLUMNS "x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx"
+
+/* NAME.csv: header CDL_GRID_CSV_COLUMNS
  * then, for those given, area_m2, AO, Ez_lx, Ez_stderr_lx, Esz_lx,
  * Esz_stderr_lx, L_cd_m2; one row per point in grid order, "\n" line
  * ends. Each number is the shortest of "%.15g", "%.16g", "%.17g" that reads

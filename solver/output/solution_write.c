@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "base/atomic_file.h"
+#include "base/strings.h"
 #include "solver/output/glare_output.h"
 #include "solver/output/grid_result.h"
 
@@ -84,14 +85,6 @@ void cdl_grid_solution_result(const cdl_grid_solution *gs, const cdl_grid_spec *
     out->L = gs->L;
     out->Ez_stderr = gs->Ez_stderr;
     out->Esz_stderr = gs->Esz_stderr;
-}
-
-static char *join_path(const char *dir, const char *name, const char *ext)
-{
-    size_t n = strlen(dir) + strlen(name) + strlen(ext) + 2;
-    char *p = malloc(n);
-    if (p) snprintf(p, n, "%s/%s%s", dir, name, ext);
-    return p;
 }
 
 static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol, const cdl_grid_stats *stats,
@@ -253,9 +246,9 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
         cdl_grid_solution_result(gs, &scene->grids[g], &r);
         r.map_log_scale = opts.map_log_scale;
         cdl_grid_result_stats(&r, &stats[g]);
-        char *csv = join_path(out_dir, r.name, ".csv");
-        char *exr = join_path(out_dir, r.name, ".exr");
-        char *png = join_path(out_dir, r.name, ".png");
+        char *csv = cdl_path_join(out_dir, r.name, ".csv");
+        char *exr = cdl_path_join(out_dir, r.name, ".exr");
+        char *png = cdl_path_join(out_dir, r.name, ".png");
         if (!csv || !exr || !png) {
             st = cdl_error_out_of_memory(err);
         } else {
@@ -270,12 +263,12 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
         free(png);
     }
     if (st == CDL_OK && scene->observer_count > 0) {
-        char *glare = join_path(out_dir, "glare", ".csv");
+        char *glare = cdl_path_join(out_dir, "glare", ".csv");
         st = glare ? cdl_glare_write_csv(scene, sol, glare, err) : cdl_error_out_of_memory(err);
         free(glare);
     }
     if (st == CDL_OK) {
-        char *summary = join_path(out_dir, "summary", ".json");
+        char *summary = cdl_path_join(out_dir, "summary", ".json");
         st = summary ? write_summary(scene, sol, stats, summary, err) : cdl_error_out_of_memory(err);
         free(summary);
     }

@@ -42,6 +42,7 @@
 #include <string.h>
 
 #include "base/file_bytes.h"
+#include "base/strings.h"
 #include "solver/scene/scene_file.h"
 #include "solver/scene/scene_parse.h"
 
@@ -81,14 +82,6 @@ const char *cdl_quality_name(cdl_quality quality)
 }
 
 /* ---- helpers ------------------------------------------------------------------ */
-
-static char *strdup_or_null(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *c = malloc(n);
-    if (c) memcpy(c, s, n);
-    return c;
-}
 
 /* At most one of keys a and b; with `required`, exactly one. *which = 0 (a), 1 (b) or -1. */
 static cdl_status one_of(const cdl_scene_parse *ctx, const cJSON *node, const char *path, const char *a,
@@ -375,8 +368,8 @@ static cdl_status read_luminaire_entry(const cdl_scene_parse *ctx, const cJSON *
             /* The last copy takes the entry's strings and shape. */
             memset(&proto, 0, sizeof proto);
         } else {
-            c->name = proto.name ? strdup_or_null(proto.name) : NULL;
-            c->file = proto.file ? strdup_or_null(proto.file) : NULL;
+            c->name = proto.name ? cdl_string_copy(proto.name) : NULL;
+            c->file = proto.file ? cdl_string_copy(proto.file) : NULL;
             if ((proto.name && !c->name) || (proto.file && !c->file)) {
                 free(c->name);
                 free(c->file);
@@ -730,15 +723,6 @@ static cdl_status json_syntax_error(cdl_error *err, const char *file, const char
                          file, line, column, near);
 }
 
-static char *copy_string(const char *s, size_t n)
-{
-    char *c = malloc(n + 1);
-    if (c) {
-        memcpy(c, s, n);
-        c[n] = '\0';
-    }
-    return c;
-}
 
 cdl_status cdl_scene_load_string(const char *json, const char *path, cdl_scene **out, cdl_error *err)
 {
@@ -747,9 +731,9 @@ cdl_status cdl_scene_load_string(const char *json, const char *path, cdl_scene *
     cdl_scene *scene = calloc(1, sizeof *scene);
     if (!scene) return cdl_error_out_of_memory(err);
     const char *slash = strrchr(path, '/');
-    scene->path = copy_string(path, strlen(path));
-    scene->base_dir = !slash ? copy_string(".", 1) : slash == path ? copy_string("/", 1)
-                                                                   : copy_string(path, (size_t)(slash - path));
+    scene->path = cdl_string_copy_n(path, strlen(path));
+    scene->base_dir = !slash ? cdl_string_copy_n(".", 1) : slash == path ? cdl_string_copy_n("/", 1)
+                                                                   : cdl_string_copy_n(path, (size_t)(slash - path));
     if (!scene->path || !scene->base_dir) {
         cdl_scene_release(scene);
         return cdl_error_out_of_memory(err);

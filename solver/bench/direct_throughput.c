@@ -1,6 +1,6 @@
-/* bench_direct.c - shadow-ray throughput of the direct solver against plain
+/* direct_throughput.c - shadow-ray throughput of the direct solver against plain
  * Embree occlusion queries on exactly the rays the solver cast. */
-#include "solver/bench/bench_direct.h"
+#include "solver/bench/direct_throughput.h"
 
 #include <math.h>
 #include <stdio.h>
