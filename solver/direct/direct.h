@@ -133,6 +133,11 @@ void cdl_direct_stats_add(cdl_direct_sample_stats *a, const cdl_direct_sample_st
  * thread-safe. */
 int cdl_direct_sphere_in_view(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 center, double radius,
                               uint32_t owner);
+/* The same for the pyramid from p to a convex planar polygon of up to
+ * CDL_SCENE_LIGHT_OUTLINE_MAX corners (the region a flat emitter's light
+ * crosses). */
+int cdl_direct_polygon_in_view(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, const cdl_vec3 *polygon,
+                               int count, uint32_t owner);
 int cdl_direct_ray_blocked(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance);
 
 /* What a light's tally says, for the plan: "exact: visible polygon past up

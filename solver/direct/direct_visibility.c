@@ -104,6 +104,22 @@ int cdl_direct_sphere_in_view(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec
     return cdl_direct_light_fully_visible(ctx, &sphere, p, n);
 }
 
+int cdl_direct_polygon_in_view(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, const cdl_vec3 *polygon,
+                               int count, uint32_t owner)
+{
+    if (!ctx->geometry || !ctx->occluders) return 1;
+    if (count < 3 || count > CDL_SCENE_LIGHT_OUTLINE_MAX) return 0;
+    /* as for a flat light with this outline (cdl_direct_light_region) */
+    cdl_vec3 outline[CDL_SCENE_LIGHT_OUTLINE_MAX];
+    memcpy(outline, polygon, (size_t)count * sizeof *outline);
+    cdl_scene_light flat;
+    memset(&flat, 0, sizeof flat);
+    flat.outline = outline;
+    flat.outline_count = count;
+    flat.owner = owner;
+    return cdl_direct_light_fully_visible(ctx, &flat, p, n);
+}
+
 int cdl_direct_ray_blocked(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance)
 {
     if (!ctx->geometry) return 0;

@@ -40,17 +40,44 @@ static int applies_glare(const cdl_solve_state *state, const cdl_grid_job *job)
     return job->observers;
 }
 
+/* Is every piece the eye sees in full view: the pyramid from the eye to
+ * it (an ellipse's: to its bounding parallelogram) clear of surfaces? */
+static int parts_in_view(const cdl_solve_state *state, const cdl_glare_rated *r, const cdl_glare_parts *parts,
+                         const double omega[CDL_GLARE_PARTS_MAX], cdl_vec3 eye, cdl_vec3 n)
+{
+    for (int i = 0; i < parts->count; ++i) {
+        if (!(omega[i] > 0.0)) continue;
+        const cdl_glare_piece *p = &parts->piece[i];
+        cdl_vec3 corner[4];
+        int count = 4;
+        if (p->kind == CDL_GLARE_PIECE_TRIANGLE) {
+            corner[0] = p->c, corner[1] = p->u, corner[2] = p->v;
+            count = 3;
+        } else {
+            corner[0] = cdl_vec3_sub(cdl_vec3_sub(p->c, p->u), p->v);
+            corner[1] = cdl_vec3_sub(cdl_vec3_add(p->c, p->u), p->v);
+            corner[2] = cdl_vec3_add(cdl_vec3_add(p->c, p->u), p->v);
+            corner[3] = cdl_vec3_add(cdl_vec3_sub(p->c, p->u), p->v);
+        }
+        if (!cdl_direct_polygon_in_view(&state->direct, eye, n, corner, count, r->owner)) return 0;
+    }
+    return 1;
+}
+
 /* The visible fraction f of the parts (seen from eye, solid angles omega,
  * their sum total) and its standard error: exact 1 when the cone to the
- * sphere about them is clear, else sampled to relative error `target`. */
-static void visible_fraction(const cdl_solve_state *state, const cdl_glare_rated *r, const cdl_glare_parts *parts,
-                             const double omega[CDL_GLARE_PARTS_MAX], double total, cdl_vec3 eye, uint64_t stream,
-                             double *f, double *sigma, uint64_t *rays)
+ * sphere about them is clear (returns 1), else sampled to relative error
+ * `target` (returns 0). */
+static int visible_fraction(const cdl_solve_state *state, const cdl_glare_rated *r, const cdl_glare_parts *parts,
+                            const double omega[CDL_GLARE_PARTS_MAX], double total, cdl_vec3 eye, uint64_t stream,
+                            double *f, double *sigma, uint64_t *rays)
 {
     *f = 1.0;
     *sigma = 0.0;
     cdl_vec3 n = cdl_vec3_normalize(cdl_vec3_sub(r->centre, eye));
-    if (cdl_direct_sphere_in_view(&state->direct, eye, n, r->centre, r->radius, r->owner)) return;
+    if (parts_in_view(state, r, parts, omega, eye, n) ||
+        cdl_direct_sphere_in_view(&state->direct, eye, n, r->centre, r->radius, r->owner))
+        return 1;
     cdl_rng_key key = {state->scene->settings.seed, stream};
     double sw = 0.0, swv = 0.0, sww = 0.0, swwv = 0.0, swwvv = 0.0, seen = 0.0, count = 0.0, want = PILOT_SAMPLES;
     while (count < want) {
@@ -66,6 +93,12 @@ static void visible_fraction(const cdl_solve_state *state, const cdl_glare_rated
         double v = cdl_direct_ray_blocked(&state->direct, eye, n, cdl_vec3_scale(d, 1.0 / dist), dist) ? 0.0 : 1.0;
         ++*rays;
         sw += w, swv += w * v, sww += w * w, swwv += w * w * v, swwvv += w * w * v * v, seen += v;
+        if (count >= want && !(sw > 0.0)) {
+            /* no point could be drawn on the parts: nothing known of what
+             * hides them, said as a visible fraction of 1 +- 1 */
+            *sigma = 1.0;
+            return 0;
+        }
         if (count >= want && want < MAX_SAMPLES) {
             /* the ratio estimator's variance, sum w^2 (v - f)^2 / (sum w)^2;
              * never below a binomial one with half a sample either way, so
@@ -79,10 +112,12 @@ static void visible_fraction(const cdl_solve_state *state, const cdl_glare_rated
             *sigma = sqrt(var);
         }
     }
+    return 0;
 }
 
 /* One luminaire seen from observer i: a source, or why it is not one. */
-static void rate_one(const cdl_solve_state *state, size_t i, size_t k, cdl_observer_result *res, uint64_t *rays)
+static void rate_one(const cdl_solve_state *state, size_t i, size_t k, cdl_observer_result *res, uint64_t *rays,
+                     uint64_t *exact)
 {
     const cdl_glare_rated *r = &state->rated[k];
     const cdl_observer_spec *o = &state->scene->observers[i];
@@ -122,7 +157,7 @@ static void rate_one(const cdl_solve_state *state, size_t i, size_t k, cdl_obser
     }
     double f, sigma;
     uint64_t stream = cdl_rng_stream_id(GLARE_STREAM, i, k);
-    visible_fraction(state, r, &parts, omega, total, o->eye, stream, &f, &sigma, rays);
+    *exact += (uint64_t)visible_fraction(state, r, &parts, omega, total, o->eye, stream, &f, &sigma, rays);
     cdl_glare_source_result *s = &res->sources[res->source_count++];
     s->luminaire = k;
     s->L_cd_m2 = L;
@@ -141,6 +176,7 @@ typedef struct glare_task {
     const cdl_grid_job *job;
     uint64_t rays;                    /* summed after the run (per-chunk counts added under the pool) */
     uint64_t *chunk_rays;             /* per observer */
+    uint64_t *chunk_exact;            /* per observer: sources whose solid angle was exact */
 } glare_task;
 
 static cdl_status glare_chunk(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
@@ -162,12 +198,19 @@ static cdl_status glare_chunk(void *shared, void *local, size_t begin, size_t en
         res->background_stderr_cd_m2 = sqrt(var) * CDL_INV_PI;
         cdl_ugr_sum sum = {0.0, 0.0, 0};
         for (size_t k = 0; k < lums; ++k) {
-            rate_one(state, i, k, res, &task->chunk_rays[i]);
+            rate_one(state, i, k, res, &task->chunk_rays[i], &task->chunk_exact[i]);
             if (res->source_count && res->sources[res->source_count - 1].luminaire == k) {
                 const cdl_glare_source_result *s = &res->sources[res->source_count - 1];
                 cdl_ugr_sum_add(&sum, (cdl_ugr_term){s->term, s->term_stderr});
             }
         }
+        /* keep what was used (the lists were sized for every luminaire) */
+        if (res->source_count == 0) free(res->sources), res->sources = NULL;
+        if (res->excluded_count == 0) free(res->excluded), res->excluded = NULL;
+        cdl_glare_source_result *s = res->sources ? realloc(res->sources, res->source_count * sizeof *s) : NULL;
+        cdl_glare_exclusion *x = res->excluded ? realloc(res->excluded, res->excluded_count * sizeof *x) : NULL;
+        if (s) res->sources = s;
+        if (x) res->excluded = x;
         cdl_ugr u = {0, 0.0, 0.0};
         if (res->background_cd_m2 > 0.0 &&
             cdl_ugr_evaluate(&sum, cdl_nits(res->background_cd_m2), res->background_stderr_cd_m2, &u, NULL) != CDL_OK)
@@ -185,9 +228,10 @@ static cdl_status run_glare(cdl_solve_state *state, cdl_grid_job *job, cdl_error
     size_t n = scene->observer_count;
     cdl_solution *out = state->out;
     out->observers = calloc(n ? n : 1, sizeof *out->observers);
-    glare_task task = {state, job, 0, calloc(n ? n : 1, sizeof(uint64_t))};
-    if (!out->observers || !task.chunk_rays) {
+    glare_task task = {state, job, 0, calloc(n ? n : 1, sizeof(uint64_t)), calloc(n ? n : 1, sizeof(uint64_t))};
+    if (!out->observers || !task.chunk_rays || !task.chunk_exact) {
         free(task.chunk_rays);
+        free(task.chunk_exact);
         return cdl_error_out_of_memory(err);
     }
     out->observer_count = n;
@@ -197,8 +241,13 @@ static cdl_status run_glare(cdl_solve_state *state, cdl_grid_job *job, cdl_error
     double t0 = cdl_pool_now_seconds();
     cdl_status st = cdl_pool_run(&pt, state->threads, &state->options.progress, err);
     out->compute_seconds += cdl_pool_now_seconds() - t0;
-    for (size_t i = 0; i < n; ++i) state->glare_stats.rays += task.chunk_rays[i];
+    for (size_t i = 0; i < n; ++i) {
+        state->glare_stats.rays += task.chunk_rays[i];
+        state->glare_exact += task.chunk_exact[i];
+        state->glare_sampled += out->observers[i].source_count - task.chunk_exact[i];
+    }
     free(task.chunk_rays);
+    free(task.chunk_exact);
     if (st != CDL_OK) return st;
     /* a dark background leaves an observer without a rating: say so */
     for (size_t i = 0; i < n; ++i) {

@@ -109,6 +109,7 @@ typedef struct cdl_solve_state {
     cdl_scene_light *background_lights; /* copies of those lights (their emitters stay the state's) */
     struct cdl_glare_rated *rated;    /* per scene luminaire: how it is rated (solve_observers.h) */
     cdl_direct_sample_stats glare_stats; /* shadow rays the glare integrator cast */
+    uint64_t glare_exact, glare_sampled; /* (observer, luminaire) pairs whose solid angle was exact, sampled */
 } cdl_solve_state;
 
 /* One grid going through the integrators. */
