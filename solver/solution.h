@@ -53,7 +53,9 @@ typedef struct cdl_glare_source_result {
     size_t luminaire;                 /* its index in scene->luminaires */
     double L_cd_m2;                   /* luminance of its luminous parts towards the eye, I / A_p */
     double omega_sr;                  /* their solid angle at the eye, less what surfaces hide */
-    double omega_stderr_sr;           /* its standard error (0 where nothing can hide them: exact) */
+    double omega_stderr_sr;           /* its standard error (0 where nothing can hide them) */
+    int omega_exact;                  /* 1: the luminous parts' solid angle is exact; 0: CIE 117's A_p / r^2
+                                       * (cylinders, ellipsoids: glare/glare_source.h) */
     double p;                         /* Guth's position index */
     double term, term_stderr;         /* L^2 omega / p^2 (cd^2 m^-4 sr) and its standard error */
 } cdl_glare_source_result;

@@ -131,6 +131,7 @@ static void rate_one(const cdl_solve_state *state, size_t i, size_t k, cdl_obser
     }
     cdl_glare_parts parts;
     double L = 0.0, p = 0.0;
+    int closed_form = 1;
     cdl_glare_zone zone;
     if (r->is_area) {
         double R, T, H;
@@ -144,8 +145,7 @@ static void rate_one(const cdl_solve_state *state, size_t i, size_t k, cdl_obser
         zone = s.zone;
         p = s.p;
         L = s.luminance.cd_m2;
-        int exact;
-        cdl_glare_opening_parts(&r->gonio, o->eye, &parts, &exact);
+        cdl_glare_opening_parts(&r->gonio, o->eye, &parts, &closed_form);
     }
     double omega[CDL_GLARE_PARTS_MAX];
     double total = cdl_glare_parts_solid_angle(&parts, o->eye, omega);
@@ -163,6 +163,7 @@ static void rate_one(const cdl_solve_state *state, size_t i, size_t k, cdl_obser
     s->L_cd_m2 = L;
     s->omega_sr = total * f;
     s->omega_stderr_sr = total * sigma;
+    s->omega_exact = closed_form;
     s->p = p;
     cdl_ugr_term t = cdl_ugr_term_make(cdl_nits(L), 0.0, s->omega_sr, s->omega_stderr_sr, p);
     /* a hidden source (omega 0) keeps the error of its sampled solid angle */

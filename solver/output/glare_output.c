@@ -48,6 +48,7 @@ static cJSON *observer_json(const cdl_scene *scene, const cdl_observer_spec *o, 
         cJSON_AddNumberToObject(e, "L_cd_m2", s->L_cd_m2);
         cJSON_AddNumberToObject(e, "omega_sr", s->omega_sr);
         cJSON_AddNumberToObject(e, "omega_stderr_sr", s->omega_stderr_sr);
+        cJSON_AddBoolToObject(e, "omega_exact", s->omega_exact);
         cJSON_AddNumberToObject(e, "p", s->p);
         cJSON_AddNumberToObject(e, "term", s->term);
         cJSON_AddNumberToObject(e, "term_stderr", s->term_stderr);

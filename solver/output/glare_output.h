@@ -15,7 +15,8 @@
 /* summary.json's "glare": one object per observer, in order - observer
  * (its name), json_path, eye, view, ugr (null without a rating), ugr_stderr,
  * background_cd_m2, background_stderr_cd_m2, UGR_L (null without a
- * requirement), sources [{luminaire, L_cd_m2, omega_sr, omega_stderr_sr, p,
+ * requirement), sources [{luminaire, L_cd_m2, omega_sr, omega_stderr_sr,
+ * omega_exact (false: CIE 117's A_p / r^2, for cylinders and ellipsoids), p,
  * term, term_stderr}], excluded [{luminaire, reason}] (luminaires by their
  * label). NULL when out of memory. */
 cJSON *cdl_glare_summary_json(const cdl_scene *scene, const cdl_solution *solution);

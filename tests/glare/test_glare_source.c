@@ -182,6 +182,20 @@ static void test_disk_box_sphere(const char *folder)
     double a = 0.25, d = 25.0;
     CHECK_REL(s.omega_sr, CDL_PI * a * a / (d * d) * (1.0 + a * a / (4.0 * d * d)), 1e-8);
     cdl_photometry_release(sp);
+
+    /* a vertical cylinder (LM-63-2002: -, -, +): CIE 117's A_p / r^2, said
+     * so (omega_exact 0) */
+    cdl_photometry *cyl = lambertian(folder, "cylinder.ies", 300.0, -0.2, -0.2, 0.3);
+    CHECK(cyl != NULL);
+    if (!cyl) return;
+    cdl_glare_luminaire c = placed(cyl, cdl_vec3_make(0.5, 4.0, 2.0));
+    cdl_glare_source_evaluate(&c, &eye, &s);
+    double r2 = 0.25 + 16.0 + 4.0;
+    CHECK(!s.omega_exact);
+    /* the disk of area A_p facing the eye (radius rho) subtends A_p / r^2
+     * (1 - 3/4 (rho / r)^2 + ...): 7e-4 below it here */
+    CHECK_REL(s.omega_sr, s.projected_area_m2 / r2, 1e-3);
+    cdl_photometry_release(cyl);
 }
 
 int main(void)

@@ -35,9 +35,9 @@ d = g[0]
 assert set(d) == {"observer", "json_path", "eye", "view", "ugr", "ugr_stderr", "background_cd_m2",
                   "background_stderr_cd_m2", "UGR_L", "sources", "excluded"}, sorted(d)
 assert d["UGR_L"] == 19 and g[1]["UGR_L"] is None and g[1]["json_path"] == "grids[1]"
-assert len(d["sources"]) == 4 and all(set(s) == {"luminaire", "L_cd_m2", "omega_sr", "omega_stderr_sr", "p", "term", "term_stderr"} for s in d["sources"])
+assert len(d["sources"]) == 4 and all(set(s) == {"luminaire", "L_cd_m2", "omega_sr", "omega_stderr_sr", "omega_exact", "p", "term", "term_stderr"} for s in d["sources"])
 assert d["excluded"] == [{"luminaire": "luminaires[1]", "reason": "no luminous area: a point source cannot be rated (CIE 117 weighs the luminance of the luminous parts)"}], d["excluded"]
-assert d["sources"][0]["luminaire"] == "luminaires[0] (1 of 4)"
+assert d["sources"][0]["luminaire"] == "luminaires[0] (1 of 4)" and d["sources"][0]["omega_exact"] is True
 # the background: the room's interreflection, stated with an error
 assert d["background_cd_m2"] > 0 and 0 < d["background_stderr_cd_m2"] < 0.1 * d["background_cd_m2"]
 for o, r in zip(g, rows):
