@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "glare/room_flux.h"
 #include "radiometry/constants.h"
 

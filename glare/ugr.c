@@ -1,6 +1,7 @@
 /* ugr.c - the Unified Glare Rating of a set of sources (CIE 117:1995). */
 #include <math.h>
 
+#include "base/error_report.h"
 #include "glare/ugr.h"
 
 cdl_ugr_term cdl_ugr_term_make(cdl_luminance L, double L_stderr, double omega_sr, double omega_stderr, double p)

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "glare/position_index.h"
 #include "glare/room_flux.h"
 #include "glare/ugr.h"

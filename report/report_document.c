@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "base/error_report.h"
 #include "base/strings.h"
 #include "lights/photometry/photometry_polar.h"
 #include "report/report_builder.h"
@@ -198,8 +199,9 @@ static void schedule_row(cdl_report_builder *b, cdl_report_block *t, size_t r, c
     cdl_report_cell(b, t, r, 1, "%s", maker[0] ? maker : "-");
     cdl_report_cell(b, t, r, 2, "%s", catalogue[0] ? catalogue : "-");
     cdl_report_cell(b, t, r, 3, "%s", lamp[0] ? lamp : "-");
-    if (s.radiometric) cdl_report_cell(b, t, r, 4, "%.4g W (radiant)", s.radiant_flux.W);
-    else cdl_report_cell(b, t, r, 4, "%.4g lm", s.flux.lm);
+    /* the luminaire's flux as the solve used it: the table times its ballast (output) factor */
+    if (s.radiometric) cdl_report_cell(b, t, r, 4, "%.4g W (radiant)", s.radiant_flux.W * s.output_factor);
+    else cdl_report_cell(b, t, r, 4, "%.4g lm", s.luminaire_flux.lm);
     if (m->input_watts > 0.0) cdl_report_cell(b, t, r, 5, "%.4g W", m->input_watts);
     else cdl_report_cell(b, t, r, 5, "-");
     if (s.efficacy_known) cdl_report_cell(b, t, r, 6, "%.4g lm/W", s.efficacy.lm_W);

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "base/error_report.h"
 #include "base/file_bytes.h"
 #include "base/strings.h"
 #include "report/report_glare.h"

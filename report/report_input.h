@@ -35,7 +35,7 @@
 #include "base/error.h"
 #include "solver/grid/grid.h"
 #include "solver/output/grid_result.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 typedef struct cdl_report_grid {
     const cdl_grid_spec *spec;     /* in the input's scene */

@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
+#include "lights/emitters/near_field_bound.h"
 #include "solver/auto_method.h"
 #include "solver/solve_cache.h"
 
@@ -103,6 +105,11 @@ cdl_status cdl_plan_json_lights(cdl_plan_json *plan, const cdl_solve_state *stat
                                     "\"always\" asked, but the file gives no luminous opening that is spread "
                                     "(rectangle, circle, ellipse, box with luminous sides, vertical or horizontal "
                                     "(elliptic) cylinder, sphere or ellipsoid of non-zero size): lit as a point");
+        if (lights->lights[l].near_part) {
+            /* where the luminaire is spread, and what the point model may err by beyond */
+            cJSON_AddNumberToObject(item, "near_field_distance_m", lights->lights[l].near_radius);
+            cJSON_AddNumberToObject(item, "point_model_error_bound", lights->lights[l].near_model_error);
+        }
         plan->light_grids[l] = cJSON_AddObjectToObject(item, "grids");
         cJSON_AddItemToArray(direct, item);
     }
@@ -132,10 +139,11 @@ static void describe_near_field(const cdl_scene_light *light, const cdl_grid *gr
     size_t lit = 0;
     for (size_t i = 0; i < grid->count; ++i) lit += (size_t)cdl_scene_light_applies(light, grid->points[i]);
     snprintf(text + used, size - used,
-             "; near field \"auto\": %s at %zu of %zu points (%s %.3g m = %g x the opening's largest dimension "
-             "from its centre)",
+             "; near field \"auto\": %s at %zu of %zu points (%s %.3g m from its centre: beyond, the point model "
+             "errs by at most %.2g %%, %g of the target, and never within %g x the opening's largest dimension)",
              light->near_part > 0 ? "spread over its luminous opening" : "a point", lit, grid->count,
-             light->near_part > 0 ? "nearer than" : "at or beyond", light->near_radius, CDL_NEAR_FIELD_DISTANCES);
+             light->near_part > 0 ? "nearer than" : "at or beyond", light->near_radius,
+             100.0 * light->near_model_error, CDL_NEAR_FIELD_SHARE, CDL_NEAR_FIELD_DISTANCES);
 }
 
 /* Each light's strategy on the grid, and the routes its points took (exact

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 #include "solver/plan_json.h"
 #include "solver/pool.h"
@@ -105,7 +106,7 @@ cdl_status cdl_solve_finish(cdl_solve_state *state, cdl_error *err)
     if (st == CDL_OK) st = cdl_solve_check_lights(scene, &state->direct, out, err);
     if (st == CDL_OK) st = cdl_solve_check_near_field(scene, &state->lights, out, err);
     if (st != CDL_OK) return st;
-    cdl_solve_sum_power(scene, &state->lights, &out->power);
+    cdl_solve_sum_power(scene, &state->lights, out);
     if (state->cache.path) {
         if (!state->cache.reused) {
             st = cdl_solve_cache_save(state, err);

@@ -4,11 +4,12 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "base/error_report.h"
 #include "cli_args.h"
 #include "command.h"
 #include "solver/output/grid_result.h"
 #include "solver/output/solution_write.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 static void print_help(FILE *out)
 {
@@ -148,7 +149,7 @@ static int run(int argc, char **argv)
         fprintf(stderr, "candela solve: -o: expected a folder name, found an empty string\n(see 'candela solve --help')\n");
         return CDL_EXIT_USAGE;
     }
-    cdl_solve_options so = CDL_SOLVE_OPTIONS_DEFAULT;
+    cdl_solve_options so = CDL_SOLVE_OPTIONS_INIT;
     if (cdl_cli_parse_threads("solve", cdl_cli_find(opts, nopts, "threads"), &so.threads)) return CDL_EXIT_USAGE;
     cdl_cli_option *cache = cdl_cli_find(opts, nopts, "cache");
     if (cache->present) {
@@ -195,7 +196,7 @@ static int run(int argc, char **argv)
         return (int)st;
     }
     cdl_solution sol;
-    st = cdl_solve_scene(scene, &so, &sol, &err);
+    st = cdl_solve_scene_into(scene, &so, NULL, &sol, &err);
     int strict = cdl_cli_find(opts, nopts, "strict")->present;
     if (st == CDL_OK) {
         /* No silent zeros: every warning on stderr; --strict refuses them
@@ -209,14 +210,14 @@ static int run(int argc, char **argv)
         }
     }
     if (st == CDL_OK) {
-        cdl_solution_write_options wo = CDL_SOLUTION_WRITE_OPTIONS_DEFAULT;
+        cdl_solution_write_options wo = CDL_SOLUTION_WRITE_OPTIONS_INIT;
         wo.ocio_config = ocio;
         wo.map_log_scale = log_scale;
         st = cdl_solution_write(scene, &sol, out_opt->value, &wo, &err);
         if (st == CDL_OK) {
             for (size_t g = 0; g < sol.grid_count; ++g) {
                 cdl_grid_result r;
-                cdl_grid_solution_result(&sol.grids[g], &scene->grids[g], &r);
+                cdl_grid_solution_result(&sol.grids[g], &r);
                 cdl_grid_stats s;
                 cdl_grid_result_stats(&r, &s);
                 printf("%-16s %6zu points  Em %10.4g lx  Emin %10.4g lx  Emax %10.4g lx  U0 %.3f  Ud %.3f", r.name,
@@ -248,9 +249,9 @@ static int run(int argc, char **argv)
                 printf("irradiance cache %s: %s\n", so.cache_path,
                        sol.cache_reused ? "records read from it, none gathered" : "records gathered and written to it");
         }
-        cdl_solution_release(&sol);
+        cdl_solution_clear(&sol);
     } else if (sol.grids || sol.warnings) {
-        cdl_solution_release(&sol);
+        cdl_solution_clear(&sol);
     }
     if (st != CDL_OK) {
         fprintf(stderr, "candela solve: %s\n", err.message);

@@ -34,6 +34,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/emitters/emitter.h"
 #include "lights/emitters/emitter_internal.h"
 #include "radiometry/constants.h"

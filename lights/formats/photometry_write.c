@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "base/atomic_file.h"
+#include "base/error_report.h"
 #include "lights/photometry/photometry_internal.h"
 
 cdl_status cdl_photometry_write_file(const cdl_photometry *p, const char *path, cdl_photometry_format format,

@@ -228,8 +228,11 @@ void cdl_direct_vertical_point(const cdl_direct_context *ctx, const cdl_light_st
                                const uint32_t *active, size_t active_count, cdl_vec3 p, cdl_vec3 n, cdl_vec3 facing,
                                int on_surface, double *Ez, double *Esz, cdl_direct_sample_stats *stats);
 
-/* Cosine-weighted unoccluded fraction of the hemisphere about n at p. */
+/* Cosine-weighted unoccluded fraction of the hemisphere about n at p, and
+ * in *stderr_out (may be NULL) its standard error: the spread of a
+ * fraction seen in `open` of N rays under a uniform prior (0 only where
+ * the scene has no geometry). */
 double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
-                                    cdl_direct_sample_stats *stats);
+                                    double *stderr_out, cdl_direct_sample_stats *stats);
 
 #endif

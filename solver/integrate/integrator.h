@@ -36,9 +36,10 @@
 #include "solver/icache/icache.h"
 #include "solver/icache/icache_file.h"
 #include "solver/pathtrace/pathtrace.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_lights.h"
-#include "solver/solution.h"
+#include "solver/solution_internal.h"
+#include "solver/solve_debug.h"
 #include "solver/solve_options.h"
 #include "solver/transport/vertical_sampled.h"
 
@@ -64,6 +65,7 @@ typedef struct cdl_grid_plan {
 typedef struct cdl_solve_state {
     const cdl_scene *scene;           /* borrowed */
     cdl_solve_options options;
+    cdl_solve_debug debug;
     cdl_solution *out;                /* borrowed: the results being filled */
     double target;                    /* relative standard error asked of E per point (computed once) */
     int indirect;                     /* 1: interreflection is modelled */

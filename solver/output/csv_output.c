@@ -50,7 +50,8 @@ cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *
     const struct {
         const char *name;
         const double *values;
-    } extra[] = {{"area_m2", result->area_m2},       {"AO", result->ao},   {"Ez_lx", result->Ez},
+    } extra[] = {{"area_m2", result->area_m2},       {"AO", result->ao},   {"AO_stderr", result->ao_stderr},
+                 {"Ez_lx", result->Ez},
                  {"Ez_stderr_lx", result->Ez_stderr}, {"Esz_lx", result->Esz}, {"Esz_stderr_lx", result->Esz_stderr},
                  {"L_cd_m2", result->L}};
     enum { EXTRA = sizeof extra / sizeof extra[0] };

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "base/strings.h"
 
 /* out = parent + separator + text, truncated to CDL_SCENE_PATH_MAX - 1 characters. */

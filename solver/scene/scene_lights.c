@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
+#include "lights/emitters/near_field_bound.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "solver/scene/exr_image.h"
@@ -294,19 +296,28 @@ static cdl_status add_near_field(const cdl_scene *scene, const cdl_luminaire_spe
                                  cdl_emitter *point, const cdl_scene_light *point_proto, cdl_scene_lights *L,
                                  cdl_error *err)
 {
-    double size = cdl_luminous_opening_largest_m(&cdl_photometry_get_metadata(p->photometry)->opening);
     cdl_scene_light proto = *point_proto;
     cdl_status st;
     if (sp->near_field == CDL_NEAR_FIELD_AUTO) {
+        /* The point model beyond where its error stays below a share of
+         * the target (near_field_bound.h). */
+        cdl_near_field_bound bound;
+        st = cdl_near_field_bound_measure(p, &bound, err);
+        if (st != CDL_OK) {
+            cdl_emitter_release(point);
+            return fail_at(err, scene, sp->json_path, st);
+        }
         cdl_scene_light far = *point_proto;
         far.near_part = -1;
         far.near_center = sp->position;
-        far.near_radius = CDL_NEAR_FIELD_DISTANCES * size;
+        far.near_radius = cdl_near_field_switch_distance(&bound, cdl_solver_settings_target(&scene->settings));
+        far.near_model_error = cdl_near_field_bound_error(&bound, far.near_radius);
         st = add_light(L, point, "goniometric", &far, err);
         if (st != CDL_OK) return fail_at(err, scene, sp->json_path, st);
         proto.near_part = 1;
         proto.near_center = sp->position;
         proto.near_radius = far.near_radius;
+        proto.near_model_error = far.near_model_error;
     } else {
         cdl_emitter_release(point);
     }

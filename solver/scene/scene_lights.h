@@ -19,7 +19,7 @@
 #include "lights/photometry/photometry.h"
 #include "radiometry/bounds.h"
 #include "solver/geometry/occluder_index.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_geometry.h"
 
 #define CDL_SCENE_LIGHT_OUTLINE_MAX (CDL_REGION_MAX_PLANES - 2)
@@ -60,7 +60,9 @@ typedef struct cdl_scene_light {
      * the others; near_part 0 lights every point. */
     int near_part;
     cdl_vec3 near_center;
-    double near_radius;               /* CDL_NEAR_FIELD_DISTANCES x the opening's largest dimension */
+    double near_radius;               /* where the point model's error bound falls to CDL_NEAR_FIELD_SHARE of the
+                                       * target, at least CDL_NEAR_FIELD_DISTANCES x the opening's largest dimension */
+    double near_model_error;          /* that bound at near_radius (relative) */
     int costly_exact;                 /* its exact E is a cubature (an opening of a non-Lambertian table) */
     int near_field_unspread;          /* near_field "always" on a file whose opening is not spread: a point */
 } cdl_scene_light;

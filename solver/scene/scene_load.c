@@ -32,7 +32,7 @@
  * unit of the same dimension, as people type it: "46.45 fc", "2 kcd",
  * "3 klm", "1200 cd/m2" (radiometry/quantity.h).
  */
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -41,6 +41,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "base/file_bytes.h"
 #include "base/strings.h"
 #include "solver/scene/scene_file.h"
@@ -364,6 +365,7 @@ static cdl_status read_luminaire_entry(const cdl_scene_parse *ctx, const cJSON *
         c->array_index[0] = copies.index ? copies.index[k][0] : 0;
         c->array_index[1] = copies.index ? copies.index[k][1] : 0;
         if (copies.positions) c->position = copies.positions[k];
+        if (copies.aims) c->aim = copies.aims[k];
         if (k == copies.count - 1) {
             /* The last copy takes the entry's strings and shape. */
             memset(&proto, 0, sizeof proto);

@@ -13,10 +13,10 @@
 #include <cjson/cJSON.h>
 #include <stddef.h>
 
-#include "base/error.h"
+#include "base/error_report.h"
 #include "radiometry/quantity.h"
 #include "radiometry/vec3.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 /* Longer than CDL_JSON_PATH_SIZE: messages keep the whole path even where a
  * spec's json_path field is truncated. */
@@ -165,6 +165,7 @@ cdl_status cdl_scene_json_read_aim(const cdl_scene_parse *ctx, const cJSON *node
 typedef struct cdl_luminaire_copies {
     cdl_vec3 *positions;
     int (*index)[2];              /* [i, j] in the array, or [k, 0] */
+    cdl_vec3 *aims;               /* with "positions" and a list of aim points: each copy's; else NULL */
     size_t count;
 } cdl_luminaire_copies;
 cdl_status cdl_scene_json_read_copies(const cdl_scene_parse *ctx, const cJSON *node, const char *path,

@@ -10,7 +10,7 @@
 #include "lights/emitters/projected_solid_angle.h"
 #include "radiometry/constants.h"
 #include "solver/scene/exr_image.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 #include "solver/solve_fixture.h"
 
 /* Point light, no geometry: inverse-square and cosine law over angles

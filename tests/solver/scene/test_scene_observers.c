@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 #define GRID "{\"name\": \"g\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1]}]}"
 
