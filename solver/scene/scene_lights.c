@@ -360,6 +360,7 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
     memset(&proto, 0, sizeof proto);
     cdl_luminaire_spec_label(sp, proto.label, sizeof proto.label);
     proto.owner = UINT32_MAX;
+    proto.luminaire = k;
     double mf = sp->maintenance_factor;
     cdl_emitter *e = NULL;
     cdl_status st = CDL_OK;
@@ -545,6 +546,7 @@ cdl_status cdl_scene_lights_build(const cdl_scene *scene, const cdl_scene_geomet
         const cdl_surface_spec *ss = &scene->surfaces[gp->source_index];
         cdl_scene_light proto;
         memset(&proto, 0, sizeof proto);
+        proto.luminaire = SIZE_MAX;
         if (gp->box_face >= 0 && ss->name)
             snprintf(proto.label, sizeof proto.label, "%s (%s, face %s)", ss->json_path, ss->name,
                      box_face_name(gp->box_face));

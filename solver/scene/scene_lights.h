@@ -29,6 +29,7 @@
 typedef struct cdl_scene_light {
     const cdl_emitter *emitter;
     char label[160];                  /* "luminaires[3]" or "surfaces[2]" (+ face) for the plan */
+    size_t luminaire;                 /* its index in scene->luminaires; SIZE_MAX for an emitting surface */
     uint32_t owner;                   /* geometry piece id of its own surface, UINT32_MAX if none */
     int has_closed_form;              /* area or environment (uniform, overcast or image) */
     int is_environment;
