@@ -59,7 +59,7 @@ static void facing_disk(cdl_vec3 c, cdl_vec3 to_eye, double r, cdl_glare_parts *
 
 void cdl_glare_opening_parts(const cdl_glare_luminaire *l, cdl_vec3 eye, cdl_glare_parts *parts, int *exact)
 {
-    const cdl_luminous_opening *o = &cdl_photometry_get_metadata(l->photometry)->opening;
+    const cdl_luminous_opening *o = cdl_photometry_opening(l->photometry);
     const cdl_vec3 *ax = l->axis;
     cdl_vec3 c = l->position;
     double L = o->length_m, W = o->width_m, Hh = o->height_m;
@@ -115,7 +115,7 @@ void cdl_glare_source_evaluate(const cdl_glare_luminaire *l, const cdl_glare_obs
     s->gamma_deg = acos(fmax(-1.0, fmin(1.0, -local.z / len))) * CDL_RAD_TO_DEG;
     s->c_deg = fmod(atan2(local.y, local.x) * CDL_RAD_TO_DEG + 360.0, 360.0);
     s->intensity = cdl_candelas(l->scale * cdl_photometry_intensity(l->photometry, local).cd);
-    const cdl_luminous_opening *op = &cdl_photometry_get_metadata(l->photometry)->opening;
+    const cdl_luminous_opening *op = cdl_photometry_opening(l->photometry);
     s->projected_area_m2 = cdl_luminous_opening_projected_area(op, local);
     if (!(s->projected_area_m2 > 0.0)) return;
     /* L = I / A_p: the luminance of the source seen as a whole */

@@ -7,6 +7,7 @@
 #include "glare/room_flux.h"
 #include "glare/ugr.h"
 #include "glare/ugr_table.h"
+#include "lights/photometry/photometry_metadata.h"
 #include "radiometry/constants.h"
 
 /* CIE 190:2010 4.2: X and Y in multiples of H, the catalogue's rows */
@@ -148,7 +149,7 @@ cdl_status cdl_ugr_table_compute(const cdl_photometry *photometry, const cdl_ugr
     if (st != CDL_OK) return st;
     table_luminaire lum;
     lum.photometry = photometry;
-    lum.opening = &cdl_photometry_get_metadata(photometry)->opening;
+    lum.opening = cdl_photometry_opening(photometry);
     lum.scale = cdl_photometry_output_factor(photometry);
     for (int k = 0; k < 4; ++k)
         lum.cumulative_lm[k] =

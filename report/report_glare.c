@@ -430,7 +430,7 @@ cdl_status cdl_report_glare_tables(cdl_report_builder *b, const cdl_report_input
     int first = 1;
     for (size_t k = 0; k < in->type_count; ++k) {
         const cdl_photometry *ph = in->types[k].photometry;
-        if (!ph || !cdl_luminous_opening_is_spread(&cdl_photometry_get_metadata(ph)->opening)) continue;
+        if (!ph || !cdl_luminous_opening_is_spread(cdl_photometry_opening(ph))) continue;
         cdl_ugr_table u;
         cdl_status st = cdl_ugr_table_compute(ph, NULL, &u, err);
         if (st == CDL_ERR_INPUT) continue; /* not rated (radiant data, no light): the schedule says what it is */

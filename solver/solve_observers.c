@@ -118,7 +118,7 @@ static void rate_luminaire(const cdl_solve_state *state, size_t k, cdl_glare_rat
     case CDL_LUMINAIRE_GONIOMETRIC: break;
     }
     const cdl_photometry *ph = state->lights.luminaire_photometry[k];
-    const cdl_luminous_opening *o = ph ? &cdl_photometry_get_metadata(ph)->opening : NULL;
+    const cdl_luminous_opening *o = ph ? cdl_photometry_opening(ph) : NULL;
     if (!o || !cdl_luminous_opening_is_spread(o)) {
         r->reason = no_opening;
         return;

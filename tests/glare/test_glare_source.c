@@ -24,7 +24,7 @@ static cdl_photometry *lambertian(const char *folder, const char *name, double I
     fprintf(f, "0\n");
     for (int k = 0; k <= 180; ++k) fprintf(f, "%.17g\n", I0 * cos(0.5 * k * CDL_DEG_TO_RAD));
     fclose(f);
-    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     cdl_photometry *p = NULL;
     cdl_error err;
     if (cdl_photometry_read_file(path, &ro, &p, &err) != CDL_OK) fprintf(stderr, "%s\n", err.message);

@@ -38,9 +38,7 @@ static void test_parallel_factor(void)
 }
 
 /* CIE 190:2010 Table 5, room 4H x 8H (k = 2.67): F_T,FW, F_T,WW-1, F_T,CW
- * for the five reflectance sets, as printed (three decimals), quoted by
- * 123VincentB/eulumdat-ugr (src/eulumdat_ugr/background.py, commit
- * 4df0459). */
+ * for the five reflectance sets, as printed (three decimals). */
 static void test_transfer_factors_against_cie190(void)
 {
     static const double rho[5][3] = {{0.7, 0.5, 0.2}, {0.7, 0.3, 0.2}, {0.5, 0.5, 0.2}, {0.5, 0.3, 0.2}, {0.3, 0.3, 0.2}};
@@ -108,8 +106,7 @@ static void test_direct_ratio_single(void)
 }
 
 /* CIE 190:2010 Table 4, room index k = 2.67 (4H x 8H): F_GL1..4 = 0.280,
- * 0.165, 0.499, 0.006 as printed, quoted by 123VincentB/eulumdat-ugr
- * (background.py, commit 4df0459). The table is for CIE 190's array at
+ * 0.165, 0.499, 0.006 as printed. The table is for CIE 190's array at
  * spacing H (4 x 8 luminaires). */
 static void test_geometric_factors_against_cie190(void)
 {

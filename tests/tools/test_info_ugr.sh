@@ -4,17 +4,17 @@
 # the JSON against the text, a symmetric luminaire's two views alike, and
 # the files and options that cannot be rated.
 source "$(dirname "$0")/harness.sh"
-data=$CANDELA_SOURCE_DIR/tests/data/photometric/ugr
+data=$CANDELA_SOURCE_DIR/tests/data/photometric
 
 # CIE 190:2010's example luminaire at its SHR 1 against the table it prints
 # (rounded to 0.1; CIE 190 sums 10-degree zones where the program integrates
 # the table exactly: measured worst 0.12; tolerance 0.15).
-"$CANDELA" info --ugr --ugr-shr 1 --json "$data/sample_11.ldt" >"$tmp/cie.json"; rc=$?
+"$CANDELA" info --ugr --ugr-shr 1 --json "$data/cie190_example.ldt" >"$tmp/cie.json"; rc=$?
 check "CIE 190 example: exit 0" '[ $rc -eq 0 ]'
-python3 - "$tmp/cie.json" "$data/cie190_sample_11.csv" >"$tmp/cie.txt" 2>&1 <<'PY'
+python3 - "$tmp/cie.json" "$data/cie190_example_ugr.csv" >"$tmp/cie.txt" 2>&1 <<'PY'
 import json, sys
 t = json.load(open(sys.argv[1]))["ugr_table"]
-ref = [[float(v) for v in l.split(",")] for l in open(sys.argv[2]) if l.strip()]
+ref = [[float(v) for v in l.split(",")] for l in open(sys.argv[2]) if l.strip() and not l.startswith("#")]
 assert t["spacing_to_height"] == 1 and t["height_m"] == 2 and len(t["rooms"]) == 19, "shape"
 assert [(r["x_h"], r["y_h"]) for r in t["rooms"]][:3] == [(2, 2), (2, 3), (2, 4)], "room order"
 assert [s["ceiling"] for s in t["reflectances"]] == [0.7, 0.7, 0.5, 0.5, 0.3], "reflectances"
@@ -26,18 +26,18 @@ py=$?
 check "CIE 190 example: every cell within 0.15 of the printed table ($(tail -1 "$tmp/cie.txt"))" '[ $py -eq 0 ]'
 
 # Text and JSON agree: the text rounds the JSON's numbers to 0.1.
-"$CANDELA" info --ugr "$data/sample_02.ldt" >"$tmp/s02.txt"; rc=$?
-"$CANDELA" info --ugr --json "$data/sample_02.ldt" >"$tmp/s02.json"
-check "text: exit 0, the summary then the table" '[ $rc -eq 0 ] && grep -q "^flux " "$tmp/s02.txt" && grep -q "^UGR table" "$tmp/s02.txt"'
-check "text: 19 rooms" '[ "$(grep -cE "^  [0-9]+H x [0-9]+H " "$tmp/s02.txt")" -eq 19 ]'
-line=$(grep -E "^  4H x 8H " "$tmp/s02.txt")
+"$CANDELA" info --ugr "$data/cie190_example.ldt" >"$tmp/ex.txt"; rc=$?
+"$CANDELA" info --ugr --json "$data/cie190_example.ldt" >"$tmp/ex.json"
+check "text: exit 0, the summary then the table" '[ $rc -eq 0 ] && grep -q "^flux " "$tmp/ex.txt" && grep -q "^UGR table" "$tmp/ex.txt"'
+check "text: 19 rooms" '[ "$(grep -cE "^  [0-9]+H x [0-9]+H " "$tmp/ex.txt")" -eq 19 ]'
+line=$(grep -E "^  4H x 8H " "$tmp/ex.txt")
 want=$(python3 -c '
 import json, sys
 r = json.load(open(sys.argv[1]))["ugr_table"]["rooms"][10]
-print(" ".join("%.1f" % v for v in r["crosswise"] + r["endwise"]))' "$tmp/s02.json")
+print(" ".join("%.1f" % v for v in r["crosswise"] + r["endwise"]))' "$tmp/ex.json")
 got=$(echo "$line" | tr -d '|' | awk '{ $1 = $2 = $3 = ""; print }' | xargs)
 check "text: 4H x 8H is the JSON's row rounded ($got)" '[ "$got" = "$want" ]'
-check "json: the summary's keys are kept" 'grep -q "\"flux_lm\"" "$tmp/s02.json" && grep -q "\"ugr_table\"" "$tmp/s02.json"'
+check "json: the summary's keys are kept" 'grep -q "\"flux_lm\"" "$tmp/ex.json" && grep -q "\"ugr_table\"" "$tmp/ex.json"'
 
 # A luminaire with the same light in every C plane and a square opening
 # looks the same crosswise and endwise: the two halves of every row match.
@@ -63,12 +63,12 @@ sed 's/^\[TEST\] square Lambertian opening/[TEST] UV\n[_INTENSITYUNITS] mW\/sr/'
 check "radiant intensity (mW/sr): exit 1, said" '[ $rc -eq 1 ] && grep -q "radiant intensity" "$tmp/err"'
 
 # Options: one file only; --ugr-shr with --ugr, a ratio that divides the rooms.
-"$CANDELA" info --ugr "$data/sample_01.ldt" "$data/sample_02.ldt" >/dev/null 2>"$tmp/err"; rc=$?
+"$CANDELA" info --ugr "$data/cie190_example.ldt" "$data/warn_lorl.ldt" >/dev/null 2>"$tmp/err"; rc=$?
 check "--ugr with two files: usage error" '[ $rc -eq 2 ] && grep -q "\-\-ugr: expected one luminaire file" "$tmp/err"'
-"$CANDELA" info --ugr-shr 1 "$data/sample_01.ldt" >/dev/null 2>"$tmp/err"; rc=$?
+"$CANDELA" info --ugr-shr 1 "$data/cie190_example.ldt" >/dev/null 2>"$tmp/err"; rc=$?
 check "--ugr-shr without --ugr: usage error" '[ $rc -eq 2 ]'
-"$CANDELA" info --ugr --ugr-shr 0.3 "$data/sample_01.ldt" >/dev/null 2>"$tmp/err"; rc=$?
+"$CANDELA" info --ugr --ugr-shr 0.3 "$data/cie190_example.ldt" >/dev/null 2>"$tmp/err"; rc=$?
 check "--ugr-shr 0.3 (not a divisor of the rooms): usage error, said" '[ $rc -eq 2 ] && grep -q "does not divide" "$tmp/err"'
-"$CANDELA" info --ugr --ugr-shr none "$data/sample_01.ldt" >/dev/null 2>"$tmp/err"; rc=$?
+"$CANDELA" info --ugr --ugr-shr none "$data/cie190_example.ldt" >/dev/null 2>"$tmp/err"; rc=$?
 check "--ugr-shr none: usage error" '[ $rc -eq 2 ] && grep -q "expected a spacing to height ratio" "$tmp/err"'
 exit $fail

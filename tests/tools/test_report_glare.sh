@@ -8,7 +8,7 @@
 # exits 1 naming it.
 # ctest-timeout: 240
 source "$(dirname "$0")/harness.sh"
-cp "$CANDELA_SOURCE_DIR/tests/data/photometric/ugr/sample_02.ldt" "$tmp/panel.ldt"
+cp "$CANDELA_SOURCE_DIR/tests/data/photometric/cie190_example.ldt" "$tmp/panel.ldt"
 scene() { # UGR_L of the desk
   cat <<EOF
 {"version": 1,
