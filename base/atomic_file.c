@@ -8,6 +8,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "base/error_report.h"
+#include "base/strings.h"
+
 static const char temp_suffix[] = ".tmp.XXXXXX";
 
 /* The system's reason for errno code `code`, without shared state (XSI strerror_r). */
@@ -15,14 +18,6 @@ static const char *reason(int code, char *buf, size_t size)
 {
     if (strerror_r(code, buf, size) != 0) snprintf(buf, size, "error %d", code);
     return buf;
-}
-
-static char *copy_string(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *c = malloc(n);
-    if (c) memcpy(c, s, n);
-    return c;
 }
 
 static void reset(cdl_atomic_file *file)
@@ -43,7 +38,7 @@ cdl_status cdl_atomic_file_open(cdl_atomic_file *file, const char *path, cdl_err
     size_t n = strlen(path);
     if (path[n - 1] == '/')
         return cdl_error_set(err, CDL_ERR_INTERNAL, "%s: expected a file name, found a folder path", path);
-    file->final_path = copy_string(path);
+    file->final_path = cdl_string_copy(path);
     file->temp_path = malloc(n + sizeof temp_suffix);
     if (!file->final_path || !file->temp_path) {
         reset(file);
@@ -90,7 +85,7 @@ static void sync_parent_folder(const char *path)
     const char *slash = strrchr(path, '/');
     char *folder = NULL;
     if (!slash)
-        folder = copy_string(".");
+        folder = cdl_string_copy(".");
     else {
         size_t n = slash == path ? 1 : (size_t)(slash - path);
         folder = malloc(n + 1);

@@ -9,9 +9,12 @@
  *      the requirements;
  *   3. a map per rect and polygon grid (grid_map.h), then the surface
  *      maps' table, requirements and the room in 3D (report_surfaces.h);
- *   4. the luminaire schedule and a polar diagram per photometric file
- *      (lights/photometry/photometry_polar.h);
- *   5. method and accuracy: what the plan modelled and why, bounces, the
+ *   4. glare, with observers (report_glare.h): their UGR against their
+ *      limits and the plan with them on it;
+ *   5. the luminaire schedule and a polar diagram per photometric file
+ *      (lights/photometry/photometry_polar.h), and with observers each
+ *      file's UGR table;
+ *   6. method and accuracy: what the plan modelled and why, bounces, the
  *      error statement, the solve's warnings.
  * report_html.c and report_pdf.c lay the same blocks out, so the HTML and
  * the PDF carry the same text and figures.
@@ -56,6 +59,7 @@ typedef struct cdl_report_document {
     struct cdl_polar_diagram *diagrams;
     size_t diagram_count;
     struct cdl_report_surfaces *surfaces; /* the surface maps' section (report_surfaces.h), or NULL */
+    struct cdl_glare_plan *glare_plan; /* the observers on the plan (report_glare.c), or NULL */
 } cdl_report_document;
 
 /* Build the report of `input`; title NULL for the default ("Lighting

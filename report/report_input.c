@@ -7,23 +7,17 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "base/error_report.h"
 #include "base/file_bytes.h"
+#include "base/strings.h"
+#include "report/report_glare.h"
 
 /* summary.json and a requirements file are small; a CSV holds at most
  * CDL_GRID_MAX_POINTS rows of under 400 bytes. */
 #define SUMMARY_MAX_BYTES ((size_t)64 << 20)
 #define CSV_MAX_BYTES ((size_t)4 << 30)
 
-/* The columns every NAME.csv starts with (DESIGN.md). */
-static const char csv_header[] = "x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx";
-
-static char *join(const char *dir, const char *name, const char *ext)
-{
-    size_t n = strlen(dir) + strlen(name) + strlen(ext) + 2;
-    char *p = malloc(n);
-    if (p) snprintf(p, n, "%s/%s%s", dir, name, ext);
-    return p;
-}
+static const char csv_header[] = CDL_GRID_CSV_COLUMNS;
 
 static const cJSON *member(const cJSON *object, const char *dotted)
 {
@@ -266,7 +260,7 @@ static cdl_status read_grids(cdl_report_input *in, cdl_error *err)
         g->required_U0 = g->spec->required_U0;
         cdl_status st = cdl_grid_build(g->spec, &g->grid, err);
         if (st == CDL_OK) st = read_summary_grid(in, g, err);
-        char *csv = join(in->out_dir, g->spec->name, ".csv");
+        char *csv = cdl_path_join(in->out_dir, g->spec->name, ".csv");
         if (!csv) return cdl_error_out_of_memory(err);
         if (st == CDL_OK) st = read_csv(csv, g, err);
         if (st == CDL_OK) st = check_against_summary(csv, in->summary_path, g, err);
@@ -375,17 +369,18 @@ cdl_status cdl_report_input_read(const char *out_dir, const char *requirements_p
     *out = NULL;
     cdl_report_input *in = calloc(1, sizeof *in);
     if (!in) return cdl_error_out_of_memory(err);
-    in->out_dir = strdup(out_dir);
-    in->summary_path = join(out_dir, "summary", ".json");
+    in->out_dir = cdl_string_copy(out_dir);
+    in->summary_path = cdl_path_join(out_dir, "summary", ".json");
     cdl_status st = in->out_dir && in->summary_path ? CDL_OK : cdl_error_out_of_memory(err);
     if (st == CDL_OK) st = read_summary(in, err);
     if (st == CDL_OK) st = load_scene(in, err);
     if (st == CDL_OK) st = read_grids(in, err);
     if (st == CDL_OK && requirements_path) {
-        in->requirements_path = strdup(requirements_path);
+        in->requirements_path = cdl_string_copy(requirements_path);
         st = in->requirements_path ? read_requirements(in, requirements_path, err) : cdl_error_out_of_memory(err);
     }
     if (st == CDL_OK) st = read_types(in, err);
+    if (st == CDL_OK) st = cdl_report_glare_read(in, err);
     if (st != CDL_OK) {
         cdl_report_input_release(in);
         return st;
@@ -405,6 +400,7 @@ void cdl_report_input_release(cdl_report_input *in)
     for (size_t k = 0; k < in->type_count; ++k) cdl_photometry_release(in->types[k].photometry);
     free(in->grids);
     free(in->types);
+    free(in->observers);
     cdl_scene_release(in->scene);
     cJSON_Delete(in->summary);
     free(in->summary_path);

@@ -13,6 +13,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "radiometry/bounds.h"
 #include "radiometry/frame.h"
 
@@ -254,8 +255,12 @@ done:
     return 1;
 }
 
-int cdl_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hole_count,
-                            cdl_polygon_plane *plane, cdl_polygon_problem *problem)
+/* The plane of the polygon and its frame, checking what its computation
+ * needs (no repeated vertex, an area, every vertex in the plane); the
+ * in-plane checks are cdl_polygon_check's. *cancelled: the outline's lobes
+ * cancel (no net area), so its normal came from its spanning area. */
+static int find_plane(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hole_count, cdl_polygon_plane *plane,
+                      cdl_polygon_problem *problem, int *cancelled_out)
 {
     problem->defect = CDL_POLYGON_VALID;
     problem->ring = problem->other_ring = -1;
@@ -317,7 +322,15 @@ int cdl_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hol
     double edge_len = cdl_vec3_length(edge);
     plane->e1 = edge_len > 0.0 ? cdl_vec3_scale(edge, 1.0 / edge_len) : cdl_frame_from_normal(plane->normal).s;
     plane->e2 = cdl_vec3_normalize(cdl_vec3_cross(plane->normal, plane->e1));
+    *cancelled_out = cancelled;
+    return 1;
+}
 
+int cdl_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hole_count,
+                            cdl_polygon_plane *plane, cdl_polygon_problem *problem)
+{
+    int cancelled = 0;
+    if (!find_plane(outer, holes, hole_count, plane, problem, &cancelled)) return 0;
     int ok = 0;
     if (!check_in_plane(plane, outer, holes, hole_count, problem, &ok)) {
         /* Out of memory: the polygon cannot be judged; let triangulation report it. */
@@ -327,6 +340,32 @@ int cdl_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hol
      * tolerances) still has no usable normal. */
     if (ok && cancelled) return set_problem(problem, CDL_POLYGON_NO_AREA, -1, 0);
     return ok;
+}
+
+cdl_status cdl_polygon_plane_of_checked(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hole_count,
+                                        cdl_polygon_plane *plane, cdl_error *err)
+{
+    cdl_polygon_problem problem;
+    int cancelled = 0;
+    if (find_plane(outer, holes, hole_count, plane, &problem, &cancelled) && !cancelled) return CDL_OK;
+    return cdl_error_set(err, CDL_ERR_INTERNAL,
+                         "a polygon the scene loader did not check (defect %d at ring %ld vertex %zu)",
+                         (int)problem.defect, problem.ring, problem.vertex);
+}
+
+double cdl_polygon_outer_area(const cdl_polygon_plane *plane, const cdl_ring3 *outer)
+{
+    /* The shoelace formula in the plane's coordinates (Gauss's area formula). */
+    double twice = 0.0, x0, y0;
+    cdl_polygon_project(plane, outer->points[outer->count - 1], &x0, &y0);
+    for (size_t i = 0; i < outer->count; ++i) {
+        double x1, y1;
+        cdl_polygon_project(plane, outer->points[i], &x1, &y1);
+        twice += x0 * y1 - x1 * y0;
+        x0 = x1;
+        y0 = y1;
+    }
+    return 0.5 * fabs(twice);
 }
 
 cdl_status cdl_polygon_triangulate(const cdl_polygon_plane *plane, const cdl_ring3 *outer,

@@ -62,6 +62,16 @@ typedef struct cdl_polygon_problem {
 int cdl_polygon_check(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hole_count,
                             cdl_polygon_plane *plane, cdl_polygon_problem *problem);
 
+/* The plane of a polygon the scene loader has checked (cdl_polygon_check),
+ * without checking it again: its later users (scene geometry, polygon
+ * grids) take it from here. CDL_ERR_INTERNAL for a polygon that is not
+ * valid (the loader would have refused it). */
+cdl_status cdl_polygon_plane_of_checked(const cdl_ring3 *outer, const cdl_ring3 *holes, size_t hole_count,
+                                        cdl_polygon_plane *plane, cdl_error *err);
+
+/* Area of the outer ring (m^2), holes not taken out. */
+double cdl_polygon_outer_area(const cdl_polygon_plane *plane, const cdl_ring3 *outer);
+
 /* Plane coordinates of p, and back (the point on the plane). */
 void cdl_polygon_project(const cdl_polygon_plane *plane, cdl_vec3 p, double *x, double *y);
 cdl_vec3 cdl_polygon_lift(const cdl_polygon_plane *plane, double x, double y);

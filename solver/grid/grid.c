@@ -17,15 +17,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "solver/geometry/polygon.h"
 
 /* A polygon grid's raster has at most this many pixels along a side; the
  * pixel grows beyond p/4 when needed. */
 #define RASTER_MAX_SIDE 4096
-/* Points per p^2 of area that CGAL's refinement produces with edges <= p
- * (measured: 4.9 to 5.0 on squares from 4 m to 20 m), to refuse a spacing
- * that would take minutes before meshing. */
-#define POINTS_PER_SQUARE_SPACING 5.0
+/* Points per p^2 of area the mesh makes (grid.h: CDL_GRID_MESH_EDGE), to
+ * refuse a spacing that would take minutes before meshing. */
+#define POINTS_PER_SQUARE_SPACING 1.0
 
 /* EN 12464-1:2021, 4.3.3 (from EN 12464-1:2011, 4.4): maximum grid cell
  * size p = 0.2 x 5^log10(d), d the longer dimension of the calculation
@@ -107,10 +107,8 @@ static void raster_triangle(cdl_grid *g, double x0, double y1, double s, const d
 static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_error *err)
 {
     cdl_polygon_plane plane;
-    cdl_polygon_problem problem;
-    if (!cdl_polygon_check(&spec->outer, spec->holes, spec->hole_count, &plane, &problem))
-        return cdl_error_set(err, CDL_ERR_INPUT, "%s: expected a valid polygon, found defect %d at ring %ld vertex %zu",
-                             spec->json_path, (int)problem.defect, problem.ring, problem.vertex);
+    if (cdl_polygon_plane_of_checked(&spec->outer, spec->holes, spec->hole_count, &plane, err) != CDL_OK)
+        return cdl_error_prefix(err, "%s: ", spec->json_path);
     /* Bounding rectangle in the plane, axes along the first edge and across it. */
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
     for (size_t i = 0; i < spec->outer.count; ++i) {
@@ -125,11 +123,7 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
     double p = spec->spacing > 0.0 ? spec->spacing : cdl_grid_auto_spacing(fmax(width, height));
 
     /* Estimate the count from the outer ring's area before meshing. */
-    cdl_mesh2d mesh;
-    cdl_status st = cdl_polygon_triangulate(&plane, &spec->outer, NULL, 0, 0.0, SIZE_MAX, &mesh, err);
-    if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", spec->json_path);
-    double outer_area = mesh.area;
-    cdl_mesh2d_release(&mesh);
+    double outer_area = cdl_polygon_outer_area(&plane, &spec->outer);
     double estimate = POINTS_PER_SQUARE_SPACING * outer_area / (p * p);
     if (estimate > (double)CDL_GRID_MAX_POINTS)
         return cdl_error_set(err, CDL_ERR_INPUT,
@@ -143,8 +137,9 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
      * the estimate, plus room for grading down to small features, then stop
      * (a vertex a hair's breadth from an edge would otherwise take minutes). */
     double vertex_cap = fmin((double)CDL_GRID_MAX_POINTS, 2.0 * estimate + 10000.0);
-    st = cdl_polygon_triangulate(&plane, &spec->outer, spec->holes, spec->hole_count, p, (size_t)vertex_cap,
-                                       &mesh, err);
+    cdl_mesh2d mesh;
+    cdl_status st = cdl_polygon_triangulate(&plane, &spec->outer, spec->holes, spec->hole_count,
+                                            CDL_GRID_MESH_EDGE * p, (size_t)vertex_cap, &mesh, err);
     if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", spec->json_path);
     if (mesh.triangle_count > CDL_GRID_MAX_POINTS) {
         size_t n = mesh.triangle_count;

@@ -4,8 +4,8 @@
  * all of them (icache/icache.h), or, when the solve's cache file was made
  * for this scene, read from it and only interpolated. With surface maps
  * the grid is served by the solve's one cache, whose records the maps'
- * points placed first (integrate_surfaces.c). The grid's ambient
- * occlusion, when asked, comes from the same gathers.
+ * points placed first (integrate_surfaces.c). (Ambient occlusion is each
+ * point's own: integrate_direct.c.)
  */
 #include "solver/integrate/integrator.h"
 #include "solver/pool.h"
@@ -33,7 +33,7 @@ static cdl_status run_icache(cdl_solve_state *state, cdl_grid_job *job, cdl_erro
                                     .var_direct = job->var_direct,
                                     .E_indirect = gs->E_indirect,
                                     .var_indirect = job->var_indirect,
-                                    .ao = gs->ao,
+                                    .ao = NULL,
                                     .threads = state->threads,
                                     .progress = &state->options.progress,
                                     .stage = stage,
@@ -41,7 +41,7 @@ static cdl_status run_icache(cdl_solve_state *state, cdl_grid_job *job, cdl_erro
         st = cdl_icache_solve_shared(&state->icache, state->shared_cache, &target, err);
     } else {
         st = cdl_icache_solve_grid(&state->icache, &gs->grid, (size_t)job->plan->key, gs->E_direct, job->var_direct,
-                                   gs->E_indirect, job->var_indirect, gs->ao, records, state->threads,
+                                   gs->E_indirect, job->var_indirect, NULL, records, state->threads,
                                    &state->options.progress, stage, &state->icache_stats, err);
     }
     state->out->compute_seconds += cdl_pool_now_seconds() - t0;

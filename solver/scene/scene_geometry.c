@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/bounds.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
@@ -269,10 +270,7 @@ static cdl_status add_polygon(cdl_scene_geometry *g, cdl_geometry_piece *tmpl, c
                               cdl_error *err)
 {
     cdl_polygon_plane plane;
-    cdl_polygon_problem problem;
-    if (!cdl_polygon_check(&s->outer, s->holes, s->hole_count, &plane, &problem))
-        return cdl_error_set(err, CDL_ERR_INPUT, "invalid polygon (defect %d at ring %ld vertex %zu)",
-                             (int)problem.defect, problem.ring, problem.vertex);
+    if (cdl_polygon_plane_of_checked(&s->outer, s->holes, s->hole_count, &plane, err) != CDL_OK) return CDL_ERR_INTERNAL;
     cdl_mesh2d mesh;
     cdl_status st = cdl_polygon_triangulate(&plane, &s->outer, s->holes, s->hole_count, 0.0, SIZE_MAX, &mesh, err);
     if (st != CDL_OK) return st;

@@ -18,7 +18,7 @@
 #include "lights/emitters/emitter.h"
 #include "base/error.h"
 #include "solver/geometry/ray_scene.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 typedef struct cdl_scene_geometry cdl_scene_geometry;
 

@@ -13,6 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
+#include "base/strings.h"
+
 /* out = parent + separator + text, truncated to CDL_SCENE_PATH_MAX - 1 characters. */
 static void path_join(char *out, const char *parent, const char *separator, const char *text, const char *closing)
 {
@@ -246,9 +249,8 @@ cdl_status cdl_scene_json_read_string(const cdl_scene_parse *ctx, const cJSON *n
     if (!node && !required) return CDL_OK;
     if (!cJSON_IsString(node) || !node->valuestring || !node->valuestring[0])
         return cdl_scene_json_fail(ctx, path, "a non-empty string", node);
-    char *copy = malloc(strlen(node->valuestring) + 1);
+    char *copy = cdl_string_copy(node->valuestring);
     if (!copy) return cdl_error_out_of_memory(ctx->err);
-    strcpy(copy, node->valuestring);
     free(*out);
     *out = copy;
     return CDL_OK;
@@ -349,7 +351,7 @@ cdl_status cdl_scene_json_read_requirements(const cdl_scene_parse *ctx, const cJ
     return CDL_OK;
 }
 
-int cdl_scene_file_name_ok(const char *name)
+int cdl_scene_name_ok(const char *name)
 {
     size_t n = strlen(name);
     if (n == 0 || n > 64 || name[0] == '.' || name[0] == '-') return 0;

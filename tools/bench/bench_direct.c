@@ -1,4 +1,4 @@
-/* bench_direct.c - shadow-ray throughput of the direct solver against plain
+/* direct_throughput.c - shadow-ray throughput of the direct solver against plain
  * Embree occlusion queries on the same rays (the physical limit).
  *
  *   bench_direct [--points N] [--luminaires L] [--triangles T] [--threads K]
@@ -18,7 +18,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "solver/bench/bench_direct.h"
+#include "solver/bench/direct_throughput.h"
 
 static long arg_long(int argc, char **argv, const char *name, long dflt)
 {

@@ -1,7 +1,7 @@
-/* bench_direct.h - the direct solver's shadow-ray throughput against plain
+/* direct_throughput.h - the direct solver's shadow-ray throughput against plain
  * Embree occlusion queries on the same rays. Used by tools/bench/bench_direct. */
-#ifndef CANDELA_SOLVER_BENCH_DIRECT_H
-#define CANDELA_SOLVER_BENCH_DIRECT_H
+#ifndef CANDELA_SOLVER_BENCH_DIRECT_THROUGHPUT_H
+#define CANDELA_SOLVER_BENCH_DIRECT_THROUGHPUT_H
 
 #include <stddef.h>
 #include <stdint.h>
