@@ -1,5 +1,6 @@
 /* grow.c - doubling growth of arrays (grow.h). */
 #include "base/grow.h"
+#include "base/error_report.h"
 
 #include <stdint.h>
 #include <stdlib.h>

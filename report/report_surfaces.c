@@ -10,6 +10,7 @@
 #include "base/file_bytes.h"
 #include "report/report_numbers.h"
 #include "report/summary_table.h"
+#include "base/error_report.h"
 
 /* A map's CSV holds at most as many bytes as a grid's. */
 #define CSV_MAX_BYTES ((size_t)4 << 30)

@@ -13,6 +13,7 @@
 #include "solver/output/false_colour.h"
 #include "solver/output/surface_output.h"
 #include "solver/output/solution_write.h"
+#include "base/error_report.h"
 
 /* Layout, points: panels of at most this size each, side by side. */
 #define PANEL_MAX_W 250.0

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "solver/geometry/key_table.h"
+#include "base/error_report.h"
 
 /* An edge whose list is empty (it was split): kept in the table, since
  * keys are never removed. */

@@ -1,5 +1,6 @@
 /* key_table.c - open addressing, linear probing (key_table.h). */
 #include "solver/geometry/key_table.h"
+#include "base/error_report.h"
 
 #include <stdlib.h>
 

@@ -2,6 +2,7 @@
 // (remesh.h). With mesh2d_cgal.cpp, one of the two files that include CGAL;
 // no exception crosses the C API.
 #include "solver/geometry/remesh.h"
+#include "base/error_report.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "base/grow.h"
+#include "base/error_report.h"
 
 /* Passes of joining: a vertex inserted into one outline may make Delaunay
  * refinement split an edge of it, whose new vertex the other patch then

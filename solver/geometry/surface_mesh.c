@@ -8,6 +8,7 @@
 
 #include "base/grow.h"
 #include "solver/geometry/surface_patch.h"
+#include "base/error_report.h"
 
 /* Rounds of refinement at most: each halves the edges it splits, so this
  * takes an edge from a room's size to far below a millimetre; the vertex

@@ -8,6 +8,7 @@
 #include "base/grow.h"
 #include "radiometry/constants.h"
 #include "solver/geometry/remesh.h"
+#include "base/error_report.h"
 
 /* ---- the first mesh ------------------------------------------------------------ */
 

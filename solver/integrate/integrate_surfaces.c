@@ -32,6 +32,7 @@
 #include "solver/plan_json.h"
 #include "solver/pool.h"
 #include "solver/surfacemap/surface_patches.h"
+#include "base/error_report.h"
 
 /* The finest edge refinement makes: a sixteenth of the maps' typical
  * coarsest edge (4 cm in a 6 m room), and never below a centimetre. A
@@ -199,7 +200,7 @@ static cdl_status field(void *user, const cdl_field_probe *probes, size_t count,
     ++f->batch;
     cdl_direct_plan_grid(&state->direct, points, count, state->strategies);
     double t0 = cdl_pool_now_seconds();
-    cdl_status st = cdl_direct_solve_grid(&state->direct, state->strategies, &grid, key, E_dir, var_dir, NULL,
+    cdl_status st = cdl_direct_solve_grid(&state->direct, state->strategies, &grid, key, E_dir, var_dir,
                                           state->threads, &state->options.progress, NULL, stage, &state->direct_stats,
                                           err);
     if (st == CDL_OK && state->surface_method == CDL_METHOD_ICACHE)

@@ -9,6 +9,7 @@
 
 #include "base/atomic_file.h"
 #include "base/grow.h"
+#include "base/error_report.h"
 
 /* glTF 2.0 constants (the specification's enumerations). */
 #define GLB_MAGIC 0x46546C67u        /* "glTF" */

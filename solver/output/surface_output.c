@@ -12,6 +12,7 @@
 #include "solver/output/gltf_output.h"
 #include "solver/output/grid_result.h"
 #include "solver/output/lux_scale.h"
+#include "base/error_report.h"
 
 /* ---- statistics ------------------------------------------------------------------- */
 

@@ -585,7 +585,7 @@ static cdl_status name_map(const cdl_scene_parse *ctx, cdl_scene *scene, size_t 
             return cdl_scene_json_failf(ctx, p, "a mapped surface's name not used by another (ignoring case)",
                                         "\"%s\", already %s's", name, scene->surfaces[j].json_path);
         }
-    s->map_name = strdup_or_null(name);
+    s->map_name = cdl_string_copy(name);
     return s->map_name ? CDL_OK : cdl_error_out_of_memory(ctx->err);
 }
 

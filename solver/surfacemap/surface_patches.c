@@ -9,6 +9,7 @@
 #include "radiometry/constants.h"
 #include "solver/grid/grid.h"
 #include "solver/scene/scene_geometry.h"
+#include "base/error_report.h"
 
 /* The disk polygons' side counts: divisors of the fan's 224 segments. */
 static const uint32_t disk_sides[] = {32, 56, 112, CDL_DISK_SEGMENTS};

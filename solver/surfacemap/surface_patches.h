@@ -30,7 +30,7 @@
 
 #include "base/error.h"
 #include "solver/geometry/surface_mesh.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 typedef struct cdl_surface_patches {
     cdl_patch *patches;          /* their .surface numbers the maps 0 .. map_count */

@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 #define GRIDS "\"grids\": [{\"name\": \"g\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1]}]}]"
 #define RECT "\"type\": \"rect\", \"origin\": [0,0,0], \"u\": [1,0,0], \"v\": [0,1,0], \"reflectance\": 0.5"

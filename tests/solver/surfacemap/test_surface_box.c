@@ -25,7 +25,7 @@
 #include "check.h"
 #include "polygon_factor.h"
 #include "radiometry/constants.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 #define SIDE 3.0
 #define RHO 0.5
@@ -185,8 +185,8 @@ static cdl_scene *load(const char *json)
 static void solve(const cdl_scene *scene, cdl_solution *out)
 {
     cdl_error err;
-    cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
-    CHECK_OK(cdl_solve_scene(scene, &o, out, &err), &err);
+    cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
+    CHECK_OK(cdl_solve_scene_into(scene, &o, NULL, out, &err), &err);
 }
 
 /* The vertices of the map whose normal is n: their E against the reference. */
@@ -315,7 +315,7 @@ static void test_point_source(void)
                       "face %d: Em %.6g against %.6g", f, fc.Em, Em_ref);
         }
     }
-    if (scene) cdl_solution_release(&sol);
+    if (scene) cdl_solution_clear(&sol);
     cdl_scene_release(scene);
     free(fine.p);
     free(fine.B);
@@ -340,7 +340,7 @@ static void test_furnace(void)
         CHECK_MSG(cJSON_IsNumber(rounds) && rounds->valuedouble == 0.0, "furnace, direct: refined in %g rounds",
                   cJSON_IsNumber(rounds) ? rounds->valuedouble : -1.0);
         cJSON_Delete(plan);
-        cdl_solution_release(&sol);
+        cdl_solution_clear(&sol);
     }
     cdl_scene_release(scene);
 
@@ -388,7 +388,7 @@ static void test_furnace(void)
     /* The cache's noise splits few edges: near the coarsest mesh. */
     CHECK_MSG(m->vertex_count <= coarsest + coarsest / 10, "furnace: %zu vertices against %zu coarsest",
               m->vertex_count, coarsest);
-    cdl_solution_release(&sol);
+    cdl_solution_clear(&sol);
     cdl_scene_release(scene);
 }
 
