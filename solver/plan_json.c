@@ -247,6 +247,24 @@ void cdl_plan_json_totals(cdl_plan_json *plan, const cdl_solve_state *state)
         cJSON_AddNumberToObject(inter, "records", (double)state->icache_stats.records);
     }
     if (state->cache.path) describe_cache(plan->root, &state->cache);
+    if (state->scene->observer_count > 0) {
+        cJSON *glare = cJSON_AddObjectToObject(plan->root, "glare");
+        cJSON_AddNumberToObject(glare, "observers", (double)state->scene->observer_count);
+        cJSON_AddStringToObject(glare, "rating", "UGR by CIE 117:1995 eq. 4.1, Guth's position index from its Table 4.1");
+        cJSON_AddStringToObject(glare, "background",
+                                state->indirect ? "E at each eye facing its line of sight from skies and emitting "
+                                                  "surfaces (direct) and all interreflected light (paths), the "
+                                                  "luminaires' direct light left out"
+                                                : "E at each eye facing its line of sight from skies and emitting "
+                                                  "surfaces; nothing reflects");
+        cJSON *w = cJSON_AddObjectToObject(glare, "solid_angles");
+        cJSON_AddNumberToObject(w, "exact", (double)state->glare_exact);
+        cJSON_AddNumberToObject(w, "sampled", (double)state->glare_sampled);
+        cJSON_AddNumberToObject(w, "rays", (double)state->glare_stats.rays);
+        cJSON_AddStringToObject(w, "why", "exact where no surface can come between an eye and a luminaire's "
+                                          "luminous parts; else the visible fraction sampled by shadow rays to the "
+                                          "target");
+    }
 }
 
 cdl_status cdl_plan_json_print(const cdl_plan_json *plan, char **out, cdl_error *err)

@@ -60,30 +60,38 @@ cdl_status cdl_grid_solution_alloc_vertical_stderr(cdl_grid_solution *gs, cdl_er
     return CDL_OK;
 }
 
+void cdl_grid_solution_release(cdl_grid_solution *gs)
+{
+    free(gs->name);
+    cdl_grid_release(&gs->grid);
+    free(gs->E);
+    free(gs->E_direct);
+    free(gs->E_indirect);
+    free(gs->E_stderr);
+    free(gs->ao);
+    free(gs->ao_stderr);
+    free(gs->Ez);
+    free(gs->Esz);
+    free(gs->Ez_stderr);
+    free(gs->Esz_stderr);
+    free(gs->L);
+    free(gs->rho);
+    memset(gs, 0, sizeof *gs);
+}
+
 void cdl_solution_clear(cdl_solution *s)
 {
     if (!s) return;
-    for (size_t g = 0; g < s->grid_count && s->grids; ++g) {
-        cdl_grid_solution *gs = &s->grids[g];
-        free(gs->name);
-        cdl_grid_release(&gs->grid);
-        free(gs->E);
-        free(gs->E_direct);
-        free(gs->E_indirect);
-        free(gs->E_stderr);
-        free(gs->ao);
-        free(gs->ao_stderr);
-        free(gs->Ez);
-        free(gs->Esz);
-        free(gs->Ez_stderr);
-        free(gs->Esz_stderr);
-        free(gs->L);
-        free(gs->rho);
-    }
+    for (size_t g = 0; g < s->grid_count && s->grids; ++g) cdl_grid_solution_release(&s->grids[g]);
     free(s->grids);
     free(s->plan_json);
     for (size_t i = 0; i < s->warning_count; ++i) free(s->warnings[i]);
     free(s->warnings);
+    for (size_t i = 0; i < s->observer_count && s->observers; ++i) {
+        free(s->observers[i].sources);
+        free(s->observers[i].excluded);
+    }
+    free(s->observers);
     memset(s, 0, sizeof *s);
 }
 

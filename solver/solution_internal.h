@@ -55,6 +55,40 @@ typedef struct cdl_grid_solution {
     cdl_power_summary power;
 } cdl_grid_solution;
 
+/* One luminaire rated at an observer (CIE 117:1995 UGR): its term
+ * L^2 omega / p^2 in the sum. */
+typedef struct cdl_glare_source_result {
+    size_t luminaire;                 /* its index in scene->luminaires */
+    double L_cd_m2;                   /* luminance of its luminous parts towards the eye, I / A_p */
+    double omega_sr;                  /* their solid angle at the eye, less what surfaces hide */
+    double omega_stderr_sr;           /* its standard error (0 where nothing can hide them) */
+    int omega_exact;                  /* 1: the luminous parts' solid angle is exact; 0: CIE 117's A_p / r^2
+                                       * (cylinders, ellipsoids: glare/glare_source.h) */
+    double p;                         /* Guth's position index */
+    double term, term_stderr;         /* L^2 omega / p^2 (cd^2 m^-4 sr) and its standard error */
+} cdl_glare_source_result;
+
+/* A luminaire that adds nothing to an observer's rating, and why. */
+typedef struct cdl_glare_exclusion {
+    size_t luminaire;                 /* its index in scene->luminaires */
+    const char *reason;               /* static text: "behind the eye", "beyond T/R = 3", "below the line of
+                                       * sight", "above the position index table", "no light towards the
+                                       * eye", "no luminous area: a point source cannot be rated", ... */
+} cdl_glare_exclusion;
+
+/* The glare at one observer (scene->observers[i]). */
+typedef struct cdl_observer_result {
+    int defined;                      /* 0: no rated luminaire in view sends light to the eye, or the
+                                       * background is dark: no rating (ugr 0) */
+    double ugr, ugr_stderr;           /* UGR = 8 log10((0.25 / Lb) sum terms) and its standard error */
+    double background_cd_m2;          /* Lb = E_b / pi, E_b at the eye on the plane facing the line of sight
+                                       * from everything but the luminaires' direct light */
+    double background_stderr_cd_m2;
+    cdl_glare_source_result *sources; /* the luminaires in view, in scene order */
+    size_t source_count;
+    cdl_glare_exclusion *excluded;    /* the others (skies excepted: they are background) */
+    size_t excluded_count;
+} cdl_observer_result;
 
 struct cdl_solution {
     cdl_method method;                /* the method actually used */
@@ -77,6 +111,9 @@ struct cdl_solution {
      * surfaces meet. Each a sentence naming the luminaire or grid. */
     char **warnings;
     size_t warning_count;
+    /* Glare (the glare integrator): one result per scene observer, in order. */
+    cdl_observer_result *observers;
+    size_t observer_count;
 };
 
 /* Zeroed arrays for the grid's points (gs->grid built): E, E_direct,
@@ -91,6 +128,9 @@ cdl_status cdl_grid_solution_alloc_outputs(cdl_grid_solution *gs, const cdl_grid
 /* Zeroed Ez_stderr / Esz_stderr for the vertical outputs gs has. Ownership:
  * the grid solution's. Errors: CDL_ERR_INTERNAL (out of memory). */
 cdl_status cdl_grid_solution_alloc_vertical_stderr(cdl_grid_solution *gs, cdl_error *err);
+
+/* Free a grid solution's arrays, its name and its grid, and zero it. */
+void cdl_grid_solution_release(cdl_grid_solution *gs);
 
 /* Append a warning (printf-style) to the solution's list; CDL_ERR_INTERNAL
  * when out of memory. Not thread-safe for one solution. */

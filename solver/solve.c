@@ -27,26 +27,26 @@ static const cdl_integrator *const integrators[] = {
     &cdl_integrator_icache,
     &cdl_integrator_pathtrace,
     &cdl_integrator_vertical,
+    &cdl_integrator_glare,
 };
 
-/* One grid through the table, then its parts combined. */
-static cdl_status solve_grid(cdl_solve_state *state, size_t g, cdl_error *err)
+/* One job through the table: a grid (then its parts combined) or the
+ * observers (their glare, from the background's light at the eyes). */
+static cdl_status solve_job(cdl_solve_state *state, cdl_grid_job *job, cdl_error *err)
 {
-    cdl_grid_job job = {.index = g, .spec = &state->scene->grids[g], .gs = &state->out->grids[g],
-                        .plan = &state->grids[g]};
-    size_t n = job.gs->grid.count ? job.gs->grid.count : 1;
-    job.var_direct = calloc(n, sizeof *job.var_direct);
-    job.var_indirect = calloc(n, sizeof *job.var_indirect);
-    cdl_status st = job.var_direct && job.var_indirect ? CDL_OK : cdl_error_out_of_memory(err);
+    size_t n = job->gs->grid.count ? job->gs->grid.count : 1;
+    job->var_direct = calloc(n, sizeof *job->var_direct);
+    job->var_indirect = calloc(n, sizeof *job->var_indirect);
+    cdl_status st = job->var_direct && job->var_indirect ? CDL_OK : cdl_error_out_of_memory(err);
     for (size_t k = 0; st == CDL_OK && k < sizeof integrators / sizeof *integrators; ++k)
-        if (integrators[k]->applies(state, &job)) st = integrators[k]->run(state, &job, err);
-    if (st == CDL_OK) {
-        cdl_plan_json_grid(state->plan, state, &job);
-        st = cdl_solve_finish_grid(state, &job, err);
+        if (integrators[k]->applies(state, job)) st = integrators[k]->run(state, job, err);
+    if (st == CDL_OK && !job->observers) {
+        cdl_plan_json_grid(state->plan, state, job);
+        st = cdl_solve_finish_grid(state, job, err);
     }
-    free(job.var_direct);
-    free(job.var_indirect);
-    free(job.on_surface);
+    free(job->var_direct);
+    free(job->var_indirect);
+    free(job->on_surface);
     return st;
 }
 
@@ -93,7 +93,15 @@ cdl_status cdl_solve_scene_into(const cdl_scene *scene, const cdl_solve_options 
     state.scene = &settled;
 
     st = cdl_solve_plan(&state, err);
-    for (size_t g = 0; st == CDL_OK && g < scene->grid_count; ++g) st = solve_grid(&state, g, err);
+    for (size_t g = 0; st == CDL_OK && g < settled.grid_count; ++g) {
+        cdl_grid_job job = {.index = g, .spec = &settled.grids[g], .gs = &out->grids[g], .plan = &state.grids[g]};
+        st = solve_job(&state, &job, err);
+    }
+    if (st == CDL_OK && settled.observer_count) {
+        cdl_grid_job job = {.index = settled.grid_count, .observers = 1, .direct = &state.background,
+                            .spec = &state.observer_spec, .gs = &state.observer_points, .plan = &state.observer_plan};
+        st = solve_job(&state, &job, err);
+    }
     if (st == CDL_OK) st = cdl_solve_finish(&state, err);
     cdl_solve_state_release(&state);
     if (st != CDL_OK) {

@@ -132,6 +132,8 @@ cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_conte
                                   cdl_error *err)
 {
     cdl_status st = CDL_OK;
+    /* a scene of observers alone has no grid point for a light to reach */
+    if (out->grid_count == 0) return CDL_OK;
     if (ctx->light_count == 0) {
         return cdl_solution_add_warning(out, err,
                                         "the scene has no luminaire and no emitting surface: every grid is at 0 lx "

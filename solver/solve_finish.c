@@ -1,4 +1,5 @@
 /* solve_finish.c - the last step of a solve: each grid's parts combined, then what the solve says besides. */
+#include "solver/solve_observers.h"
 #include "solver/solve_plan.h"
 
 #include <math.h>
@@ -84,7 +85,8 @@ static cdl_status warn_edge_points(cdl_solve_state *state, cdl_error *err)
 /* Rays and records over the whole solve. */
 static void count_totals(cdl_solve_state *state)
 {
-    uint64_t rays = state->direct_stats.rays + state->vertical_stats.rays + state->vertical_stats.direct.rays;
+    uint64_t rays = state->direct_stats.rays + state->vertical_stats.rays + state->vertical_stats.direct.rays +
+                    state->glare_stats.rays;
     if (state->indirect) {
         cdl_path_stats all = state->pathtrace_stats;
         cdl_path_stats_add(&all, &state->icache_stats.paths);
@@ -118,6 +120,7 @@ cdl_status cdl_solve_finish(cdl_solve_state *state, cdl_error *err)
 void cdl_solve_state_release(cdl_solve_state *state)
 {
     cdl_plan_json_release(state->plan);
+    cdl_solve_observers_release(state);
     if (state->records)
         for (size_t g = 0; g < state->scene->grid_count; ++g) cdl_icache_records_release(&state->records[g]);
     free(state->records);

@@ -20,6 +20,7 @@
 #include "solver/pool.h"
 #include "solver/scene/scene_occluders.h"
 #include "solver/solve_cache.h"
+#include "solver/solve_observers.h"
 
 /* Ambient-occlusion samples per point implied by the quality level (an
  * explicit ao_samples overrides). Direct light samples to the target. */
@@ -245,6 +246,8 @@ cdl_status cdl_solve_plan(cdl_solve_state *state, cdl_error *err)
         st = plan_grid(state, g, err);
         if (st != CDL_OK) return st;
     }
+    st = cdl_solve_plan_observers(state, err);
+    if (st != CDL_OK) return st;
     if (state->options.cache_path) return cdl_solve_cache_open(state, err);
     return CDL_OK;
 }

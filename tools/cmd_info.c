@@ -10,12 +10,13 @@
 #include "cli_args.h"
 #include "command.h"
 #include "info_output.h"
+#include "info_ugr.h"
 #include "lights/photometry/photometry.h"
 #include "lights/photometry/photometry_metadata.h"
 
 static void print_help(FILE *out)
 {
-    fputs("usage: candela info LUMINAIRE [--json] [--strict] [--plot OUT.svg]\n"
+    fputs("usage: candela info LUMINAIRE [--json] [--strict] [--plot OUT.svg] [--ugr [--ugr-shr R]]\n"
           "       candela info FILE_OR_FOLDER... [--json] [--strict]\n"
           "\n"
           "Reads an IES LM-63 (any version) or EULUMDAT file and prints a summary:\n"
@@ -32,6 +33,22 @@ static void print_help(FILE *out)
           "             through the peak dotted when it is neither; type B files in\n"
           "             their V and H planes; the scale fitted to the peak, which is\n"
           "             printed with the beam angles)\n"
+          "  --ugr      also the luminaire's UGR table as catalogues print it (CIE\n"
+          "             190:2010): the 19 standard rooms 2H x 2H ... 12H x 8H (X across\n"
+          "             the line of sight, Y along it, H = 2 m from the eye up to the\n"
+          "             luminaires), the luminaires at spacing 0.25 H over the whole\n"
+          "             ceiling, viewed crosswise (their C0 plane along the line of sight)\n"
+          "             and endwise, reflectances ceiling/walls/floor 0.70/0.50/0.20,\n"
+          "             0.70/0.30/0.20, 0.50/0.50/0.20, 0.50/0.30/0.20, 0.30/0.30/0.20;\n"
+          "             UGR = 8 log10((0.25 / Lb) sum L^2 omega / p^2) (CIE 117:1995) with\n"
+          "             L = I / A the luminance of the file's luminous opening towards\n"
+          "             the eye, omega = A / r^2, p Guth's position index (CIE 117\n"
+          "             Table 4.1), and Lb the walls' indirect illuminance over pi by\n"
+          "             CIE 190's flux transfer between ceiling, walls and floor. The\n"
+          "             luminaire's real flux (\"corrected\" table). A file without a\n"
+          "             luminous opening (a point) cannot be rated: exit 1.\n"
+          "  --ugr-shr R  the spacing to height ratio of the table (default 0.25; CIE\n"
+          "             190's own example uses 1)\n"
           "\n"
           "Several files, or folders (every .ies and .ldt file in them and their\n"
           "subfolders, in name order): one line per file, then how many were read,\n"
@@ -83,7 +100,11 @@ static void print_help(FILE *out)
           "radiometric, warnings. A radiometric file has radiant_flux_w,\n"
           "max_radiant_intensity_w_sr, zone_flux_w, an opening \"radiance\" table\n"
           "(average_w_m2_sr, maximum_w_m2_sr), a null bug_rating, and null lumens\n"
-          "and candela.\n"
+          "and candela. With --ugr, ugr_table (method, spacing_to_height, height_m,\n"
+          "flux_lm, output_factor, reflectances, and rooms: x_h, y_h, luminaires,\n"
+          "room_index, direct_floor_lm, direct_walls_lm, direct_ceiling_lm,\n"
+          "background_cd_m2, crosswise and endwise, five values each in the\n"
+          "order of reflectances).\n"
           "\n"
           "Exit status: 0 success, 1 bad input (any file), 2 usage error.\n", out);
 }
@@ -239,7 +260,11 @@ static int run_many(const file_list *files, int json, const cdl_photometry_read_
 
 static int run(int argc, char **argv)
 {
-    cdl_cli_option options[] = {{"json", 0, 0, 0, NULL}, {"strict", 0, 0, 0, NULL}, {"plot", 0, 1, 0, NULL}};
+    cdl_cli_option options[] = {{"json", 0, 0, 0, NULL},
+                                {"strict", 0, 0, 0, NULL},
+                                {"plot", 0, 1, 0, NULL},
+                                {"ugr", 0, 0, 0, NULL},
+                                {"ugr-shr", 0, 1, 0, NULL}};
     const size_t count = sizeof options / sizeof options[0];
     cdl_cli_result r;
     if (cdl_cli_scan(argc, argv, options, count, &r) != 0) {
@@ -259,6 +284,14 @@ static int run(int argc, char **argv)
     ro.strict = cdl_cli_find(options, count, "strict")->present;
     int json = cdl_cli_find(options, count, "json")->present;
     const cdl_cli_option *plot = cdl_cli_find(options, count, "plot");
+    int ugr = cdl_cli_find(options, count, "ugr")->present;
+    const cdl_cli_option *shr = cdl_cli_find(options, count, "ugr-shr");
+    cdl_ugr_table_options uo = CDL_UGR_TABLE_OPTIONS_DEFAULT;
+    if (shr->present && !ugr) {
+        fprintf(stderr, "candela info: --ugr-shr: goes with --ugr\n(see 'candela info --help')\n");
+        return CDL_EXIT_USAGE;
+    }
+    if (shr->present && cdl_info_ugr_parse_shr(shr->value, &uo.spacing_to_height) != 0) return CDL_EXIT_USAGE;
     /* Folders, and more than one file, are a batch: a line per file. */
     file_list files = {0};
     int batch = r.positional_count > 1;
@@ -272,10 +305,10 @@ static int run(int argc, char **argv)
             return CDL_EXIT_INTERNAL;
         }
     }
-    if (batch && plot->present) {
+    if (batch && (plot->present || ugr)) {
         list_free(&files);
-        fprintf(stderr, "candela info: --plot: expected one luminaire file, found %zu files and folders\n"
-                        "(see 'candela info --help')\n", r.positional_count);
+        fprintf(stderr, "candela info: --%s: expected one luminaire file, found %zu files and folders\n"
+                        "(see 'candela info --help')\n", plot->present ? "plot" : "ugr", r.positional_count);
         return CDL_EXIT_USAGE;
     }
     if (batch) {
@@ -300,6 +333,12 @@ static int run(int argc, char **argv)
         return CDL_EXIT_INTERNAL;
     }
     int rc = CDL_EXIT_OK;
+    cdl_ugr_table table;
+    if (ugr && (st = cdl_ugr_table_compute(p, &uo, &table, &err)) != CDL_OK) {
+        fprintf(stderr, "candela info: %s: %s\n", path, err.message);
+        cdl_photometry_release(p);
+        return (int)st;
+    }
     if (plot->present) {
         const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
         const char *name = m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT ? m->ldt_luminaire_name
@@ -314,8 +353,17 @@ static int run(int argc, char **argv)
             return (int)st;
         }
     }
-    if (json) rc = put_json(cdl_info_json(path, p, &f));
-    else cdl_info_print_text(path, p, &f);
+    if (json) {
+        cJSON *j = cdl_info_json(path, p, &f);
+        if (j && ugr) cJSON_AddItemToObject(j, "ugr_table", cdl_info_ugr_json(&table));
+        rc = put_json(j);
+    } else {
+        cdl_info_print_text(path, p, &f);
+        if (ugr) {
+            printf("\n");
+            cdl_info_ugr_print(&table, stdout);
+        }
+    }
     cdl_photometry_release(p);
     if (fflush(stdout) != 0) {
         fprintf(stderr, "candela info: cannot write the output\n");

@@ -30,6 +30,15 @@ static void print_help(FILE *out)
           "output; installed power and W/m2 when the luminaire files give their\n"
           "input watts; method, settings, time, rays, the plan: what was modelled\n"
           "and why; warnings: whatever lit nothing, each also on stderr).\n"
+          "With observers (scene \"observers\", or grids of \"type\": \"observers\"):\n"
+          "  glare.csv  one row per observer: name,x,y,z,view_x,view_y,view_z,ugr,\n"
+          "             ugr_stderr,background_cd_m2,background_stderr_cd_m2\n"
+          "and summary.json's \"glare\": each observer's UGR (CIE 117:1995) with its\n"
+          "standard error, background luminance, and every luminaire as a source\n"
+          "(L, solid angle less what surfaces hide, position index, term) or\n"
+          "excluded with the reason (behind the eye, beyond the table, no luminous\n"
+          "area). A scene with observers and no luminaire that can be rated, or an\n"
+          "eye on or inside a surface, is refused (exit 1).\n"
           "Every file is written to a temporary name and renamed when complete.\n"
           "\n"
           "Methods (scene \"solver\".\"method\"): direct computes direct light only,\n"
@@ -216,6 +225,18 @@ static int run(int argc, char **argv)
                 if (r.Ez) printf("  Ez %.4g lx", s.Ez.avg);
                 if (r.Esz) printf("  Esz %.4g lx", s.Esz.avg);
                 if (r.L) printf("  L %.4g cd/m2", s.L.avg);
+                printf("\n");
+            }
+            for (size_t i = 0; i < sol.observer_count; ++i) {
+                const cdl_observer_result *o = &sol.observers[i];
+                const cdl_observer_spec *os = &scene->observers[i];
+                printf("%-16s UGR ", os->name);
+                if (o->defined) printf("%5.1f +- %.2g", o->ugr, o->ugr_stderr);
+                else printf("%5s", "-");
+                printf("  Lb %.4g cd/m2  %zu source%s in view", o->background_cd_m2, o->source_count,
+                       o->source_count == 1 ? "" : "s");
+                if (os->required_ugr > 0.0 && o->defined)
+                    printf("  UGR_L %g: %s", os->required_ugr, o->ugr <= os->required_ugr ? "pass" : "FAIL");
                 printf("\n");
             }
             printf("method %s, %.3f s, %llu rays; results in %s\n", cdl_method_name(sol.method), sol.seconds,

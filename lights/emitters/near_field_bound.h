@@ -47,12 +47,13 @@ typedef struct cdl_near_field_bound {
 /* The bound for the goniometric luminaire of `params` (its photometry has
  * a spread opening, cdl_luminous_opening_is_spread). For a flat opening K
  * is the largest relative difference between the point model and the
- * opening's cubature (to 1e-7) over 842 directions of emission (every 5 degrees of polar angle, 15 of azimuth), and a quarter more for the directions between them, each seen
- * from 20 R by a receiver facing the luminaire, times (20)^2; the
- * difference counts relative to the point model's value there, but to no
- * less than a tenth of the peak (in a beam's fringe the relative error
- * grows without bound on light that is a few per cent of the luminaire's). Errors:
- * those of creating the emitters. */
+ * opening's cubature (to 1e-6) over 842 directions of emission (every 5
+ * degrees of polar angle, 15 of azimuth), each seen from 20 R by a receiver
+ * facing the luminaire, times 20^2, and a quarter more for the directions
+ * between them; the difference counts relative to the point model's value
+ * there, but to no less than a tenth of the peak (in a beam's fringe the
+ * relative error grows without bound on light that is a few per cent of
+ * the luminaire's). Errors: those of creating the emitters. */
 cdl_status cdl_near_field_bound_measure(const cdl_goniometric_params *params, cdl_near_field_bound *out,
                                         cdl_error *err);
 

@@ -46,8 +46,9 @@ static cdl_status find_points_on_surfaces(const cdl_solve_state *state, cdl_grid
 static cdl_status run_direct(cdl_solve_state *state, cdl_grid_job *job, cdl_error *err)
 {
     cdl_grid_solution *gs = job->gs;
-    gs->edge_point_count = cdl_direct_find_edge_points(&state->direct, &gs->grid, &gs->first_edge_point);
-    cdl_direct_plan_grid(&state->direct, gs->grid.points, gs->grid.count, state->strategies);
+    const cdl_direct_context *direct = job->direct ? job->direct : &state->direct;
+    gs->edge_point_count = cdl_direct_find_edge_points(direct, &gs->grid, &gs->first_edge_point);
+    cdl_direct_plan_grid(direct, gs->grid.points, gs->grid.count, state->strategies);
     memset(state->routes, 0, (state->lights.count + 1) * sizeof *state->routes);
     cdl_status st = find_points_on_surfaces(state, job, err);
     if (st != CDL_OK) return st;
@@ -62,7 +63,7 @@ static cdl_status run_direct(cdl_solve_state *state, cdl_grid_job *job, cdl_erro
                                   job->on_surface_count ? job->on_surface : NULL};
     state->direct_stats.routes = state->routes;
     double t0 = cdl_pool_now_seconds();
-    st = cdl_direct_solve_grid(&state->direct, state->strategies, &gs->grid, (size_t)job->plan->key, gs->E_direct,
+    st = cdl_direct_solve_grid(direct, state->strategies, &gs->grid, (size_t)job->plan->key, gs->E_direct,
                                job->var_direct, state->threads, &state->options.progress, &outputs, stage,
                                &state->direct_stats, err);
     state->direct_stats.routes = NULL;

@@ -102,6 +102,12 @@ void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats)
  * never changes it). */
 cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *path, cdl_error *err);
 
+/* Enough for "%.17g" of any double: sign, 17 digits, point, "e-308". */
+#define CDL_CSV_NUMBER_SIZE 32
+/* A number as the CSV files write it: the shortest of 15 to 17 significant
+ * digits that reads back as exactly v (csv_output.c). */
+void cdl_csv_format_number(double v, char buf[CDL_CSV_NUMBER_SIZE]);
+
 /* NAME.exr (rect and polygon grids; a grid without a raster is refused):
  * 32-bit float channels, one pixel per raster pixel, top row first:
  *   E           total illuminance, lux

@@ -15,6 +15,7 @@
 #include "base/error_report.h"
 #include "base/sized_struct.h"
 #include "base/strings.h"
+#include "solver/output/glare_output.h"
 #include "solver/output/grid_result.h"
 #include "solver/scene/scene_internal.h"
 #include "solver/solution_internal.h"
@@ -195,6 +196,14 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
     cJSON_AddNumberToObject(root, "rays", (double)sol->rays);
     cJSON *plan = cJSON_Parse(sol->plan_json ? sol->plan_json : "{}");
     if (plan) cJSON_AddItemToObject(root, "plan", plan);
+    if (scene->observer_count > 0) {
+        cJSON *glare = cdl_glare_summary_json(scene, sol);
+        if (!glare) {
+            cJSON_Delete(root);
+            return cdl_error_out_of_memory(err);
+        }
+        cJSON_AddItemToObject(root, "glare", glare);
+    }
     cJSON *warnings = cJSON_AddArrayToObject(root, "warnings");
     for (size_t w = 0; w < sol->warning_count; ++w) cJSON_AddItemToArray(warnings, cJSON_CreateString(sol->warnings[w]));
     char *text = cJSON_Print(root);
@@ -262,6 +271,11 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
         free(csv);
         free(exr);
         free(png);
+    }
+    if (st == CDL_OK && scene->observer_count > 0) {
+        char *glare = cdl_path_join(out_dir, "glare", ".csv");
+        st = glare ? cdl_glare_write_csv(scene, sol, glare, err) : cdl_error_out_of_memory(err);
+        free(glare);
     }
     if (st == CDL_OK) {
         char *summary = cdl_path_join(out_dir, "summary", ".json");

@@ -225,6 +225,35 @@ double cdl_solver_settings_target(const cdl_solver_settings *settings);
 #define CDL_SCENE_MAX_SAMPLES 16777216
 
 
+/* ---- observers (glare) ---------------------------------------------------- */
+
+/* Most observers one scene may place (entries, their copies and the points
+ * of observer grids). */
+#define CDL_SCENE_MAX_OBSERVERS 100000
+
+/* An observer rated for discomfort glare (CIE 117:1995 UGR): an eye and a
+ * horizontal line of sight. An entry of "observers" places one (at "eye"),
+ * or many ("array" in its own frame: rows along the line of sight and to
+ * its left; or "positions"); a grid of "type": "observers" places one at
+ * each cell centre of a rect, as a rect grid places points, all looking
+ * along its "view". Each placement is its own spec, in order. */
+typedef struct cdl_observer_spec {
+    char json_path[CDL_JSON_PATH_SIZE];  /* "observers[1]", or "grids[2]" for an observer grid */
+    char *name;                          /* the entry's name; with copies "NAME[k]" (k from 0 in order) */
+    size_t entry;                        /* the entry's index in "observers" (or in "grids") */
+    size_t copy, copy_count;
+    int array_index[2];                  /* "array": [i, j]; an observer grid: [i, j] of the cell; else [k, 0] */
+    int from_grid;                       /* 1: a point of an observer grid */
+    cdl_vec3 eye;                        /* metres */
+    cdl_vec3 view;                       /* the line of sight: unit and horizontal (z = 0); the loader refuses
+                                          * a view more than 1 degree from horizontal */
+    double required_ugr;                 /* "requirements": {"UGR_L": x}, EN 12464-1's limit; 0 when none */
+} cdl_observer_spec;
+
+/* The most a line of sight may rise or fall from the horizontal, in
+ * degrees: CIE 117's position index is for a horizontal line of sight. */
+#define CDL_OBSERVER_TILT_MAX_DEG 1.0
+
 /* ---- the scene ------------------------------------------------------------ */
 
 struct cdl_scene {
@@ -234,8 +263,10 @@ struct cdl_scene {
     size_t surface_count;
     cdl_luminaire_spec *luminaires;
     size_t luminaire_count;
-    cdl_grid_spec *grids;
+    cdl_grid_spec *grids;                /* illuminance grids (observer grids are in observers) */
     size_t grid_count;
+    cdl_observer_spec *observers;        /* "observers" and the points of observer grids, in order */
+    size_t observer_count;
     cdl_solver_settings settings;
 };
 

@@ -5,6 +5,7 @@
  */
 #include "solver/scene/scene_parse.h"
 
+#include <ctype.h>
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
@@ -328,4 +329,13 @@ cdl_status cdl_scene_json_read_path(const cdl_scene_parse *ctx, const cJSON *nod
     free(*out);
     *out = full;
     return CDL_OK;
+}
+
+int cdl_scene_name_ok(const char *name)
+{
+    size_t n = strlen(name);
+    if (n == 0 || n > 64 || name[0] == '.' || name[0] == '-') return 0;
+    for (size_t i = 0; i < n; ++i)
+        if (!isalnum((unsigned char)name[i]) && name[i] != '.' && name[i] != '_' && name[i] != '-') return 0;
+    return 1;
 }

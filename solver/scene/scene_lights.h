@@ -29,6 +29,7 @@
 typedef struct cdl_scene_light {
     const cdl_emitter *emitter;
     char label[160];                  /* "luminaires[3]" or "surfaces[2]" (+ face) for the plan */
+    size_t luminaire;                 /* its index in scene->luminaires; SIZE_MAX for an emitting surface */
     uint32_t owner;                   /* geometry piece id of its own surface, UINT32_MAX if none */
     int has_closed_form;              /* area or environment (uniform, overcast or image) */
     int is_environment;
@@ -82,6 +83,10 @@ typedef struct cdl_scene_lights {
     size_t count;
     cdl_photometry **photometries;  /* owned, one per goniometric entry (its copies share it) */
     size_t photometry_count;
+    /* Per photometry, its opening's near-field bound (near_field_bound.h),
+     * measured once in the luminaire's own frame when a copy first needs it. */
+    struct cdl_near_field_bound *near_bounds;
+    unsigned char *near_bound_known;
     /* Per luminaire of the scene (scene->luminaires[k]): its photometry, borrowed; NULL unless goniometric. */
     const cdl_photometry **luminaire_photometry;
     int has_environment;

@@ -129,6 +129,27 @@ void cdl_scene_surface_spec_free(cdl_surface_spec *spec);
  * many were added. */
 size_t cdl_scene_surface_key_sets(cdl_scene_keys *keys, size_t first);
 
+/* ---- names (scene_json.c) ---------------------------------------------------------- */
+
+/* A name usable as a file name: 1 to 64 letters, digits, '.', '_', '-', not
+ * starting with '.' or '-' (grids, observers). */
+int cdl_scene_name_ok(const char *name);
+
+/* ---- observers (scene_observers.c) --------------------------------------------------- */
+
+extern const char *const cdl_scene_observer_keys[];
+extern const char *const cdl_scene_observer_grid_keys[];
+extern const char *const cdl_scene_observer_requirements_keys[];
+
+/* One entry of "observers" (index `entry`), appended to scene->observers,
+ * one spec per placement. */
+cdl_status cdl_scene_json_read_observer_entry(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                              size_t entry, cdl_scene *scene);
+/* A grid of "type": "observers" (index `entry` in "grids"), its points
+ * appended to scene->observers. */
+cdl_status cdl_scene_json_read_observer_grid(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                             size_t entry, cdl_scene *scene);
+
 /* ---- placing luminaires (scene_placement.c) ------------------------------------ */
 
 /* The keys of an "array" object. */
