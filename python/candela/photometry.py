@@ -98,7 +98,7 @@ class Photometry(Owned):
     _release = "cdl_photometry_release"
 
     def __init__(self, handle: int, path: str):
-        self._handle = handle
+        self._own(handle)
         self.path = path
         self._what = f"{path}: the photometry"
         s = _capi.sized(_capi.cdl_photometry_summary)
@@ -145,15 +145,15 @@ class Photometry(Owned):
         return f"<candela.Photometry {self.path!r} {self.format} {flux}>"
 
     def _evaluate(self, c_deg: ArrayLike, gamma_deg: ArrayLike, scale: float):
-        handle = self._live()
         c, g = np.broadcast_arrays(np.asarray(c_deg, dtype=float), np.asarray(gamma_deg, dtype=float))
         if not (np.all(np.isfinite(c)) and np.all(np.isfinite(g))):
             raise UsageError(f"{self.path}: intensity: expected finite angles in degrees, found NaN or infinity")
         out = np.empty(c.shape, dtype=float)
         flat = out.reshape(-1)
         fn = lib.cdl_photometry_intensity_c_gamma
-        for i, (a, b) in enumerate(zip(c.reshape(-1).tolist(), g.reshape(-1).tolist())):
-            flat[i] = fn(handle, a, b).value
+        with self._use() as handle:
+            for i, (a, b) in enumerate(zip(c.reshape(-1).tolist(), g.reshape(-1).tolist())):
+                flat[i] = fn(handle, a, b).value
         out *= scale
         return float(out) if out.ndim == 0 else out
 
@@ -190,7 +190,6 @@ class Photometry(Owned):
         into the lamp flux, and said so). Raises InputError when the file
         cannot be written (a radiometric table as EULUMDAT, a folder that
         does not exist) and UsageError for an unknown format."""
-        handle = self._live()
         if format is None:
             ext = os.path.splitext(os.fspath(path))[1].lower().lstrip(".")
             if ext not in _WRITE_FORMATS:
@@ -204,9 +203,10 @@ class Photometry(Owned):
         options.ies_version = int(ies_version)
         notes = _capi.cdl_photometry_notes()
         err = _capi.cdl_error()
-        st = lib.cdl_photometry_write_file(
-            handle, _capi.encode_path(path), code, ctypes.byref(options), ctypes.byref(notes), ctypes.byref(err)
-        )
+        with self._use() as handle:
+            st = lib.cdl_photometry_write_file(
+                handle, _capi.encode_path(path), code, ctypes.byref(options), ctypes.byref(notes), ctypes.byref(err)
+            )
         try:
             lost = [_capi.text(notes.items[i]) for i in range(notes.count)]
         finally:

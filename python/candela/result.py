@@ -149,10 +149,13 @@ class SolveResult(Owned):
     _release = "cdl_solution_release"
     _what = "the result"
 
-    def __init__(self, scene: "Scene", solution: int):
-        # The scene is kept for write(), which needs it beside the solution.
+    def __init__(self, scene: "Scene", scene_handle: int, solution: int):
+        # write() needs the scene beside the solution: the result takes over
+        # a borrow of it (Owned._acquire) that its solve made, and ends it
+        # when the solution is freed.
         self._scene = scene
-        self._handle = solution
+        self._scene_handle = scene_handle
+        self._own(solution)
         self.grids: dict[str, GridResult] = {}
         for g in range(lib.cdl_solution_grid_count(solution)):
             grid = GridResult(solution, g)
@@ -176,6 +179,11 @@ class SolveResult(Owned):
             installed_w=i.installed_w,
         )
 
+    def _free(self, handle: Optional[int]) -> None:
+        super()._free(handle)
+        if handle is not None:
+            self._scene._unacquire()
+
     def __repr__(self) -> str:
         return f"<candela.SolveResult {len(self.grids)} grids, method {self.info.method}, {self.info.seconds:.3g} s>"
 
@@ -186,7 +194,6 @@ class SolveResult(Owned):
         summary.json, each file written atomically. map_scale "linear" or
         "log" for the maps; ocio_config an OpenColorIO config (default:
         Candela's). Raises InputError when outdir cannot be the folder."""
-        solution = self._live()
         if map_scale not in ("linear", "log"):
             raise UsageError(f"write: map_scale: expected 'linear' or 'log', found {map_scale!r}")
         err = _capi.cdl_error()
@@ -195,5 +202,6 @@ class SolveResult(Owned):
         options = _capi.sized(_capi.cdl_solution_write_options)
         options.ocio_config = _capi.encode_path(ocio_config) if ocio_config is not None else lib.cdl_default_ocio_config()
         options.map_log_scale = 1 if map_scale == "log" else 0
-        st = lib.cdl_solution_write(self._scene._live(), solution, out, ctypes.byref(options), ctypes.byref(err))
+        with self._use() as solution:
+            st = lib.cdl_solution_write(self._scene_handle, solution, out, ctypes.byref(options), ctypes.byref(err))
         check(st, err)

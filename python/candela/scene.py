@@ -41,7 +41,7 @@ class Scene(Owned):
     _release = "cdl_scene_release"
 
     def __init__(self, handle: int):
-        self._handle = handle
+        self._own(handle)
         self.path = _capi.text(lib.cdl_scene_path(handle))
         self._what = f"{self.path}: the scene"
         self.grid_names = [_capi.text(lib.cdl_scene_grid_name(handle, i)) for i in range(lib.cdl_scene_grid_count(handle))]

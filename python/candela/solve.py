@@ -137,8 +137,16 @@ class SolveJob:
         self._options.progress.fn = self._callback
         self._options.progress.user = None
         self._thread = threading.Thread(target=self._run, name="candela solve")
+        # The scene is borrowed from here (UsageError now if it is closed)
+        # until the solve ends, or for the life of its result (which needs
+        # it to write): scene.close() meanwhile frees it after them.
+        self._scene_handle = scene._acquire()
+        try:
+            self._thread.start()
+        except BaseException:
+            scene._unacquire()
+            raise
         _live_jobs.add(self)
-        self._thread.start()
 
     # -- in the solve's thread -------------------------------------------------
 
@@ -160,17 +168,21 @@ class SolveJob:
             return 1
 
     def _run(self) -> None:
+        borrowing = True
         try:
             handle = ctypes.c_void_p()
             err = _capi.cdl_error()
-            st = lib.cdl_solve_scene(self._scene._live(), ctypes.byref(self._options), ctypes.byref(handle), ctypes.byref(err))
+            st = lib.cdl_solve_scene(self._scene_handle, ctypes.byref(self._options), ctypes.byref(handle), ctypes.byref(err))
             if st == _capi.CDL_OK:
-                self._result = SolveResult(self._scene, handle.value)
+                borrowing = False  # the result takes the scene's borrow over
+                self._result = SolveResult(self._scene, self._scene_handle, handle.value)
             else:
                 self._error = from_status(st, err)
         except BaseException as e:
             self._error = e
         finally:
+            if borrowing:
+                self._scene._unacquire()
             self._finished.set()
             if self._reports is not None:
                 self._reports.put(_DONE)

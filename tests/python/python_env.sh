@@ -16,11 +16,15 @@ if [ "${CANDELA_SANITIZE:-0}" = 1 ]; then
   LD_PRELOAD="$("$CC" -print-file-name=libasan.so) $("$CC" -print-file-name=libubsan.so)"
   export LD_PRELOAD
   export ASAN_OPTIONS=detect_leaks=0
+  # pytest captures each test's file descriptor 2, and a sanitizer's report
+  # there would die with the process unseen: capture Python's sys.stderr
+  # only, so that the report reaches the test's log.
+  capture=--capture=sys
 fi
 run_pytest() {
   local scratch
   scratch=$(mktemp -d)
-  (cd "$scratch" && "$py" -m pytest -p no:cacheprovider -q -rs --tb=short "$@")
+  (cd "$scratch" && "$py" -m pytest -p no:cacheprovider -q -rs --tb=short ${capture:-} "$@")
   local st=$?
   rm -rf "$scratch"
   return $st

@@ -27,7 +27,7 @@ import pytest
 import candela
 from candela import _capi
 from candela.solve import solve_options
-from conftest import SOURCE_DIR
+from conftest import workplane_scene_dict
 
 # How long a test waits before calling a solve stuck (a guard against a
 # hang, far beyond a cancelled solve's fraction of a second; not a limit on
@@ -36,11 +36,7 @@ GUARD_SECONDS = 300
 
 
 def long_scene_dict():
-    office = SOURCE_DIR / "data" / "office"
-    scene = json.loads((office / "office.json").read_text())
-    scene["grids"] = [g for g in scene["grids"] if g["name"] == "workplane"]
-    scene["solver"].update({"method": "pathtrace", "quality": "normal"})
-    return scene, office
+    return workplane_scene_dict("normal")
 
 
 @pytest.fixture
@@ -175,8 +171,7 @@ def test_gil_is_released_during_a_solve():
     function) but without a progress callback, whose Python would hand the
     GIL around between chunks even if the call held it: held by the
     foreign call, the GIL would let the main thread through no window."""
-    scene_dict, office = long_scene_dict()
-    scene_dict["solver"]["quality"] = "draft"  # about a second of work
+    scene_dict, office = workplane_scene_dict("draft")  # a second or two of work
     scene = candela.scene_from_dict(scene_dict, base_dir=office)
     options = solve_options(None, None, None, None)
     span = {}
@@ -184,7 +179,8 @@ def test_gil_is_released_during_a_solve():
     def call():
         handle, err = ctypes.c_void_p(), _capi.cdl_error()
         span["start"] = time.monotonic()
-        span["status"] = _capi.lib.cdl_solve_scene(scene._live(), ctypes.byref(options), ctypes.byref(handle), ctypes.byref(err))
+        with scene._use() as scene_handle:
+            span["status"] = _capi.lib.cdl_solve_scene(scene_handle, ctypes.byref(options), ctypes.byref(handle), ctypes.byref(err))
         span["end"] = time.monotonic()
         _capi.lib.cdl_solution_release(handle)
 
