@@ -417,5 +417,12 @@ def text(raw: Optional[bytes]) -> str:
 
 
 def encode_path(path) -> bytes:
-    """A path for the library: str or os.PathLike, as the file system encodes it."""
-    return os.fsencode(os.fspath(path))
+    """A path for the library: str or os.PathLike, as the file system
+    encodes it. A NUL inside would end the C string early and name another
+    file: refused (UsageError, as open() refuses it)."""
+    raw = os.fsencode(os.fspath(path))
+    if b"\0" in raw:
+        from .errors import UsageError  # (errors imports this module)
+
+        raise UsageError(f"{os.fspath(path)!r}: expected a path, found a NUL character in it")
+    return raw

@@ -162,6 +162,6 @@ def scene_from_dict(d: Mapping[str, Any], base_dir: Union[str, os.PathLike, None
     text = json.dumps(_json_value(d, "", name))
     handle = ctypes.c_void_p()
     err = _capi.cdl_error()
-    st = lib.cdl_scene_load_string(text.encode("utf-8"), os.fsencode(name), ctypes.byref(handle), ctypes.byref(err))
+    st = lib.cdl_scene_load_string(text.encode("utf-8"), _capi.encode_path(name), ctypes.byref(handle), ctypes.byref(err))
     check(st, err)
     return Scene(handle.value)

@@ -56,6 +56,17 @@ def test_scene_file_errors_name_the_file(tmp_path):
         candela.load_scene(broken)
 
 
+def test_a_path_with_a_nul_is_refused(tmp_path):
+    # (a C string would end at the NUL and name another file)
+    (tmp_path / "scene.json").write_text(json.dumps(PROBE_SCENE))
+    with pytest.raises(candela.UsageError, match="NUL"):
+        candela.load_scene(str(tmp_path / "scene.json") + "\0.ies")
+    with pytest.raises(candela.UsageError, match="NUL"):
+        candela.read_photometry(str(SOURCE_DIR / "data" / "office" / "downlight.ies") + "\0x")
+    with pytest.raises(candela.UsageError, match="NUL"):
+        candela.scene_from_dict(PROBE_SCENE, base_dir=str(tmp_path) + "\0x")
+
+
 def test_relative_files_resolve_against_base_dir(tmp_path, monkeypatch):
     scene = copy.deepcopy(PROBE_SCENE)
     scene["luminaires"] = [{"type": "goniometric", "file": "downlight.ies", "position": [0, 0, 2]}]

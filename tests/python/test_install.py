@@ -63,6 +63,8 @@ def checkout_copy(tmp_path):
 
 
 def pip_install(python, *args):
+    """pip install --no-build-isolation ARGS, never from the index (a test
+    does not reach the network; the install needs nothing from it)."""
     done = subprocess.run(
         [str(python), "-m", "pip", "install", "--no-build-isolation", "--no-index", *map(str, args)],
         capture_output=True,
@@ -72,9 +74,10 @@ def pip_install(python, *args):
 
 
 def test_pip_install_into_a_virtual_environment(tmp_path):
-    # --system-site-packages: Debian's NumPy (and pip, setuptools) serve the venv
+    # as the README says: the venv's own pip (python3-venv's), Debian's NumPy
+    # and setuptools through --system-site-packages
     venv = tmp_path / "venv"
-    subprocess.run([sys.executable, "-m", "venv", "--system-site-packages", "--without-pip", str(venv)], check=True)
+    subprocess.run([sys.executable, "-m", "venv", "--system-site-packages", str(venv)], check=True)
     pip_install(venv / "bin" / "python", checkout_copy(tmp_path))
     out = run_probe(venv / "bin" / "python", {"CANDELA_LIBRARY": str(LIBRARY)}, cwd=tmp_path)
     assert out["package"].startswith(str(venv)) and out["library"] == str(LIBRARY)
