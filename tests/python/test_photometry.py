@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 import candela
+from conftest import info_json
 
 CONE_LM = 2000 * math.pi - 4000
 CONE_RECORDS = ["0 90 180", "0", "1000 0 0"]
@@ -50,6 +51,11 @@ def test_ballast_factor_scales_the_luminaire_not_the_table(write_ies):
     assert p.lamp_flux_lm == 3000.0
     assert p.input_watts == 25.0
     assert p.efficacy_lm_per_w == pytest.approx(0.8 * CONE_LM / 25, rel=1e-12)
+    # and what `candela info --json` says (the same doubles through cJSON's
+    # printing: a few ulp, as in test_corpus.py)
+    info = info_json(p.path)
+    for key in ("flux_lm", "table_flux_lm", "lor", "max_intensity_cd", "efficacy_lm_per_w"):
+        assert getattr(p, key) == pytest.approx(info[key], rel=1e-15), key
 
 
 def test_beam_and_field_angles_of_the_cone(write_ies):
@@ -90,6 +96,9 @@ def test_radiometric_file_never_answers_in_lumens(write_ies):
     np.testing.assert_allclose(p.radiant_intensity([0.0, 90.0, 180.0], [0.0, 45.0, 180.0]), 0.1, rtol=1e-15)
     with pytest.raises(candela.InputError, match="radiant intensity"):
         p.intensity(0.0, 0.0)
+    info = info_json(path)  # the command agrees: no lumens
+    assert info["radiometric"] and info["flux_lm"] is None
+    assert p.radiant_flux_w == pytest.approx(info["radiant_flux_w"], rel=1e-15)
     photometric = candela.read_photometry(cone(write_ies))
     with pytest.raises(candela.InputError, match="spectrum"):
         photometric.radiant_intensity(0.0, 0.0)
