@@ -1,5 +1,6 @@
 /* report_document.c - the blocks of the report (report_document.h). */
 #include "report/report_document.h"
+#include "report/report_surfaces.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -354,6 +355,10 @@ cdl_status cdl_report_document_build(const cdl_report_input *in, const char *tit
         cover(&b, in);
         summary(&b, in, in->requirements_path);
         st = maps(&b, in, err);
+        struct cdl_report_surfaces *surfaces = NULL;
+        if (st == CDL_OK) st = cdl_report_surfaces_read(in, &surfaces, err);
+        if (st == CDL_OK) st = cdl_report_surfaces_section(d, in, surfaces, err);
+        else cdl_report_surfaces_release(surfaces);
         if (st == CDL_OK) st = cdl_report_glare_section(&b, in, err);
         if (st == CDL_OK) st = schedule(&b, in, err);
         if (st == CDL_OK) st = cdl_report_glare_tables(&b, in, err);
@@ -379,6 +384,7 @@ void cdl_report_document_release(cdl_report_document *d)
         free(block->cells);
     }
     for (size_t k = 0; k < d->map_count; ++k) cdl_grid_map_release(&d->maps[k]);
+    cdl_report_surfaces_release(d->surfaces);
     free(d->maps);
     free(d->diagrams);
     cdl_report_glare_plan_release(d->glare_plan);

@@ -7,7 +7,8 @@
  *      quality and target error, seed, threads, the time the solve took;
  *   2. summary: a row per grid (summary_table.h) with the check against
  *      the requirements;
- *   3. a map per rect and polygon grid (grid_map.h);
+ *   3. a map per rect and polygon grid (grid_map.h), then the surface
+ *      maps' table, requirements and the room in 3D (report_surfaces.h);
  *   4. glare, with observers (report_glare.h): their UGR against their
  *      limits and the plan with them on it;
  *   5. the luminaire schedule and a polar diagram per photometric file
@@ -57,6 +58,7 @@ typedef struct cdl_report_document {
     size_t map_count;
     struct cdl_polar_diagram *diagrams;
     size_t diagram_count;
+    struct cdl_report_surfaces *surfaces; /* the surface maps' section (report_surfaces.h), or NULL */
     struct cdl_glare_plan *glare_plan; /* the observers on the plan (report_glare.c), or NULL */
 } cdl_report_document;
 

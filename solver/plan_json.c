@@ -267,6 +267,37 @@ void cdl_plan_json_totals(cdl_plan_json *plan, const cdl_solve_state *state)
     }
 }
 
+void cdl_plan_json_surfaces(cdl_plan_json *plan, const cdl_solve_state *state)
+{
+    const cdl_surface_mesh_stats *m = &state->surface_stats;
+    cJSON *o = cJSON_AddObjectToObject(plan->root, "surface_maps");
+    cJSON_AddNumberToObject(o, "maps", (double)state->out->surface_count);
+    cJSON_AddNumberToObject(o, "vertices", (double)m->vertices);
+    cJSON_AddNumberToObject(o, "triangles", (double)m->triangles);
+    cJSON_AddNumberToObject(o, "evaluations", (double)m->evaluations);
+    cJSON_AddNumberToObject(o, "refinement_rounds", (double)m->rounds);
+    cJSON_AddNumberToObject(o, "edges_at_finest", (double)m->unresolved);
+    cJSON_AddNumberToObject(o, "outline_vertices_joined", (double)m->joined);
+    if (m->mesh_as_given) cJSON_AddNumberToObject(o, "meshes_as_given", (double)m->mesh_as_given);
+    cJSON_AddBoolToObject(o, "vertex_budget_reached", m->budget_reached);
+    const char *how = state->surface_method == CDL_METHOD_ICACHE      ? "icache"
+                      : state->surface_method == CDL_METHOD_PATHTRACE ? "pathtrace"
+                                                                      : "none";
+    cJSON_AddStringToObject(o, "interreflection", how);
+    if (state->surface_method == CDL_METHOD_ICACHE)
+        cJSON_AddNumberToObject(o, "records", (double)state->surface_records);
+    char why[400];
+    snprintf(why, sizeof why,
+             "meshed from the EN 12464-1 spacing and refined where linear interpolation along an edge is off by more "
+             "than the target (relative to E, or to half the surface's mean where E is below it), down to a "
+             "sixteenth of the coarsest edges (at least 1 cm); direct light as at grid points%s",
+             state->surface_method == CDL_METHOD_ICACHE
+                 ? "; interreflected light from the solve's one irradiance cache, whose records the grids share"
+             : state->surface_method == CDL_METHOD_PATHTRACE ? "; interreflected light by paths from every vertex"
+                                                              : "");
+    cJSON_AddStringToObject(o, "why", why);
+}
+
 cdl_status cdl_plan_json_print(const cdl_plan_json *plan, char **out, cdl_error *err)
 {
     *out = cJSON_PrintUnformatted(plan->root);

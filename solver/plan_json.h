@@ -25,6 +25,9 @@ cdl_status cdl_plan_json_lights(cdl_plan_json *plan, const cdl_solve_state *stat
  * and counts, its vertical outputs. */
 void cdl_plan_json_grid(cdl_plan_json *plan, const cdl_solve_state *state, const cdl_grid_job *job);
 
+/* The surface maps: their meshes' counts and how their light was found. */
+void cdl_plan_json_surfaces(cdl_plan_json *plan, const cdl_solve_state *state);
+
 /* The totals after every grid: evaluations, interreflection, the cache file. */
 void cdl_plan_json_totals(cdl_plan_json *plan, const cdl_solve_state *state);
 

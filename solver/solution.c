@@ -84,6 +84,25 @@ void cdl_solution_clear(cdl_solution *s)
     if (!s) return;
     for (size_t g = 0; g < s->grid_count && s->grids; ++g) cdl_grid_solution_release(&s->grids[g]);
     free(s->grids);
+    for (size_t k = 0; k < s->surface_count && s->surfaces; ++k) {
+        cdl_surface_solution *m = &s->surfaces[k];
+        free(m->xyz);
+        free(m->normal);
+        free(m->triangles);
+        free(m->E);
+        free(m->E_direct);
+        free(m->E_indirect);
+        free(m->E_stderr);
+        free(m->rho);
+        free(m->L);
+    }
+    free(s->surfaces);
+    for (size_t k = 0; k < s->shape_count && s->shapes; ++k) {
+        free(s->shapes[k].xyz);
+        free(s->shapes[k].normal);
+        free(s->shapes[k].triangles);
+    }
+    free(s->shapes);
     free(s->plan_json);
     for (size_t i = 0; i < s->warning_count; ++i) free(s->warnings[i]);
     free(s->warnings);

@@ -90,6 +90,33 @@ typedef struct cdl_observer_result {
     size_t excluded_count;
 } cdl_observer_result;
 
+/* A surface map (issue 23): the illuminance on a mapped surface's front
+ * side at the vertices of a mesh that follows the light
+ * (solver/geometry/surface_mesh.h). E_stderr holds, with the value's own
+ * error, the rms error of the linear interpolant over the vertex's
+ * triangles, so that it states how far the map may be off around the
+ * vertex. A box's faces are one map whose vertices carry their own face's
+ * normal (a vertex on a box edge appears once per face). */
+typedef struct cdl_surface_solution {
+    size_t surface;                   /* its index in scene->surfaces */
+    size_t vertex_count, triangle_count;
+    double *xyz, *normal;             /* 3 per vertex; normals unit, the front side's */
+    uint32_t *triangles;              /* 3 per triangle: vertex rows, counter-clockwise seen from the front */
+    double *E, *E_direct, *E_indirect, *E_stderr; /* lux, per vertex */
+    double *rho;                      /* the reflectance at each vertex (a box: its face's) */
+    double *L;                        /* rho E / pi, cd/m^2 */
+    double area_m2;                   /* of the triangles */
+} cdl_surface_solution;
+
+/* A surface that is not mapped, as scene.glb shows it (grey): its
+ * triangles as the ray scene has them (a sphere tessellated). */
+typedef struct cdl_surface_shape {
+    size_t surface;                   /* its index in scene->surfaces, or SIZE_MAX for an area luminaire's shape */
+    size_t vertex_count, triangle_count;
+    double *xyz, *normal;
+    uint32_t *triangles;
+} cdl_surface_shape;
+
 struct cdl_solution {
     cdl_method method;                /* the method actually used */
     cdl_solver_settings settings;     /* with quality-derived knobs filled in */
@@ -97,6 +124,10 @@ struct cdl_solution {
     int threads_used;
     cdl_grid_solution *grids;         /* scene->grid_count */
     size_t grid_count;
+    cdl_surface_solution *surfaces;   /* the mapped surfaces, in the scene's order */
+    size_t surface_count;
+    cdl_surface_shape *shapes;        /* with surface maps: the other surfaces, for scene.glb */
+    size_t shape_count;
     char *plan_json;                  /* the "plan" object, JSON text */
     double seconds;                   /* the whole solve */
     double compute_seconds;           /* the grids' points only (setup excluded) */

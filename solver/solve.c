@@ -1,8 +1,9 @@
 /* solve.c - a solve: plan the scene, run each grid through the integrators, finish.
  *
  * The three steps are integrate/integrator.h's: cdl_solve_plan
- * (solve_plan.c) builds and checks everything first; each grid then goes
- * through the table below, each integrator adding its part where it
+ * (solve_plan.c) builds and checks everything first; the solve-wide
+ * integrators run once (the surface maps); each grid then goes through the
+ * table below, each integrator adding its part where it
  * applies; cdl_solve_finish_grid and cdl_solve_finish (solve_finish.c)
  * combine the parts and say what the solve found besides its numbers. The
  * plan's JSON is narrated by plan_json.c from the counts the steps leave.
@@ -28,6 +29,12 @@ static const cdl_integrator *const integrators[] = {
     &cdl_integrator_pathtrace,
     &cdl_integrator_vertical,
     &cdl_integrator_glare,
+};
+
+/* The integrators that run once, before the grids: the surface maps first,
+ * so that the grids share the cache records placed on them. */
+static const cdl_solve_integrator *const solve_integrators[] = {
+    &cdl_integrator_surfaces,
 };
 
 /* One job through the table: a grid (then its parts combined) or the
@@ -93,6 +100,8 @@ cdl_status cdl_solve_scene_into(const cdl_scene *scene, const cdl_solve_options 
     state.scene = &settled;
 
     st = cdl_solve_plan(&state, err);
+    for (size_t k = 0; st == CDL_OK && k < sizeof solve_integrators / sizeof *solve_integrators; ++k)
+        if (solve_integrators[k]->applies(&state)) st = solve_integrators[k]->run(&state, err);
     for (size_t g = 0; st == CDL_OK && g < settled.grid_count; ++g) {
         cdl_grid_job job = {.index = g, .spec = &settled.grids[g], .gs = &out->grids[g], .plan = &state.grids[g]};
         st = solve_job(&state, &job, err);

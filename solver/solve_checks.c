@@ -159,6 +159,25 @@ cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_conte
                 if (r > best[l]) best[l] = r;
             }
         }
+    /* With surface maps, a luminaire lighting a mapped surface adds something too. */
+    cdl_light_strategy *map_strategies = calloc(ctx->light_count, sizeof *map_strategies);
+    for (size_t k = 0; map_strategies && k < out->surface_count; ++k) {
+        const cdl_surface_solution *m = &out->surfaces[k];
+        cdl_vec3 *p = malloc((2 * m->vertex_count + 1) * sizeof *p);
+        if (!p) break;
+        for (size_t v = 0; v < m->vertex_count; ++v) {
+            p[v] = cdl_vec3_make(m->xyz[3 * v], m->xyz[3 * v + 1], m->xyz[3 * v + 2]);
+            p[m->vertex_count + v] = cdl_vec3_make(m->normal[3 * v], m->normal[3 * v + 1], m->normal[3 * v + 2]);
+        }
+        cdl_direct_plan_grid(ctx, p, m->vertex_count, map_strategies);
+        for (size_t l = 0; l < ctx->light_count; ++l)
+            for (size_t v = 0; v < m->vertex_count && best[l] != REACH_LIT; ++v) {
+                reach r = light_reaches(ctx, l, map_strategies[l], p[v], p[m->vertex_count + v]);
+                if (r > best[l]) best[l] = r;
+            }
+        free(p);
+    }
+    free(map_strategies);
     /* A luminaire split into its point (far) and its opening (near) parts,
      * adjacent, reaches what either part reaches; the point part speaks
      * for both. */
@@ -186,7 +205,8 @@ cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_conte
             continue;
         }
         st = cdl_solution_add_warning(
-            out, err, "%s adds nothing to any grid: %s%s%s", light->label,
+            out, err, "%s adds nothing to any grid%s: %s%s%s", light->label,
+            out->surface_count ? " or surface map" : "",
             best[l] == REACH_NONE
                 ? "its light meets no grid point from the side the point faces (is it facing away, or are the grids "
                   "outside its beam?)"

@@ -124,6 +124,7 @@ void cdl_solve_state_release(cdl_solve_state *state)
     if (state->records)
         for (size_t g = 0; g < state->scene->grid_count; ++g) cdl_icache_records_release(&state->records[g]);
     free(state->records);
+    cdl_icache_shared_release(state->shared_cache);
     free(state->grids);
     free(state->strategies);
     free(state->routes);

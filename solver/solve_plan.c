@@ -248,6 +248,15 @@ cdl_status cdl_solve_plan(cdl_solve_state *state, cdl_error *err)
     }
     st = cdl_solve_plan_observers(state, err);
     if (st != CDL_OK) return st;
-    if (state->options.cache_path) return cdl_solve_cache_open(state, err);
+    if (state->options.cache_path) {
+        for (size_t k = 0; k < scene->surface_count; ++k)
+            if (scene->surfaces[k].mapped)
+                return cdl_error_set(err, CDL_ERR_INPUT,
+                                     "%s: a cache file (--cache) cannot be used with surface maps yet (%s is mapped): "
+                                     "their records are placed as the maps' meshes refine; solve without --cache, or "
+                                     "with \"surface_maps\": \"none\" and no surface requirements",
+                                     scene->path, scene->surfaces[k].json_path);
+        return cdl_solve_cache_open(state, err);
+    }
     return CDL_OK;
 }

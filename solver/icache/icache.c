@@ -252,6 +252,7 @@ typedef struct gather_job {
     int own;                  /* 1: records serving only their own point (OWN_RADIUS) */
     const size_t *at;         /* grid point of each new record */
     double floor;             /* with own: least R of any point */
+    const double *floors;     /* NULL, or per point a larger least R (its target relative to no less) */
     cdl_icache_record *out;   /* one per new record */
     cdl_path_tally *tallies;  /* per new record, of its reported gather (summed in record order after) */
 } gather_job;
@@ -276,12 +277,16 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
          * shrinks by about the number it uses), so a record need not be as
          * accurate as a point. */
         double R = job->E_direct[i] + pilot.E;
+        /* Where the points' target is relative to a floor (surface maps:
+         * half their surface's mean), a record there need be no better. */
+        if (job->floors) R = fmax(R, job->floors[i]);
         double budget = RECORD_SHARE * ctx->target * ctx->target * R * R;
         /* A record serving its point alone is that point's whole
          * interreflected estimate: its variance is what the target leaves
          * after the direct part's (at least half of it, as pathtrace.c). */
         if (job->own) {
-            double whole = ctx->target * ctx->target * fmax(R, job->floor) * fmax(R, job->floor);
+            double least = job->floors ? fmax(job->floor, job->floors[i]) : job->floor;
+            double whole = ctx->target * ctx->target * fmax(R, least) * fmax(R, least);
             budget = fmax(whole - job->var_direct[i], 0.5 * whole);
         }
         double n_pilot = PILOT_M * PILOT_N;
@@ -371,13 +376,14 @@ static void set_radius(const reach_limits *l, cdl_icache_records *recs, size_t i
 /* Gather records at grid points at[0 .. count - 1], give them radii in
  * order and enter them in the tree. */
 static cdl_status add_records(const cdl_icache_context *ctx, const reach_limits *l, const cdl_grid *grid,
-                              size_t grid_index, const double *E_direct, const size_t *at, size_t count,
+                              size_t grid_index, const double *E_direct, const double *floors, const size_t *at,
+                              size_t count,
                               cdl_icache_records *recs, cdl_record_octree *tree, unsigned char *has, lookup *lk,
                               int threads, const cdl_progress_sink *progress, const char *stage,
                               cdl_icache_stats *stats, cdl_error *err)
 {
     size_t first = recs->count;
-    gather_job base = {ctx, grid, grid_index, E_direct, NULL, 0, at, 0.0, NULL, NULL};
+    gather_job base = {ctx, grid, grid_index, E_direct, NULL, 0, at, 0.0, floors, NULL, NULL};
     cdl_status st = gather(&base, count, recs, threads, progress, stage, stats, err);
     for (size_t c = 0; st == CDL_OK && c < count; ++c) has[at[c]] = 1;
     for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
@@ -392,12 +398,13 @@ static cdl_status add_records(const cdl_icache_context *ctx, const reach_limits 
  * enter them in the tree. */
 static cdl_status add_own_records(const cdl_icache_context *ctx, const reach_limits *l, const cdl_grid *grid,
                                   size_t grid_index, const double *E_direct, const double *var_direct, double floor,
-                                  const size_t *at, size_t count, cdl_icache_records *recs, cdl_record_octree *tree,
+                                  const double *floors, const size_t *at, size_t count, cdl_icache_records *recs,
+                                  cdl_record_octree *tree,
                                   int threads, const cdl_progress_sink *progress, const char *stage,
                                   cdl_icache_stats *stats, cdl_error *err)
 {
     size_t first = recs->count;
-    gather_job base = {ctx, grid, grid_index, E_direct, var_direct, 1, at, floor, NULL, NULL};
+    gather_job base = {ctx, grid, grid_index, E_direct, var_direct, 1, at, floor, floors, NULL, NULL};
     cdl_status st = gather(&base, count, recs, threads, progress, stage, stats, err);
     for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
         recs->items[id].radius = OWN_RADIUS;
@@ -416,6 +423,7 @@ typedef struct point_job {
     const cdl_grid *grid;
     const double *E_direct, *var_direct;
     double floor;             /* least R of any point: 1e-3 of the grid's brightest direct light */
+    const double *floors;     /* NULL, or per point a larger least R (surface maps: their tolerance's floor) */
     int final;                /* 1: write E and var; 0: flag points that need a record */
     int sweep;                /* with final 0: flag only the points no record serves */
     double *E, *var;
@@ -443,7 +451,7 @@ static cdl_status visit_points(void *shared, void *local, size_t begin, size_t e
             job->ask[i] = it.used == 0 ? 1e-300 : 0.0;
             continue;
         }
-        double R = fmax(job->E_direct[i] + it.E, job->floor);
+        double R = fmax(job->E_direct[i] + it.E, job->floors ? fmax(job->floor, job->floors[i]) : job->floor);
         /* A point asks for a record when the interpolation's own variance
          * exceeds (t R)^2 (the records' noise, averaged, comes on top;
          * asking at a quarter of it took 35 % more records for an error
@@ -499,10 +507,97 @@ static cdl_status pick(const cdl_grid *grid, const double *ask, const unsigned c
     return st;
 }
 
-void cdl_icache_records_release(cdl_icache_records *records)
+
+/* One target (a grid, or the probes of surface maps) served by records in
+ * `recs` entered in `tree`: with `place`, records are seeded (when `seed`)
+ * and placed where its points need them; then every point is interpolated. */
+typedef struct serve_request {
+    const cdl_icache_context *ctx;
+    const reach_limits *limits;
+    cdl_icache_records *recs;
+    cdl_record_octree *tree;
+    const cdl_grid *grid;
+    size_t grid_index;
+    const double *E_direct, *var_direct;
+    double *E_indirect, *var_indirect, *ao;
+    const double *floors;
+    const cdl_grid *gather_at; /* where records for the points are gathered (the same indices), or NULL: at them */
+    int place, seed, passes, own;
+    int threads;
+    const cdl_progress_sink *progress;
+    const char *stage;
+    cdl_icache_stats *stats;
+} serve_request;
+
+static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
 {
-    free(records->items);
-    memset(records, 0, sizeof *records);
+    const cdl_grid *grid = q->grid;
+    const cdl_grid *gather_grid = q->gather_at ? q->gather_at : grid;
+    const reach_limits *l = q->limits;
+    double brightest = 0.0;
+    for (size_t i = 0; i < grid->count; ++i)
+        if (q->E_direct[i] > brightest) brightest = q->E_direct[i];
+    size_t *at = malloc(grid->count * sizeof *at);
+    double *ask = calloc(grid->count, sizeof *ask);
+    unsigned char *has = calloc(grid->count, 1);
+    lookup lk = {NULL, 0, NULL, 0};
+    cdl_status st = (!at || !ask || !has) ? cdl_error_out_of_memory(err) : CDL_OK;
+    if (st == CDL_OK && q->place && q->seed) {
+        /* Seeds: every point farther than the largest reach from the seeds
+         * before it (in index order). */
+        for (size_t i = 0; i < grid->count; ++i) ask[i] = l->reach_max;
+        size_t count = 0;
+        st = pick(grid, ask, has, box, &at, &count, err);
+        if (st == CDL_OK)
+            st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->floors, at, count, q->recs, q->tree,
+                             has, &lk, q->threads, q->progress, q->stage, q->stats, err);
+    }
+    point_job job = {q->ctx, l, q->recs, q->tree, grid, q->E_direct, q->var_direct, 1e-3 * brightest, q->floors,
+                     0, 0, q->E_indirect, q->var_indirect, q->ao, ask};
+    for (int pass = 1; st == CDL_OK && q->place && q->passes && pass <= MAX_PASSES; ++pass) {
+        st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
+        size_t count = 0;
+        if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
+        if (st != CDL_OK || count == 0) break;
+        q->stats->passes = (size_t)pass;
+        st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->floors, at, count, q->recs, q->tree,
+                         has, &lk, q->threads, q->progress, q->stage, q->stats, err);
+    }
+    /* No point may go unserved (it would read 0 +- 0): the passes take
+     * asking points apart from each other and may stop before every point
+     * is served; the sweep gives each point still unserved its own record. */
+    if (st == CDL_OK && q->place) {
+        job.sweep = 1;
+        st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
+        job.sweep = 0;
+        size_t count = 0;
+        if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
+        if (st == CDL_OK && count > 0)
+            st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->floors, at, count, q->recs, q->tree,
+                             has, &lk, q->threads, q->progress, q->stage, q->stats, err);
+    }
+    if (st == CDL_OK) {
+        job.final = 1;
+        st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
+    }
+    /* Points still above the target: each gets a record of its own. */
+    size_t alone = 0;
+    for (size_t i = 0; st == CDL_OK && q->place && q->own && i < grid->count; ++i) {
+        double least = q->floors ? fmax(job.floor, q->floors[i]) : job.floor;
+        double R = fmax(q->E_direct[i] + q->E_indirect[i], least);
+        if (q->var_direct[i] + q->var_indirect[i] > q->ctx->target * q->ctx->target * R * R) at[alone++] = i;
+    }
+    if (st == CDL_OK && alone > 0) {
+        st = add_own_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->var_direct, job.floor, q->floors, at,
+                             alone, q->recs, q->tree, q->threads, q->progress, q->stage, q->stats, err);
+        q->stats->alone += alone;
+        if (st == CDL_OK) st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
+    }
+    lookup_release(&lk);
+    free(at);
+    free(ask);
+    free(has);
+    return st;
 }
 
 cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *grid, size_t grid_index,
@@ -515,77 +610,92 @@ cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *
     if (grid->count == 0) return CDL_OK;
     reach_limits l = limits_for(grid_spacing(grid), ctx->target);
     cdl_bounds3 box = cdl_bounds3_empty();
-    double brightest = 0.0;
-    for (size_t i = 0; i < grid->count; ++i) {
-        cdl_bounds3_grow(&box, grid->points[i]);
-        if (E_direct[i] > brightest) brightest = E_direct[i];
-    }
+    for (size_t i = 0; i < grid->count; ++i) cdl_bounds3_grow(&box, grid->points[i]);
     cdl_record_octree *tree = NULL;
-    size_t *at = malloc(grid->count * sizeof *at);
-    double *ask = calloc(grid->count, sizeof *ask);
-    unsigned char *has = calloc(grid->count, 1);
-    lookup lk = {NULL, 0, NULL, 0};
-    cdl_status st = (!at || !ask || !has) ? cdl_error_out_of_memory(err) : CDL_OK;
-    if (st == CDL_OK) st = cdl_record_octree_create(box, &tree, err);
+    cdl_status st = cdl_record_octree_create(box, &tree, err);
     int reuse = recs->count > 0;
-    if (st == CDL_OK && !reuse) {
-        /* Seeds: every point farther than the largest reach from the seeds
-         * before it (in index order). */
-        for (size_t i = 0; i < grid->count; ++i) ask[i] = l.reach_max;
-        size_t count = 0;
-        st = pick(grid, ask, has, box, &at, &count, err);
-        if (st == CDL_OK)
-            st = add_records(ctx, &l, grid, grid_index, E_direct, at, count, recs, tree, has, &lk, threads, progress,
-                             stage, stats, err);
-    }
     /* Records read from a cache file keep the radii they were made with. */
     for (size_t id = 0; st == CDL_OK && reuse && id < recs->count; ++id)
         st = cdl_record_octree_insert(tree, (uint32_t)id, recs->items[id].p, tree_reach(&l, &recs->items[id]), err);
-    point_job job = {ctx, &l, recs, tree, grid, E_direct, var_direct, 1e-3 * brightest, 0, 0, E_indirect,
-                     var_indirect, ao, ask};
-    for (int pass = 1; st == CDL_OK && !reuse && pass <= MAX_PASSES; ++pass) {
-        st = visit(&job, threads, progress, stage, recs->count, err);
-        size_t count = 0;
-        if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
-        if (st != CDL_OK || count == 0) break;
-        stats->passes = (size_t)pass;
-        st = add_records(ctx, &l, grid, grid_index, E_direct, at, count, recs, tree, has, &lk, threads, progress, stage,
-                         stats, err);
-    }
-    /* No point may go unserved (it would read 0 +- 0): the passes take
-     * asking points apart from each other and may stop before every point
-     * is served; the sweep gives each point still unserved its own record. */
-    if (st == CDL_OK && !reuse) {
-        job.sweep = 1;
-        st = visit(&job, threads, progress, stage, recs->count, err);
-        job.sweep = 0;
-        size_t count = 0;
-        if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
-        if (st == CDL_OK && count > 0)
-            st = add_records(ctx, &l, grid, grid_index, E_direct, at, count, recs, tree, has, &lk, threads, progress,
-                             stage, stats, err);
-    }
-    if (st == CDL_OK) {
-        job.final = 1;
-        st = visit(&job, threads, progress, stage, recs->count, err);
-    }
-    /* Points still above the target: each gets a record of its own. */
-    size_t alone = 0;
-    for (size_t i = 0; st == CDL_OK && !reuse && i < grid->count; ++i) {
-        double R = fmax(E_direct[i] + E_indirect[i], job.floor);
-        if (var_direct[i] + var_indirect[i] > ctx->target * ctx->target * R * R) at[alone++] = i;
-    }
-    if (st == CDL_OK && alone > 0) {
-        st = add_own_records(ctx, &l, grid, grid_index, E_direct, var_direct, job.floor, at, alone, recs, tree, threads,
-                             progress, stage, stats, err);
-        stats->alone += alone;
-        if (st == CDL_OK) st = visit(&job, threads, progress, stage, recs->count, err);
-    }
+    serve_request q = {ctx,  &l,   recs,   tree,   grid, grid_index, E_direct, var_direct, E_indirect, var_indirect,
+                       ao,   NULL, NULL,   !reuse, !reuse, 1,    1,          threads,  progress,   stage,
+                       stats};
+    if (st == CDL_OK) st = serve(&q, box, err);
     stats->records += recs->count;
-    lookup_release(&lk);
-    free(at);
-    free(ask);
-    free(has);
     cdl_record_octree_release(tree);
+    return st;
+}
+
+void cdl_icache_records_release(cdl_icache_records *records)
+{
+    free(records->items);
+    memset(records, 0, sizeof *records);
+}
+
+/* ---- one cache for a solve -------------------------------------------------------- */
+
+struct cdl_icache_shared {
+    cdl_icache_records records;
+    cdl_record_octree *tree;
+    cdl_bounds3 bounds;
+};
+
+cdl_status cdl_icache_shared_create(cdl_bounds3 bounds, cdl_icache_shared **out, cdl_error *err)
+{
+    *out = calloc(1, sizeof **out);
+    if (!*out) return cdl_error_out_of_memory(err);
+    (*out)->bounds = bounds;
+    cdl_status st = cdl_record_octree_create(bounds, &(*out)->tree, err);
+    if (st != CDL_OK) {
+        free(*out);
+        *out = NULL;
+    }
+    return st;
+}
+
+void cdl_icache_shared_release(cdl_icache_shared *cache)
+{
+    if (!cache) return;
+    cdl_icache_records_release(&cache->records);
+    cdl_record_octree_release(cache->tree);
+    free(cache);
+}
+
+size_t cdl_icache_shared_count(const cdl_icache_shared *cache)
+{
+    return cache->records.count;
+}
+
+cdl_status cdl_icache_solve_shared(const cdl_icache_context *ctx, cdl_icache_shared *cache,
+                                   const cdl_icache_target *target, cdl_error *err)
+{
+    const cdl_grid *grid = target->points;
+    if (grid->count == 0) return CDL_OK;
+    double h = target->spacing > 0.0 ? target->spacing : grid_spacing(grid);
+    reach_limits l = limits_for(h, ctx->target);
+    size_t before = cache->records.count;
+    serve_request q = {ctx,
+                       &l,
+                       &cache->records,
+                       cache->tree,
+                       grid,
+                       target->key,
+                       target->E_direct,
+                       target->var_direct,
+                       target->E_indirect,
+                       target->var_indirect,
+                       target->ao,
+                       target->floors,
+                       target->gather_at,
+                       1,
+                       before == 0,
+                       !target->only_unserved,
+                       !target->no_own_records,
+                       target->threads < 1 ? 1 : target->threads,
+                       target->progress,
+                       target->stage,
+                       target->stats};
+    cdl_status st = serve(&q, cache->bounds, err);
+    target->stats->records += cache->records.count - before;
     return st;
 }

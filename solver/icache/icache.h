@@ -85,4 +85,52 @@ cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *
 
 void cdl_icache_records_release(cdl_icache_records *records);
 
+/* ---- one cache for a solve: records shared by every target ----------------
+ *
+ * With surface maps, a solve keeps one cache (issue 23): records placed on
+ * the surfaces' meshes serve the grids too, so a floor map and a grid on
+ * the floor share their gathers. Each target (the maps' vertices and
+ * midpoints, round by round; then each grid) is served in turn, as
+ * cdl_icache_solve_grid serves a grid, with these differences: records
+ * stay in the cache for the targets after it; seeds are laid only for the
+ * first target (later ones ask for records where those already there do
+ * not serve them well enough, as every pass does); the limits on reach
+ * come from the target's spacing (given, or as a grid's). A record's
+ * radius, clamped when it is made, carries its own target's limits.
+ * Deterministic: the same targets in the same order give the same records. */
+typedef struct cdl_icache_shared cdl_icache_shared;
+
+/* An empty cache over `bounds` (every point any target will look up). */
+cdl_status cdl_icache_shared_create(cdl_bounds3 bounds, cdl_icache_shared **out, cdl_error *err);
+void cdl_icache_shared_release(cdl_icache_shared *cache);
+size_t cdl_icache_shared_count(const cdl_icache_shared *cache);
+
+typedef struct cdl_icache_target {
+    const cdl_grid *points;           /* points and normals (count of each) */
+    double spacing;                   /* m: the limits' spacing; 0: as a grid's (grid_spacing) */
+    size_t key;                       /* keys the random numbers of records made at its points */
+    const double *E_direct, *var_direct;
+    double *E_indirect, *var_indirect;
+    double *ao;                       /* NULL, or the points' ambient occlusion */
+    const double *floors;             /* NULL, or per point the least E its target is relative to (lux) */
+    const cdl_grid *gather_at;        /* NULL, or where a record asked for by point i is gathered (point i
+                                         of this grid; normals the same): a point where two surfaces meet
+                                         lies on both, and a gather there loses the rays the other one
+                                         should stop, so its record is gathered a little way in front */
+    int only_unserved;                /* 1: no placement passes: records only at points no record serves
+                                         (which would read 0 +- 0), the rest interpolated from those there */
+    int no_own_records;               /* 1: points still above the target after placement keep the error
+                                         the interpolation states, rather than get a record of their own
+                                         (surface maps' probes: their count grows with refinement, and a
+                                         record of one's own costs a whole point's paths) */
+    int threads;
+    const cdl_progress_sink *progress;
+    const char *stage;
+    cdl_icache_stats *stats;          /* records added to it, passes, paths, own records */
+} cdl_icache_target;
+
+/* Place what the target's points need in the cache and interpolate them. */
+cdl_status cdl_icache_solve_shared(const cdl_icache_context *ctx, cdl_icache_shared *cache,
+                                   const cdl_icache_target *target, cdl_error *err);
+
 #endif

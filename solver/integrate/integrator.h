@@ -18,9 +18,11 @@
  * var_indirect), never in a result array. Integrators do not write the
  * plan's JSON: they leave counts and routes in the job, and plan_json.c
  * narrates them. A new method (glare at observers, surface maps, daylight
- * coefficients) is a new entry of the table, not code in solve.c. Glare
- * rates observers, not grid points: the observers are one more job
- * (`observers`), whose direct part is the background's.
+ * coefficients) is a new entry of a table, not code in solve.c: the grids'
+ * (cdl_integrator) or the solve's (cdl_solve_integrator, run once before
+ * the grids: the surface maps). Glare rates observers, not grid points: the
+ * observers are one more job (`observers`), whose direct part is the
+ * background's.
  *
  * Not public. Thread safety: one state per solve; integrators run their
  * own worker threads (pool.h) and return when those are done.
@@ -33,6 +35,7 @@
 
 #include "base/error.h"
 #include "solver/direct/direct.h"
+#include "solver/geometry/surface_mesh.h"
 #include "solver/icache/icache.h"
 #include "solver/icache/icache_file.h"
 #include "solver/pathtrace/pathtrace.h"
@@ -97,6 +100,14 @@ typedef struct cdl_solve_state {
     cdl_light_strategy *strategies;
     cdl_direct_route_tally *routes;
 
+    /* Surface maps (integrate_surfaces.c), made before the grids: their
+     * interreflection method, the meshing's counts, and the one cache the
+     * maps and the grids the cache serves share (NULL without maps). */
+    cdl_method surface_method;
+    cdl_surface_mesh_stats surface_stats;
+    size_t surface_records;           /* records the maps' points placed */
+    cdl_icache_shared *shared_cache;  /* owned */
+
     struct cdl_plan_json *plan;       /* owned: the plan's JSON as it is narrated (plan_json.h) */
 
     /* Glare (solve_observers.c, integrate_glare.c): the scene's observers
@@ -144,6 +155,17 @@ extern const cdl_integrator cdl_integrator_icache;      /* integrate_icache.c */
 extern const cdl_integrator cdl_integrator_pathtrace;   /* integrate_pathtrace.c */
 extern const cdl_integrator cdl_integrator_vertical;    /* integrate_vertical.c */
 extern const cdl_integrator cdl_integrator_glare;       /* integrate_glare.c */
+
+/* Integrators that run once for the whole solve, after planning and
+ * before the grids: the surface maps, whose cache records the grids then
+ * share. */
+typedef struct cdl_solve_integrator {
+    const char *name;
+    int (*applies)(const cdl_solve_state *state);
+    cdl_status (*run)(cdl_solve_state *state, cdl_error *err);
+} cdl_solve_integrator;
+
+extern const cdl_solve_integrator cdl_integrator_surfaces; /* integrate_surfaces.c */
 
 /* "grid NAME" or "grid NAME: WHAT", the stage a progress report names. */
 void cdl_grid_job_stage(const cdl_grid_job *job, const char *what, char *out, size_t size);

@@ -25,7 +25,7 @@ void cdl_csv_format_number(double v, char buf[CDL_CSV_NUMBER_SIZE])
     memcpy(buf, own, sizeof own);
 }
 
-static void write_row(FILE *fp, const double *values, size_t n)
+void cdl_csv_write_numbers(FILE *fp, const double *values, size_t n)
 {
     char buf[CDL_CSV_NUMBER_SIZE];
     for (size_t k = 0; k < n; ++k) {
@@ -66,7 +66,7 @@ cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *
         size_t n = 10;
         for (int c = 0; c < EXTRA; ++c)
             if (extra[c].values) row[n++] = extra[c].values[i];
-        write_row(file.fp, row, n);
+        cdl_csv_write_numbers(file.fp, row, n);
     }
     /* commit checks the stream's error flag: a failed write above is reported there. */
     return cdl_atomic_file_commit(&file, err);

@@ -107,6 +107,8 @@ cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *
 /* A number as the CSV files write it: the shortest of 15 to 17 significant
  * digits that reads back as exactly v (csv_output.c). */
 void cdl_csv_format_number(double v, char buf[CDL_CSV_NUMBER_SIZE]);
+/* One CSV row of n numbers, each as NAME.csv writes them (above), then "\n". */
+void cdl_csv_write_numbers(FILE *fp, const double *values, size_t n);
 
 /* NAME.exr (rect and polygon grids; a grid without a raster is refused):
  * 32-bit float channels, one pixel per raster pixel, top row first:

@@ -188,3 +188,47 @@ size_t cdl_lux_scale_step_label(int step, char *buf, size_t size)
     if (size > 0) buf[n < size ? n : size - 1] = '\0';
     return n;
 }
+
+typedef struct weighted {
+    double E, area;
+} weighted;
+
+static int compare_weighted(const void *a, const void *b)
+{
+    double x = ((const weighted *)a)->E, y = ((const weighted *)b)->E;
+    return (x > y) - (x < y);
+}
+
+cdl_lux_scale cdl_lux_scale_linear_for_areas(const double *E_lx, const double *area, size_t count)
+{
+    weighted *w = malloc((count ? count : 1) * sizeof *w);
+    double *clamped = calloc(count ? count : 1, sizeof *clamped);
+    if (!w || !clamped) {
+        free(w);
+        free(clamped);
+        return cdl_lux_scale_linear_for_values(E_lx, count);
+    }
+    size_t n = 0;
+    double total = 0.0;
+    for (size_t i = 0; i < count; ++i)
+        if (isfinite(E_lx[i]) && area[i] > 0.0) {
+            w[n++] = (weighted){E_lx[i], area[i]};
+            total += area[i];
+        }
+    qsort(w, n, sizeof *w, compare_weighted);
+    double top = n ? w[n - 1].E : 0.0, below = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        below += w[i].area;
+        if (below >= 0.99 * total) {
+            top = w[i].E;
+            break;
+        }
+    }
+    for (size_t i = 0; i < count; ++i) clamped[i] = isfinite(E_lx[i]) && E_lx[i] > top && top > 0.0 ? top : E_lx[i];
+    cdl_lux_scale s = cdl_lux_scale_linear_for_values(clamped, count);
+    for (size_t i = 0; i < count; ++i)
+        if (E_lx[i] > s.hi.lx) s.clipped_top = 1;
+    free(w);
+    free(clamped);
+    return s;
+}

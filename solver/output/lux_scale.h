@@ -43,11 +43,20 @@ typedef struct cdl_lux_scale {
     cdl_illuminance lo, hi;   /* log: value(lo_step), value(hi_step); linear: the ends, multiples of tick */
     double tick_lx;           /* linear: distance between ticks, a 1-2-5 value */
     int clipped;              /* linear: some value lies below lo */
+    int clipped_top;          /* linear, of areas: some value lies above hi */
 } cdl_lux_scale;
 
 /* The linear scale for `count` illuminances (finite values; see above).
  * All zero or empty: 0 .. 10 lx. */
 cdl_lux_scale cdl_lux_scale_linear_for_values(const double *E_lx, size_t count);
+
+/* The linear scale of values that stand for areas (a surface map's
+ * vertices, area[i] the area each stands for): as above, but its top is
+ * the value 99 % of the area lies at or below, when the rest goes higher
+ * (clipped_top): a luminaire's hot spot on a wall, a small part of the
+ * area where the mesh is densest, must not flatten the colours of the
+ * rest. Values above the top show in the top colour. */
+cdl_lux_scale cdl_lux_scale_linear_for_areas(const double *E_lx, const double *area, size_t count);
 
 /* A linear scale's label of `lx`: "480 lx", "0.25 lx", "12.5k lx" (k from 10 000 lx). */
 size_t cdl_lux_scale_value_label(double lx, char *buf, size_t size);

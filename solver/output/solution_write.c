@@ -17,6 +17,7 @@
 #include "base/strings.h"
 #include "solver/output/glare_output.h"
 #include "solver/output/grid_result.h"
+#include "solver/output/surface_output.h"
 #include "solver/scene/scene_internal.h"
 #include "solver/solution_internal.h"
 
@@ -92,6 +93,31 @@ void cdl_grid_solution_result(const cdl_grid_solution *gs, cdl_grid_result *out)
     out->Esz_stderr = gs->Esz_stderr;
 }
 
+/* "surfaces": the surface maps' statistics (surface_output.h), in the scene's order. */
+static void add_surfaces(cJSON *root, const cdl_scene *scene, const cdl_solution *sol)
+{
+    if (sol->surface_count == 0) return;
+    cJSON *list = cJSON_AddArrayToObject(root, "surfaces");
+    for (size_t k = 0; k < sol->surface_count; ++k) {
+        cdl_surface_stats st;
+        cdl_surface_solution_stats(&sol->surfaces[k], &st);
+        const cdl_surface_spec *spec = &scene->surfaces[sol->surfaces[k].surface];
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "name", spec->map_name);
+        cJSON_AddStringToObject(o, "surface", spec->json_path);
+        cJSON_AddNumberToObject(o, "area_m2", st.area_m2);
+        cJSON_AddNumberToObject(o, "Em_lx", st.Em_lx);
+        cJSON_AddNumberToObject(o, "Emin_lx", st.Emin_lx);
+        cJSON_AddNumberToObject(o, "Emax_lx", st.Emax_lx);
+        cJSON_AddNumberToObject(o, "U0", st.U0);
+        cJSON_AddNumberToObject(o, "L_mean_cd_m2", st.L_mean_cd_m2);
+        cJSON_AddNumberToObject(o, "stderr_mean_rel", st.stderr_mean_rel);
+        cJSON_AddNumberToObject(o, "vertices", (double)st.vertices);
+        cJSON_AddNumberToObject(o, "triangles", (double)st.triangles);
+        cJSON_AddItemToArray(list, o);
+    }
+}
+
 static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol, const cdl_grid_stats *stats,
                                 const char *path, cdl_error *err)
 {
@@ -161,6 +187,7 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
             }
         }
     }
+    add_surfaces(root, scene, sol);
     cJSON *power = cJSON_AddObjectToObject(root, "power");
     if (sol->power.luminaires_counted > 0 && sol->power.luminaires_without_watts == 0) {
         cJSON_AddNumberToObject(power, "installed_w", sol->power.installed_w);
@@ -221,6 +248,21 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
     return st;
 }
 
+/* OUTDIR/surfaces/NAME.csv and NAME.tri.csv per map, and OUTDIR/scene.glb. */
+static cdl_status write_surfaces(const cdl_scene *scene, const cdl_solution *sol, const char *out_dir,
+                                 const char *ocio_config, cdl_error *err)
+{
+    char *folder = cdl_path_join(out_dir, "surfaces", "");
+    char *glb = cdl_path_join(out_dir, "scene", ".glb");
+    cdl_status st = folder && glb ? cdl_solution_prepare_folder(folder, err) : cdl_error_out_of_memory(err);
+    for (size_t k = 0; st == CDL_OK && k < sol->surface_count; ++k)
+        st = cdl_surface_write_csv(&sol->surfaces[k], folder, scene->surfaces[sol->surfaces[k].surface].map_name, err);
+    if (st == CDL_OK) st = cdl_surface_write_glb(scene, sol, glb, ocio_config, err);
+    free(folder);
+    free(glb);
+    return st;
+}
+
 cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, const char *out_dir,
                               const cdl_solution_write_options *options, cdl_error *err)
 {
@@ -272,6 +314,7 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
         free(exr);
         free(png);
     }
+    if (st == CDL_OK && sol->surface_count > 0) st = write_surfaces(scene, sol, out_dir, ocio_config, err);
     if (st == CDL_OK && scene->observer_count > 0) {
         char *glare = cdl_path_join(out_dir, "glare", ".csv");
         st = glare ? cdl_glare_write_csv(scene, sol, glare, err) : cdl_error_out_of_memory(err);

@@ -31,10 +31,7 @@
 #include "radiometry/frame.h"
 #include "solver/geometry/polygon.h"
 
-/* Fan segments of a disk: the sagitta of each chord, r (1 - cos(pi / N)),
- * must stay below 1e-4 r; N = 224 gives 9.8e-5 r (N >= 223 is needed), a
- * multiple of 8 so the fan is symmetric about the frame's axes. */
-#define DISK_SEGMENTS 224
+#define DISK_SEGMENTS CDL_DISK_SEGMENTS
 
 /* The relative rounding bound of cdl_ray_offsets_epsilon. */
 #define ROUNDING_RELATIVE 0x1p-40
@@ -166,7 +163,7 @@ static cdl_vec3 box_corner(const cdl_surface_spec *s, int k)
                          k & 4 ? s->box_max.z : s->box_min.z);
 }
 
-static cdl_status add_box(cdl_scene_geometry *g, const cdl_surface_spec *s, cdl_geometry_piece *tmpl, cdl_error *err)
+void cdl_box_face_corners(const cdl_surface_spec *s, int face, cdl_vec3 corners[4])
 {
     /* Corners of each face, counter-clockwise seen from outside. */
     static const int faces[CDL_BOX_FACES][4] = {
@@ -177,20 +174,33 @@ static cdl_status add_box(cdl_scene_geometry *g, const cdl_surface_spec *s, cdl_
         {0, 2, 3, 1}, /* -z */
         {4, 5, 7, 6}, /* +z */
     };
+    for (int k = 0; k < 4; ++k) {
+        /* Inward: the same corners in the opposite order. */
+        int corner = s->inward ? faces[face][(4 - k) % 4] : faces[face][k];
+        corners[k] = box_corner(s, corner);
+    }
+}
+
+static cdl_status add_box(cdl_scene_geometry *g, const cdl_surface_spec *s, cdl_geometry_piece *tmpl, cdl_error *err)
+{
     for (int f = 0; f < CDL_BOX_FACES; ++f) {
         if (s->face_open[f]) continue;
         cdl_vec3 c[4];
-        for (int k = 0; k < 4; ++k) {
-            /* Inward: the same corners in the opposite order. */
-            int corner = s->inward ? faces[f][(4 - k) % 4] : faces[f][k];
-            c[k] = box_corner(s, corner);
-        }
+        cdl_box_face_corners(s, f, c);
         tmpl->box_face = f;
         tmpl->reflectance = s->face_reflectance[f];
         cdl_status st = add_quad(g, tmpl, c, err);
         if (st != CDL_OK) return st;
     }
     return CDL_OK;
+}
+
+cdl_vec3 cdl_disk_rim_point(cdl_vec3 center, cdl_vec3 normal, double radius, uint32_t k)
+{
+    cdl_frame f = cdl_frame_from_normal(normal);
+    /* Counter-clockwise about the normal, since s x t = n. */
+    double phi = CDL_TWO_PI * k / CDL_DISK_SEGMENTS;
+    return cdl_vec3_add(center, cdl_frame_to_world(&f, cdl_vec3_make(radius * cos(phi), radius * sin(phi), 0.0)));
 }
 
 static cdl_status add_disk(cdl_scene_geometry *g, cdl_geometry_piece *tmpl, cdl_vec3 center, cdl_vec3 normal,
@@ -200,13 +210,9 @@ static cdl_status add_disk(cdl_scene_geometry *g, cdl_geometry_piece *tmpl, cdl_
     uint32_t *tri;
     if (alloc_mesh(DISK_SEGMENTS + 1, DISK_SEGMENTS, &xyz, &tri, err) != CDL_OK) return CDL_ERR_INTERNAL;
     normal = cdl_vec3_normalize(normal);
-    cdl_frame f = cdl_frame_from_normal(normal);
     put_vertex(xyz, 0, center);
     for (uint32_t k = 0; k < DISK_SEGMENTS; ++k) {
-        /* Counter-clockwise about the normal, since s x t = n. */
-        double phi = CDL_TWO_PI * k / DISK_SEGMENTS;
-        put_vertex(xyz, k + 1u, cdl_vec3_add(center, cdl_frame_to_world(&f, cdl_vec3_make(radius * cos(phi),
-                                                                                        radius * sin(phi), 0.0))));
+        put_vertex(xyz, k + 1u, cdl_disk_rim_point(center, normal, radius, k));
         tri[3 * k] = 0;
         tri[3 * k + 1] = k + 1u;
         tri[3 * k + 2] = (k + 1u) % DISK_SEGMENTS + 1u;

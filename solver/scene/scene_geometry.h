@@ -39,6 +39,20 @@ typedef struct cdl_geometry_piece {
     double area;                         /* m^2 */
 } cdl_geometry_piece;
 
+/* Fan segments of a disk: the sagitta of each chord, r (1 - cos(pi / N)),
+ * must stay below 1e-4 r; N = 224 gives 9.8e-5 r (N >= 223 is needed), a
+ * multiple of 8 so the fan is symmetric about the frame's axes. */
+#define CDL_DISK_SEGMENTS 224
+
+/* The corners of a box's face (CDL_BOX_*), counter-clockwise seen from its
+ * front (outside, or inside for an inward box), as the ray scene has them:
+ * the faces share their corners bit for bit. */
+void cdl_box_face_corners(const cdl_surface_spec *box, int face, cdl_vec3 corners[4]);
+
+/* The rim vertex k (0 <= k < CDL_DISK_SEGMENTS) of a disk's fan, counter-
+ * clockwise about its (unit) normal, as the ray scene has it. */
+cdl_vec3 cdl_disk_rim_point(cdl_vec3 center, cdl_vec3 normal, double radius, uint32_t k);
+
 cdl_status cdl_scene_geometry_build(const cdl_scene *scene, cdl_scene_geometry **out, cdl_error *err);
 void cdl_scene_geometry_release(cdl_scene_geometry *geometry);
 

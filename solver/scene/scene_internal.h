@@ -76,6 +76,17 @@ typedef struct cdl_surface_spec {
     double reflectance;                  /* diffuse, [0, 1]; box: see face_reflectance */
     int two_sided;                       /* default 1 */
     double luminance_cd_m2;              /* > 0: the front side emits (Lambertian) */
+    /* surface map: its front side's illuminance on a mesh that follows the
+     * light (OUTDIR/surfaces/NAME.csv). mapped when "solver":
+     * {"surface_maps"} is "all" or names it, or when it has requirements;
+     * map_name is then the NAME of its files: its name, or "surface_K" (K
+     * its index in "surfaces") when it has none. */
+    int mapped;
+    char *map_name;
+    /* "requirements" (EN 12464-1:2021 4.3 for walls and ceilings: say Em
+     * 50 lx, U0 0.10), which `candela report` checks; 0 when not given */
+    double required_Em_lx;
+    double required_U0;
 } cdl_surface_spec;
 
 /* ---- luminaires --------------------------------------------------------- */
@@ -198,6 +209,10 @@ typedef struct cdl_grid_spec {
  * roulette) until what is left out is below a tenth of the target. */
 #define CDL_BOUNCES_AUTO (-1)
 
+/* Which surfaces are mapped ("surface_maps"): none (the default), all, or
+ * those listed by name (cdl_surface_spec.mapped says which). */
+typedef enum cdl_surface_maps { CDL_SURFACE_MAPS_NONE, CDL_SURFACE_MAPS_ALL, CDL_SURFACE_MAPS_LISTED } cdl_surface_maps;
+
 typedef struct cdl_solver_settings {
     cdl_method method;                   /* default auto */
     cdl_quality quality;                 /* default normal */
@@ -207,6 +222,7 @@ typedef struct cdl_solver_settings {
     int threads;                         /* 0 = all cores (default) */
     int direct_samples;                  /* 0 = adaptive to the target: samples per partly hidden emitter */
     int ao_samples;                      /* 0 = from quality */
+    cdl_surface_maps surface_maps;       /* default none; surfaces with requirements are mapped regardless */
 } cdl_solver_settings;
 
 /* The target the settings ask for: target_error when given, else the

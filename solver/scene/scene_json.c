@@ -331,6 +331,26 @@ cdl_status cdl_scene_json_read_path(const cdl_scene_parse *ctx, const cJSON *nod
     return CDL_OK;
 }
 
+/* ---- requirements and names --------------------------------------------------------- */
+
+const char *const cdl_scene_requirements_keys[] = {"Em_lx", "U0", NULL};
+
+cdl_status cdl_scene_json_read_requirements(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                            double *Em_lx, double *U0)
+{
+    if (!node) return CDL_OK;
+    char p[CDL_SCENE_PATH_MAX];
+    if (cdl_scene_json_check_object(ctx, node, path, "requirements {\"Em_lx\": lux, \"U0\": Emin / Em}",
+                                    cdl_scene_requirements_keys) != CDL_OK ||
+        cdl_scene_json_read_number(ctx, cdl_scene_json_field(node, path, "Em_lx", p), p, CDL_RANGE_POSITIVE, 0,
+                                   Em_lx) != CDL_OK ||
+        cdl_scene_json_read_number(ctx, cdl_scene_json_field(node, path, "U0", p), p, CDL_RANGE_UNIT_OPEN0, 0, U0) !=
+            CDL_OK)
+        return CDL_ERR_INPUT;
+    if (!node->child) return cdl_scene_json_fail(ctx, path, "at least one of Em_lx and U0", node);
+    return CDL_OK;
+}
+
 int cdl_scene_name_ok(const char *name)
 {
     size_t n = strlen(name);

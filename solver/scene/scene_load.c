@@ -26,7 +26,9 @@
  *   rect     origin, u, v, nu, nv, normal (default u x v)
  *   polygon  vertices, holes, spacing (metres > 0 or "auto", default "auto"), normal
  *   points   points: [{"p": [x, y, z], "n": [nx, ny, nz]}, ...]
- * Solver: method, quality, target_error, bounces, seed, threads, direct_samples, ao_samples.
+ * Solver: method, quality, target_error, bounces, seed, threads, direct_samples, ao_samples,
+ *   surface_maps ("none", the default, "all", or a list of surface names; a
+ *   surface with "requirements" is mapped in any case).
  * The photometric values (intensity_cd, flux_lm, luminance_cd_m2,
  * illuminance_lx) are a number in the unit the key names or text with any
  * unit of the same dimension, as people type it: "46.45 fc", "2 kcd",
@@ -53,9 +55,8 @@
 static const char *const document_keys[] = {"$schema", "version", "surfaces", "luminaires", "grids", "observers",
                                             "solver", NULL};
 static const char *const settings_keys[] = {"method", "quality", "target_error", "bounces", "seed", "threads",
-                                            "direct_samples", "ao_samples", NULL};
+                                            "direct_samples", "ao_samples", "surface_maps", NULL};
 static const char *const point_keys[] = {"p", "n", NULL};
-static const char *const requirements_keys[] = {"Em_lx", "U0", NULL};
 
 
 static const char *const method_names[] = {"auto", "direct", "icache", "pathtrace", NULL};
@@ -456,24 +457,6 @@ static cdl_status read_grid_outputs(const cdl_scene_parse *ctx, const cJSON *nod
     return CDL_OK;
 }
 
-/* "requirements": {"Em_lx": 500, "U0": 0.6}, EN 12464-1's maintained
- * illuminance and uniformity for the task area; at least one of them. */
-static cdl_status read_grid_requirements(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
-                                         cdl_grid_spec *out)
-{
-    if (!node) return CDL_OK;
-    char p[CDL_SCENE_PATH_MAX];
-    if (cdl_scene_json_check_object(ctx, node, path, "requirements {\"Em_lx\": lux, \"U0\": Emin / Em}",
-                                    requirements_keys) != CDL_OK ||
-        cdl_scene_json_read_number(ctx, field(node, path, "Em_lx", p), p, CDL_RANGE_POSITIVE, 0, &out->required_Em_lx) !=
-            CDL_OK ||
-        cdl_scene_json_read_number(ctx, field(node, path, "U0", p), p, CDL_RANGE_UNIT_OPEN0, 0, &out->required_U0) !=
-            CDL_OK)
-        return CDL_ERR_INPUT;
-    if (!node->child) return cdl_scene_json_fail(ctx, path, "at least one of Em_lx and U0", node);
-    return CDL_OK;
-}
-
 static cdl_status read_grid(const cdl_scene_parse *ctx, const cJSON *node, const char *path, cdl_grid_spec *out)
 {
     char p[CDL_SCENE_PATH_MAX];
@@ -489,7 +472,8 @@ static cdl_status read_grid(const cdl_scene_parse *ctx, const cJSON *node, const
                                    name);
     if (cdl_scene_json_read_string(ctx, name, p, 1, &out->name) != CDL_OK ||
         read_grid_outputs(ctx, field(node, path, "outputs", p), p, out) != CDL_OK ||
-        read_grid_requirements(ctx, field(node, path, "requirements", p), p, out) != CDL_OK)
+        cdl_scene_json_read_requirements(ctx, field(node, path, "requirements", p), p, &out->required_Em_lx,
+                                         &out->required_U0) != CDL_OK)
         return CDL_ERR_INPUT;
     switch (out->kind) {
     case CDL_GRID_RECT: {
@@ -576,6 +560,74 @@ static cdl_status read_settings(const cdl_scene_parse *ctx, const cJSON *node, c
     out->threads = (int)threads;
     out->direct_samples = (int)direct;
     out->ao_samples = (int)ao;
+    return CDL_OK;
+}
+
+/* ---- surface maps -------------------------------------------------------------------- */
+
+/* The name of surface k's map files: its name, or "surface_K". */
+static cdl_status name_map(const cdl_scene_parse *ctx, cdl_scene *scene, size_t k)
+{
+    cdl_surface_spec *s = &scene->surfaces[k];
+    char fallback[32], p[CDL_SCENE_PATH_MAX];
+    snprintf(fallback, sizeof fallback, "surface_%zu", k);
+    const char *name = s->name ? s->name : fallback;
+    if (!cdl_scene_name_ok(name)) {
+        cdl_scene_json_path_key(p, s->json_path, "name");
+        return cdl_scene_json_failf(ctx, p,
+                                    "the name of a mapped surface usable as a file name (1 to 64 letters, digits, "
+                                    "'.', '_', '-', not starting with '.' or '-')",
+                                    "\"%s\"", name);
+    }
+    for (size_t j = 0; j < k; ++j)
+        if (scene->surfaces[j].map_name && names_equal_ignoring_case(scene->surfaces[j].map_name, name)) {
+            cdl_scene_json_path_key(p, s->json_path, s->name ? "name" : "type");
+            return cdl_scene_json_failf(ctx, p, "a mapped surface's name not used by another (ignoring case)",
+                                        "\"%s\", already %s's", name, scene->surfaces[j].json_path);
+        }
+    s->map_name = cdl_string_copy(name);
+    return s->map_name ? CDL_OK : cdl_error_out_of_memory(ctx->err);
+}
+
+/* "surface_maps": "none" (the default), "all", or a list of surface names;
+ * a surface with requirements is mapped in any case. */
+static cdl_status read_surface_maps(const cdl_scene_parse *ctx, const cJSON *node, const char *path, cdl_scene *scene)
+{
+    static const char *const modes[] = {"none", "all", NULL};
+    const char *expected = "\"all\", \"none\" or a list of surface names";
+    int mode = 0;
+    scene->settings.surface_maps = CDL_SURFACE_MAPS_NONE;
+    if (cJSON_IsArray(node)) {
+        scene->settings.surface_maps = CDL_SURFACE_MAPS_LISTED;
+        size_t i = 0;
+        char item[CDL_SCENE_PATH_MAX];
+        for (const cJSON *e = node->child; e; e = e->next, ++i) {
+            cdl_scene_json_path_index(item, path, i);
+            if (!cJSON_IsString(e)) return cdl_scene_json_fail(ctx, item, "a surface name", e);
+            size_t found = 0;
+            for (size_t k = 0; k < scene->surface_count; ++k)
+                if (scene->surfaces[k].name && strcmp(scene->surfaces[k].name, e->valuestring) == 0) {
+                    if (scene->surfaces[k].mapped) return cdl_scene_json_fail(ctx, item, "each surface named once", e);
+                    scene->surfaces[k].mapped = 1;
+                    ++found;
+                }
+            if (!found)
+                return cdl_scene_json_failf(ctx, item, "the name of a surface in \"surfaces\"",
+                                            "\"%s\", which no surface has", e->valuestring);
+        }
+    } else if (node) {
+        if (!cJSON_IsString(node) || cdl_scene_json_read_choice(ctx, node, path, modes, 1, &mode) != CDL_OK) {
+            cdl_error_clear(ctx->err);
+            return cdl_scene_json_fail(ctx, path, expected, node);
+        }
+        scene->settings.surface_maps = mode == 1 ? CDL_SURFACE_MAPS_ALL : CDL_SURFACE_MAPS_NONE;
+    }
+    for (size_t k = 0; k < scene->surface_count; ++k) {
+        cdl_surface_spec *s = &scene->surfaces[k];
+        s->mapped |= scene->settings.surface_maps == CDL_SURFACE_MAPS_ALL || s->required_Em_lx > 0.0 ||
+                     s->required_U0 > 0.0;
+        if (s->mapped && name_map(ctx, scene, k) != CDL_OK) return CDL_ERR_INPUT;
+    }
     return CDL_OK;
 }
 
@@ -686,7 +738,9 @@ static cdl_status read_document(const cdl_scene_parse *ctx, const cJSON *root, c
     if (st != CDL_OK) return st;
     if (scene->grid_count + scene->observer_count == 0)
         return cdl_scene_json_fail(ctx, p, "at least one calculation grid or observer", list);
-    return read_settings(ctx, field(root, "", "solver", p), p, &scene->settings);
+    const cJSON *solver = field(root, "", "solver", p);
+    if (read_settings(ctx, solver, p, &scene->settings) != CDL_OK) return CDL_ERR_INPUT;
+    return read_surface_maps(ctx, solver ? field(solver, p, "surface_maps", item) : NULL, item, scene);
 }
 
 /* Line and column (1-based) of byte `offset` in text. */
@@ -818,7 +872,7 @@ void cdl_scene_keys_collect(cdl_scene_keys *out)
     out->sets[n++] = (cdl_scene_key_set){"solver", settings_keys};
     out->sets[n++] = (cdl_scene_key_set){"grid point", point_keys};
     out->sets[n++] = (cdl_scene_key_set){"array", cdl_scene_array_keys};
-    out->sets[n++] = (cdl_scene_key_set){"requirements", requirements_keys};
+    out->sets[n++] = (cdl_scene_key_set){"requirements", cdl_scene_requirements_keys};
     out->sets[n++] = (cdl_scene_key_set){"observer", cdl_scene_observer_keys};
     out->sets[n++] = (cdl_scene_key_set){"grid observers", cdl_scene_observer_grid_keys};
     out->sets[n++] = (cdl_scene_key_set){"observer requirements", cdl_scene_observer_requirements_keys};

@@ -104,6 +104,13 @@ cdl_status cdl_scene_json_read_ring(const cdl_scene_parse *ctx, const cJSON *nod
 cdl_status cdl_scene_json_read_path(const cdl_scene_parse *ctx, const cJSON *node, const char *path, int required,
                                     char **out);
 
+/* "requirements": {"Em_lx": 500, "U0": 0.6} (grids and surfaces), EN
+ * 12464-1's maintained illuminance (> 0) and uniformity Emin / Em (in
+ * (0, 1]); at least one. Absent: both stay as they are. */
+extern const char *const cdl_scene_requirements_keys[];
+cdl_status cdl_scene_json_read_requirements(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                            double *Em_lx, double *U0);
+
 /* ---- polygons and surfaces (scene_surface.c) ------------------------------ */
 
 /* Reads "vertices" and "holes" of `object` into outer/holes and checks the
@@ -132,7 +139,7 @@ size_t cdl_scene_surface_key_sets(cdl_scene_keys *keys, size_t first);
 /* ---- names (scene_json.c) ---------------------------------------------------------- */
 
 /* A name usable as a file name: 1 to 64 letters, digits, '.', '_', '-', not
- * starting with '.' or '-' (grids, observers). */
+ * starting with '.' or '-' (grids, observers, surface maps). */
 int cdl_scene_name_ok(const char *name);
 
 /* ---- observers (scene_observers.c) --------------------------------------------------- */

@@ -3,7 +3,8 @@
  * Keys by type (DESIGN.md, "Scene file"):
  *   all surfaces  type, name, reflectance (required; a number in [0, 1], for
  *                 box also per face), two_sided (default true),
- *                 luminance_cd_m2 (>= 0, default 0)
+ *                 luminance_cd_m2 (>= 0, default 0), requirements (as
+ *                 grids': Em_lx and U0, for the surface's map)
  *   rect          origin, u, v            (u, v non-zero, not parallel)
  *   polygon       vertices, holes         (planar, simple, holes inside)
  *   box           min, max, inward (default false), open (list of faces)
@@ -38,7 +39,7 @@ static const char *const geometry_keys[][5] = {
     {"center", "radius", "inward", NULL},
     {"file", "vertices", "triangles", NULL},
 };
-static const char *const material_keys[] = {"name", "reflectance", "two_sided", "luminance_cd_m2", NULL};
+static const char *const material_keys[] = {"name", "reflectance", "two_sided", "luminance_cd_m2", "requirements", NULL};
 
 void cdl_scene_rings_free(cdl_ring3 *outer, cdl_ring3 *holes, size_t hole_count)
 {
@@ -54,6 +55,8 @@ void cdl_scene_rings_free(cdl_ring3 *outer, cdl_ring3 *holes, size_t hole_count)
 void cdl_scene_surface_spec_free(cdl_surface_spec *spec)
 {
     free(spec->name);
+    free(spec->map_name);
+    spec->map_name = NULL;
     cdl_scene_rings_free(&spec->outer, spec->holes, spec->hole_count);
     free(spec->file);
     free(spec->mesh_vertices);
@@ -481,6 +484,10 @@ cdl_status cdl_scene_json_read_surface(const cdl_scene_parse *ctx, const cJSON *
     }
     cdl_scene_json_path_key(p, path, "two_sided");
     if (cdl_scene_json_read_bool(ctx, cdl_scene_json_member(node, "two_sided"), p, 0, &out->two_sided) != CDL_OK)
+        return CDL_ERR_INPUT;
+    cdl_scene_json_path_key(p, path, "requirements");
+    if (cdl_scene_json_read_requirements(ctx, cdl_scene_json_member(node, "requirements"), p, &out->required_Em_lx,
+                                         &out->required_U0) != CDL_OK)
         return CDL_ERR_INPUT;
     cdl_scene_json_path_key(p, path, "luminance_cd_m2");
     return cdl_scene_json_read_quantity(ctx, cdl_scene_json_member(node, "luminance_cd_m2"), p, CDL_DIM_LUMINANCE,

@@ -35,13 +35,31 @@ cat > "$tmp/bin/id" <<'SH'
 [ "$1" = -u ] && { [ -n "${FAKE_USER:-}" ] && echo 1000 || echo 0; exit 0; }
 exec /usr/bin/id "$@"
 SH
+# npm records its arguments (the glTF validator's install).
+cat > "$tmp/bin/npm" <<'SH'
+#!/usr/bin/env bash
+echo "npm $*" >> "$FAKE_LOG"
+SH
 chmod +x "$tmp/bin/"*
 
-# run NAME MISSING [USER]: run setup.sh; its output in $tmp/NAME.out.
+# The validator's folder: its package.json, and node_modules holding the
+# pinned version ("present") or nothing ("absent").
+for v in present absent; do
+  mkdir -p "$tmp/validator-$v"
+  cp "$CANDELA_SOURCE_DIR/tools/gltf_validator/package.json" "$tmp/validator-$v/"
+done
+want=$(sed -n 's/.*"gltf-validator": *"\([^"]*\)".*/\1/p' "$CANDELA_SOURCE_DIR/tools/gltf_validator/package.json")
+mkdir -p "$tmp/validator-present/node_modules/gltf-validator"
+printf '{\n  "name": "gltf-validator",\n  "version": "%s"\n}\n' "$want" \
+  > "$tmp/validator-present/node_modules/gltf-validator/package.json"
+
+# run NAME MISSING [USER [VALIDATOR]]: run setup.sh; its output in
+# $tmp/NAME.out. VALIDATOR: present (the default) or absent.
 run() {
   local log="$tmp/$1.log"
   : > "$log"
   PATH="$tmp/bin:$PATH" FAKE_LOG="$log" FAKE_MISSING="$2" FAKE_USER="${3:-}" \
+    CANDELA_GLTF_VALIDATOR_DIR="$tmp/validator-${4:-present}" \
     bash "$CANDELA_SOURCE_DIR/scripts/setup.sh" > "$tmp/$1.out" 2>&1
 }
 
@@ -74,4 +92,11 @@ run user "cmake" yes; st=$?
 check "not root: exit 0" '[ $st -eq 0 ]'
 check "not root: apt-get through sudo" '[ "$(grep -c -x sudo "$tmp/user.log")" -eq 2 ]'
 check "not root: installs cmake" 'grep -q "apt-get install .*cmake" "$tmp/user.log"'
+
+# The glTF validator missing: npm ci into its folder, said on stderr; no apt-get.
+run validator "" "" absent; st=$?
+check "validator missing: exit 0" '[ $st -eq 0 ]'
+check "validator missing: npm ci into its folder" \
+  '[ "$(cat "$tmp/validator.log")" = "npm ci --prefix $tmp/validator-absent --no-audit --no-fund --loglevel=error" ]'
+check "validator missing: says so" 'grep -q "glTF validator $want" "$tmp/validator.out"'
 exit $fail

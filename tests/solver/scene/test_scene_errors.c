@@ -305,6 +305,37 @@ static const error_case cases[] = {
     {"{\"version\": 1, " GRIDS ", \"solver\": {\"seed\": -1}}", "solver.seed: expected an integer in [0, 9007199254740992]"},
     {"{\"version\": 1, " GRIDS ", \"solver\": {\"threads\": 1e999}}", "solver.threads: expected an integer in [0, 4096], found a number too large"},
     {"{\"version\": 1, " GRIDS ", \"solver\": {\"sampels\": 4}}", "solver.sampels: expected a key of the solver settings"},
+    /* surface maps */
+    {"{\"version\": 1, \"surfaces\": [{" RECT ", \"reflectance\": 0.5, \"name\": \"wall\"}], " GRIDS
+     ", \"solver\": {\"surface_maps\": [\"wal\"]}}",
+     "solver.surface_maps[0]: expected the name of a surface in \"surfaces\", found \"wal\", which no surface has"},
+    {"{\"version\": 1, " GRIDS ", \"solver\": {\"surface_maps\": \"some\"}}",
+     "solver.surface_maps: expected \"all\", \"none\" or a list of surface names, found the string \"some\""},
+    {"{\"version\": 1, " GRIDS ", \"solver\": {\"surface_maps\": true}}",
+     "solver.surface_maps: expected \"all\", \"none\" or a list of surface names, found true"},
+    {"{\"version\": 1, " GRIDS ", \"solver\": {\"surface_maps\": [3]}}",
+     "solver.surface_maps[0]: expected a surface name, found the number 3"},
+    {"{\"version\": 1, \"surfaces\": [{" RECT ", \"reflectance\": 0.5, \"name\": \"wall\"}], " GRIDS
+     ", \"solver\": {\"surface_maps\": [\"wall\", \"wall\"]}}",
+     "solver.surface_maps[1]: expected each surface named once"},
+    {"{\"version\": 1, \"surfaces\": [{" RECT ", \"reflectance\": 0.5, \"name\": \"east wall\"}], " GRIDS
+     ", \"solver\": {\"surface_maps\": \"all\"}}",
+     "surfaces[0].name: expected the name of a mapped surface usable as a file name"},
+    {"{\"version\": 1, \"surfaces\": [{" RECT ", \"reflectance\": 0.5, \"name\": \"Wall\"}, {" RECT
+     ", \"reflectance\": 0.5, \"name\": \"wall\"}], " GRIDS ", \"solver\": {\"surface_maps\": \"all\"}}",
+     "surfaces[1].name: expected a mapped surface's name not used by another (ignoring case), found \"wall\", "
+     "already surfaces[0]'s"},
+    {"{\"version\": 1, \"surfaces\": [{" RECT ", \"reflectance\": 0.5, \"name\": \"surface_1\"}, {" RECT
+     ", \"reflectance\": 0.5}], " GRIDS ", \"solver\": {\"surface_maps\": \"all\"}}",
+     "surfaces[1].type: expected a mapped surface's name not used by another (ignoring case), found \"surface_1\""},
+    {SURFACE(RECT ", \"reflectance\": 0.5, \"requirements\": {\"U0\": 2}"),
+     "surfaces[0].requirements.U0: expected a number in (0, 1]"},
+    {SURFACE(RECT ", \"reflectance\": 0.5, \"requirements\": {}"),
+     "surfaces[0].requirements: expected at least one of Em_lx and U0"},
+    {SURFACE(RECT ", \"reflectance\": 0.5, \"requirements\": {\"UGR\": 19}"),
+     "surfaces[0].requirements.UGR: expected a key of requirements"},
+    {LUMINAIRE("\"type\": \"area\", \"luminance_cd_m2\": 1, \"shape\": {" RECT ", \"requirements\": {\"U0\": 0.1}}"),
+     "luminaires[1].shape.requirements: expected only geometric keys in a shape"},
 };
 
 static void check_case(const error_case *c, size_t index)
