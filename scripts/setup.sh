@@ -15,6 +15,7 @@ packages=(
   python3-jsonschema
   libcairo2-dev libpango1.0-dev
   fonts-dejavu-core chromium poppler-utils
+  libopenmpi-dev openmpi-bin
 )
 
 # Node.js and npm run the glTF validator; a machine that has them from
