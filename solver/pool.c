@@ -35,6 +35,13 @@ double cdl_pool_now_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+double cdl_pool_cpu_seconds(void)
+{
+    struct timespec ts;
+    if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) != 0) return 0.0;
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 int cdl_progress_report(const cdl_progress_sink *sink, const cdl_progress *progress)
 {
     if (!sink || !sink->fn) return 0;

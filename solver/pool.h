@@ -98,4 +98,7 @@ int cdl_pool_default_threads(int local_ranks);
 /* Seconds on a monotonic clock. */
 double cdl_pool_now_seconds(void);
 
+/* CPU seconds this process has used, all its threads together. */
+double cdl_pool_cpu_seconds(void);
+
 #endif

@@ -124,6 +124,7 @@ typedef struct cdl_rank_report {
     uint64_t bytes_received;          /* in the exchanges of results and records */
     double seconds;                   /* from the start of its solve to the end of the last exchange */
     double work_seconds;              /* computing its shares of the work (waits and exchanges excluded) */
+    double cpu_seconds;               /* CPU time of its solve, all its threads together */
 } cdl_rank_report;
 
 struct cdl_solution {

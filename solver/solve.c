@@ -140,7 +140,7 @@ cdl_status cdl_solve_scene_shared(const cdl_scene *scene, const cdl_solve_option
                                   cdl_error *err)
 {
     memset(out, 0, sizeof *out);
-    double t0 = cdl_pool_now_seconds();
+    double t0 = cdl_pool_now_seconds(), cpu0 = cdl_pool_cpu_seconds();
     cdl_solve_state state = {.options = CDL_SOLVE_OPTIONS_INIT, .debug = CDL_SOLVE_DEBUG_NONE, .out = out,
                              .ranks = ranks};
     cdl_sized_struct_read(&state.options, sizeof state.options, options);
@@ -158,7 +158,7 @@ cdl_status cdl_solve_scene_shared(const cdl_scene *scene, const cdl_solve_option
     if (st == CDL_OK) st = cdl_solve_ranks_check_scene(&state, err);
     if (st == CDL_OK) st = integrate(&state, err);
     if (st == CDL_OK) st = cdl_rank_agree(ranks, root ? cdl_solve_finish(&state, err) : CDL_OK, err);
-    if (st == CDL_OK) st = cdl_solve_ranks_report(&state, t0, err);
+    if (st == CDL_OK) st = cdl_solve_ranks_report(&state, t0, cpu0, err);
     cdl_solve_state_release(&state);
     if (st != CDL_OK || !root) {
         cdl_solution_clear(out);

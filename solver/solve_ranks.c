@@ -108,7 +108,7 @@ cdl_status cdl_solve_ranks_collect_job(cdl_solve_state *state, cdl_grid_job *job
     return st;
 }
 
-cdl_status cdl_solve_ranks_report(cdl_solve_state *state, double t0, cdl_error *err)
+cdl_status cdl_solve_ranks_report(cdl_solve_state *state, double t0, double cpu0, cdl_error *err)
 {
     cdl_rank_group *group = state->ranks;
     size_t n = (size_t)cdl_rank_group_count(group);
@@ -119,6 +119,7 @@ cdl_status cdl_solve_ranks_report(cdl_solve_state *state, double t0, cdl_error *
     reports[rank].bytes_received = group ? group->bytes_received : 0;
     reports[rank].seconds = cdl_pool_now_seconds() - t0;
     reports[rank].work_seconds = group ? group->work_seconds : state->out->compute_seconds;
+    reports[rank].cpu_seconds = cdl_pool_cpu_seconds() - cpu0;
     cdl_status st = cdl_rank_gather_items(group, reports, sizeof *reports, n, 1, err);
     if (st != CDL_OK || rank != 0) {
         free(reports);

@@ -15,8 +15,9 @@ cdl_status cdl_solve_ranks_check_scene(cdl_solve_state *state, cdl_error *err);
  * the points (cdl_grid_job.everywhere 0) gathered to rank 0, in chunks. */
 cdl_status cdl_solve_ranks_collect_job(cdl_solve_state *state, cdl_grid_job *job, cdl_error *err);
 
-/* At the end: each rank's threads, seconds since t0, seconds of work and
- * bytes received, into rank 0's solution (out->ranks). */
-cdl_status cdl_solve_ranks_report(cdl_solve_state *state, double t0, cdl_error *err);
+/* At the end: each rank's threads, seconds since t0, seconds of work, CPU
+ * seconds since cpu0 and bytes received, into rank 0's solution
+ * (out->ranks). */
+cdl_status cdl_solve_ranks_report(cdl_solve_state *state, double t0, double cpu0, cdl_error *err);
 
 #endif
