@@ -181,6 +181,19 @@ cdl_status cdl_rank_allgather_list(cdl_rank_group *group, const void *mine, size
     return CDL_OK;
 }
 
+cdl_status cdl_rank_broadcast(cdl_rank_group *group, void *buffer, size_t bytes, cdl_error *err)
+{
+    if (!several(group) || bytes == 0) return CDL_OK;
+    char message[CDL_ERROR_MESSAGE_SIZE] = "";
+    for (size_t a = 0; a < bytes; a += CDL_RANK_WINDOW_BYTES) {
+        size_t n = bytes - a > CDL_RANK_WINDOW_BYTES ? CDL_RANK_WINDOW_BYTES : bytes - a;
+        if (group->ranks.broadcast(group->ranks.user, (unsigned char *)buffer + a, n, 0, message) != 0)
+            return exchange_failed("broadcast", message, err);
+    }
+    if (group->rank != 0) group->bytes_received += bytes;
+    return CDL_OK;
+}
+
 static cdl_status reduce(cdl_rank_group *group, uint64_t *values, size_t n, cdl_ranks_op op, cdl_error *err)
 {
     if (!several(group) || n == 0) return CDL_OK;

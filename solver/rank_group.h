@@ -75,6 +75,9 @@ cdl_status cdl_rank_gather_items(cdl_rank_group *group, void *base, size_t strid
 cdl_status cdl_rank_allgather_list(cdl_rank_group *group, const void *mine, size_t mine_count, size_t stride,
                                    void **all, size_t *all_count, cdl_error *err);
 
+/* Rank 0's `bytes` bytes at `buffer` copied to every rank's. */
+cdl_status cdl_rank_broadcast(cdl_rank_group *group, void *buffer, size_t bytes, cdl_error *err);
+
 /* values[0 .. n - 1] summed, or their maximum taken, over the ranks. */
 cdl_status cdl_rank_sum_u64(cdl_rank_group *group, uint64_t *values, size_t n, cdl_error *err);
 cdl_status cdl_rank_max_u64(cdl_rank_group *group, uint64_t *values, size_t n, cdl_error *err);

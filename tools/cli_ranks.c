@@ -118,6 +118,14 @@ void cdl_cli_ranks_end(cdl_cli_ranks *ranks)
 
 #endif
 
+void cdl_cli_ranks_follow(cdl_cli_ranks *ranks, const char *command, void *value, size_t bytes)
+{
+    cdl_error err;
+    cdl_error_clear(&err);
+    if (cdl_rank_broadcast(&ranks->group, value, bytes, &err) != CDL_OK)
+        cdl_cli_ranks_abort(ranks, command, (int)err.status, &err);
+}
+
 int cdl_cli_ranks_root(const cdl_cli_ranks *ranks)
 {
     return ranks->group.rank == 0;

@@ -33,6 +33,11 @@ int cdl_cli_ranks_root(const cdl_cli_ranks *ranks);
  * (loading the scene, rank 0's folder and files). */
 cdl_status cdl_cli_ranks_agree(cdl_cli_ranks *ranks, cdl_status status, cdl_error *err);
 
+/* Rank 0's `bytes` at `value` on every rank: what rank 0 decided from its
+ * own clock or files (a budget, a reference to reuse). A failed exchange
+ * ends every rank (cdl_cli_ranks_abort). */
+void cdl_cli_ranks_follow(cdl_cli_ranks *ranks, const char *command, void *value, size_t bytes);
+
 /* A failure this rank met alone while the others wait for it in an
  * exchange: say so on stderr and end every rank with `status` (MPI_Abort);
  * does not return under MPI. Without ranks it only returns. */
