@@ -49,6 +49,13 @@ static int failing(thread_rank *t, char *message)
     return 0;
 }
 
+/* Every rank shows its buffer to the others (NULL: nothing to show). */
+static void publish(thread_rank *t, void *buffer)
+{
+    t->world->published[t->rank] = buffer;
+    pthread_barrier_wait(&t->world->barrier);
+}
+
 static int exchange(void *user, void *buffer, const size_t *offsets, char *message, int to_all)
 {
     thread_rank *t = user;
@@ -63,8 +70,7 @@ static int exchange(void *user, void *buffer, const size_t *offsets, char *messa
         offsets = NULL;
     }
     thread_world *w = t->world;
-    w->published[t->rank] = offsets ? buffer : NULL;
-    pthread_barrier_wait(&w->barrier);
+    publish(t, offsets ? buffer : NULL);
     if (offsets && (to_all || t->rank == 0))
         for (int k = 0; k < RANKS; ++k)
             if (k != t->rank && w->published[k])
@@ -88,8 +94,7 @@ static int reduce_u64(void *user, uint64_t *values, size_t n, int op, char *mess
     thread_rank *t = user;
     int failed = failing(t, message);
     thread_world *w = t->world;
-    w->published[t->rank] = values;
-    pthread_barrier_wait(&w->barrier);
+    publish(t, values);
     uint64_t result[64];
     for (size_t i = 0; i < n && i < 64; ++i) {
         result[i] = 0;
@@ -108,8 +113,7 @@ static int broadcast(void *user, void *buffer, size_t bytes, int root, char *mes
     thread_rank *t = user;
     int failed = failing(t, message);
     thread_world *w = t->world;
-    w->published[t->rank] = buffer;
-    pthread_barrier_wait(&w->barrier);
+    publish(t, buffer);
     if (t->rank != root) memcpy(buffer, w->published[root], bytes);
     pthread_barrier_wait(&w->barrier);
     return failed;
