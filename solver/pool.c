@@ -5,6 +5,7 @@
 
 #include <pthread.h>
 #include <sched.h>
+#include <sys/resource.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <time.h>
@@ -40,6 +41,13 @@ double cdl_pool_cpu_seconds(void)
     struct timespec ts;
     if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) != 0) return 0.0;
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+uint64_t cdl_pool_peak_rss_bytes(void)
+{
+    struct rusage usage;
+    if (getrusage(RUSAGE_SELF, &usage) != 0 || usage.ru_maxrss < 0) return 0;
+    return (uint64_t)usage.ru_maxrss * 1024u; /* Linux: kilobytes */
 }
 
 int cdl_progress_report(const cdl_progress_sink *sink, const cdl_progress *progress)

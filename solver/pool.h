@@ -27,6 +27,7 @@
 #define CANDELA_SOLVER_POOL_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "base/error.h"
 #include "solver/progress.h"
@@ -100,5 +101,9 @@ double cdl_pool_now_seconds(void);
 
 /* CPU seconds this process has used, all its threads together. */
 double cdl_pool_cpu_seconds(void);
+
+/* The most memory this process has held resident so far, in bytes (0
+ * where the system does not say). */
+uint64_t cdl_pool_peak_rss_bytes(void);
 
 #endif

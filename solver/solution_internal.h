@@ -125,6 +125,7 @@ typedef struct cdl_rank_report {
     double seconds;                   /* from the start of its solve to the end of the last exchange */
     double work_seconds;              /* computing its shares of the work (waits and exchanges excluded) */
     double cpu_seconds;               /* CPU time of its solve, all its threads together */
+    uint64_t peak_rss_bytes;          /* the most memory its process held resident, up to the end of the solve */
 } cdl_rank_report;
 
 struct cdl_solution {

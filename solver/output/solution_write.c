@@ -119,8 +119,8 @@ static void add_surfaces(cJSON *root, const cdl_scene *scene, const cdl_solution
 }
 
 /* "ranks": the processes that shared the solve (solve_ranks.h), each with
- * its threads, seconds, seconds computing its share, CPU seconds and bytes
- * received. */
+ * its threads, seconds, seconds computing its share, CPU seconds, bytes
+ * received and peak resident memory. */
 static void add_ranks(cJSON *root, const cdl_solution *sol)
 {
     cJSON *ranks = cJSON_AddObjectToObject(root, "ranks");
@@ -131,12 +131,14 @@ static void add_ranks(cJSON *root, const cdl_solution *sol)
     cJSON *work = cJSON_AddArrayToObject(ranks, "work_seconds");
     cJSON *cpu = cJSON_AddArrayToObject(ranks, "cpu_seconds");
     cJSON *bytes = cJSON_AddArrayToObject(ranks, "bytes_received");
+    cJSON *rss = cJSON_AddArrayToObject(ranks, "peak_rss_bytes");
     for (size_t r = 0; r < n; ++r) {
         cJSON_AddItemToArray(threads, cJSON_CreateNumber((double)sol->ranks[r].threads));
         cJSON_AddItemToArray(seconds, cJSON_CreateNumber(sol->ranks[r].seconds));
         cJSON_AddItemToArray(work, cJSON_CreateNumber(sol->ranks[r].work_seconds));
         cJSON_AddItemToArray(cpu, cJSON_CreateNumber(sol->ranks[r].cpu_seconds));
         cJSON_AddItemToArray(bytes, cJSON_CreateNumber((double)sol->ranks[r].bytes_received));
+        cJSON_AddItemToArray(rss, cJSON_CreateNumber((double)sol->ranks[r].peak_rss_bytes));
     }
 }
 

@@ -74,7 +74,8 @@ check "cube: 2 ranks x 2 threads: the same CSV and PNG bytes" 'same_outputs cube
 
 # What summary.json says of the ranks: their count, threads, seconds, work
 # and CPU seconds, the bytes each received (rank 0 the most: the grids'
-# results); one process alone received nothing.
+# results), each one's peak memory (above a megabyte: a process holds its
+# libraries); one process alone received nothing.
 ranks_report() {
   python3 - "$1" "$2" <<'PY'
 import json, sys
@@ -82,13 +83,14 @@ d = json.load(open(sys.argv[1]))
 alone = json.load(open(sys.argv[2]))["ranks"]
 r = d["ranks"]
 ok = r["count"] == 3 and r["threads"] == [1, 1, 1]
-ok = ok and all(len(r[k]) == 3 for k in ("seconds", "work_seconds", "cpu_seconds", "bytes_received"))
+ok = ok and all(len(r[k]) == 3 for k in ("seconds", "work_seconds", "cpu_seconds", "bytes_received", "peak_rss_bytes"))
+ok = ok and all(b > 1 << 20 for b in r["peak_rss_bytes"])
 ok = ok and r["bytes_received"][0] > 0 and r["bytes_received"][0] == max(r["bytes_received"])
 ok = ok and alone["count"] == 1 and alone["bytes_received"] == [0]
 sys.exit(0 if ok else 1)
 PY
 }
-check "summary.json: ranks count, threads, seconds, work, CPU and bytes per rank" \
+check "summary.json: ranks count, threads, seconds, work, CPU, bytes and memory per rank" \
   'ranks_report paths.np3/summary.json paths.alone/summary.json'
 check "stdout: rank 0 alone prints the results, naming the ranks" \
   '[ "$(grep -c "^method" paths.np3.txt)" = 1 ] && grep -q ", 3 ranks; results in" paths.np3.txt'
