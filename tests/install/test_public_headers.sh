@@ -37,14 +37,17 @@ while IFS= read -r h; do
 done < <(cd "$inc/candela" && find . -name '*.h' ! -name candela_mpi.h | sed 's|^\./||' | sort)
 check "headers found ($count)" '[ $count -ge 10 ]'
 
-# The MPI glue needs mpi.h: with MPI's compiler flags, in C and C++.
+# The MPI glue needs mpi.h: with MPI's compiler flags and pkg-config's include
+# flags, in C and C++.
 if [ -n "${CANDELA_MPIEXEC:-}" ] && command -v mpicc > /dev/null; then
   printf '#include <candela/candela_mpi.h>\nint main(void) { return 0; }\n' > "$tmp/mpi.c"
-  mpicc -std=c11 -Wall -Wextra -Wpedantic -Werror -fsyntax-only -I"$inc" "$tmp/mpi.c"; st=$?
+  mpicc -std=c11 -Wall -Wextra -Wpedantic -Werror -fsyntax-only -I"$inc" -I"$inc/candela" "$tmp/mpi.c"; st=$?
   check "<candela/candela_mpi.h> compiles with mpicc (C11, -Wpedantic)" '[ $st -eq 0 ]'
   cp "$tmp/mpi.c" "$tmp/mpi.cpp"
+  # (without Open MPI's deprecated C++ bindings, whose own casts -Wextra refuses)
   # shellcheck disable=SC2046
-  "$CXX" -std=c++17 -Wall -Wextra -Werror -fsyntax-only $(mpicc --showme:compile) -I"$inc" "$tmp/mpi.cpp"; st=$?
+  "$CXX" -std=c++17 -Wall -Wextra -Werror -fsyntax-only -DOMPI_SKIP_MPICXX -DMPICH_SKIP_MPICXX $(mpicc --showme:compile) \
+    -I"$inc" -I"$inc/candela" "$tmp/mpi.cpp"; st=$?
   check "<candela/candela_mpi.h> compiles as C++17" '[ $st -eq 0 ]'
 fi
 
