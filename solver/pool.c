@@ -73,11 +73,20 @@ typedef struct pool_worker {
     const cdl_progress_sink *progress;
     double started;
     int cancelled;
+    double cpu_seconds;       /* this worker's thread's CPU time in the run */
 } pool_worker;
+
+static double thread_cpu_seconds(void)
+{
+    struct timespec ts;
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0) return 0.0;
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
 
 static void *worker_main(void *arg)
 {
     pool_worker *w = arg;
+    double cpu0 = thread_cpu_seconds();
     pool_run *r = w->run;
     const cdl_pool_task *t = r->task;
     while (!atomic_load(&r->stop)) {
@@ -98,12 +107,14 @@ static void *worker_main(void *arg)
             }
         }
     }
+    w->cpu_seconds = thread_cpu_seconds() - cpu0;
     return NULL;
 }
 
-/* Items first .. last - 1 of the task. */
+/* Items first .. last - 1 of the task; *cpu (when not NULL) gains the
+ * CPU seconds its workers spent. */
 static cdl_status run_items(const cdl_pool_task *task, size_t first, size_t last, int threads,
-                            const cdl_progress_sink *progress, cdl_error *err)
+                            const cdl_progress_sink *progress, double *cpu, cdl_error *err)
 {
     if (threads < 1) threads = 1;
     if (task->chunk < 1) return cdl_error_set(err, CDL_ERR_INTERNAL, "pool: a chunk of 0 items");
@@ -139,6 +150,7 @@ static cdl_status run_items(const cdl_pool_task *task, size_t first, size_t last
     }
     worker_main(&workers[0]);
     for (int i = 1; i < started_threads; ++i) pthread_join(ids[i], NULL);
+    for (int i = 0; cpu && i < started_threads; ++i) *cpu += workers[i].cpu_seconds;
     cdl_status st = CDL_OK;
     for (int i = 0; i < started_threads && st == CDL_OK; ++i)
         if (workers[i].status != CDL_OK) {
@@ -161,7 +173,7 @@ static cdl_status run_items(const cdl_pool_task *task, size_t first, size_t last
 
 cdl_status cdl_pool_run(const cdl_pool_task *task, int threads, const cdl_progress_sink *progress, cdl_error *err)
 {
-    return run_items(task, 0, task->count, threads, progress, err);
+    return run_items(task, 0, task->count, threads, progress, NULL, err);
 }
 
 cdl_status cdl_pool_run_shared(const cdl_pool_task *task, const cdl_workers *workers, cdl_error *err)
@@ -169,7 +181,8 @@ cdl_status cdl_pool_run_shared(const cdl_pool_task *task, const cdl_workers *wor
     cdl_rank_group *group = workers->ranks;
     if (cdl_rank_group_count(group) == 1) {
         double t0 = cdl_pool_now_seconds();
-        cdl_status st = run_items(task, 0, task->count, workers->threads, workers->progress, err);
+        cdl_status st = run_items(task, 0, task->count, workers->threads, workers->progress,
+                                  group ? &group->work_cpu_seconds : NULL, err);
         if (group) group->work_seconds += cdl_pool_now_seconds() - t0;
         return st;
     }
@@ -183,7 +196,9 @@ cdl_status cdl_pool_run_shared(const cdl_pool_task *task, const cdl_workers *wor
     size_t begin, end;
     cdl_rank_block(task->count, align, group->rank, group->count, &begin, &end);
     double t0 = cdl_pool_now_seconds();
-    cdl_status st = begin < end ? run_items(task, begin, end, workers->threads, workers->progress, err) : CDL_OK;
+    cdl_status st = begin < end ? run_items(task, begin, end, workers->threads, workers->progress,
+                                            &group->work_cpu_seconds, err)
+                                : CDL_OK;
     group->work_seconds += cdl_pool_now_seconds() - t0;
     st = cdl_rank_agree(group, st, err);
     for (int k = 0; st == CDL_OK && workers->everywhere && k < CDL_POOL_OUTPUTS_MAX; ++k)

@@ -43,6 +43,7 @@ typedef struct cdl_rank_group {
     int failure_agreed;               /* 1: the last failure cdl_rank_agree returned is every rank's */
     uint64_t bytes_received;          /* by this rank in exchanges of results and records */
     double work_seconds;              /* this rank computing its shares (exchanges and waits excluded) */
+    double work_cpu_seconds;          /* its worker threads' CPU time in those shares */
 } cdl_rank_group;
 
 /* A group for `ranks` (NULL: one process). CDL_ERR_USAGE for a group of

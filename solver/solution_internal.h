@@ -124,7 +124,10 @@ typedef struct cdl_rank_report {
     uint64_t bytes_received;          /* in the exchanges of results and records */
     double seconds;                   /* from the start of its solve to the end of the last exchange */
     double work_seconds;              /* computing its shares of the work (waits and exchanges excluded) */
-    double cpu_seconds;               /* CPU time of its solve, all its threads together */
+    double work_cpu_seconds;          /* its worker threads' CPU time computing its shares: the work split,
+                                         whatever else the machine runs */
+    double cpu_seconds;               /* CPU time of its solve, all its threads together (MPI's waits
+                                         included: they spin) */
     uint64_t peak_rss_bytes;          /* the most memory its process held resident, up to the end of the solve */
 } cdl_rank_report;
 

@@ -119,6 +119,7 @@ cdl_status cdl_solve_ranks_report(cdl_solve_state *state, double t0, double cpu0
     reports[rank].bytes_received = group ? group->bytes_received : 0;
     reports[rank].seconds = cdl_pool_now_seconds() - t0;
     reports[rank].work_seconds = group ? group->work_seconds : state->out->compute_seconds;
+    reports[rank].work_cpu_seconds = group ? group->work_cpu_seconds : 0.0;
     reports[rank].cpu_seconds = cdl_pool_cpu_seconds() - cpu0;
     reports[rank].peak_rss_bytes = cdl_pool_peak_rss_bytes();
     cdl_status st = cdl_rank_gather_items(group, reports, sizeof *reports, n, 1, err);

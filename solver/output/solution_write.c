@@ -119,8 +119,8 @@ static void add_surfaces(cJSON *root, const cdl_scene *scene, const cdl_solution
 }
 
 /* "ranks": the processes that shared the solve (solve_ranks.h), each with
- * its threads, seconds, seconds computing its share, CPU seconds, bytes
- * received and peak resident memory. */
+ * its threads, seconds, seconds and CPU seconds computing its share, CPU
+ * seconds in all, bytes received and peak resident memory. */
 static void add_ranks(cJSON *root, const cdl_solution *sol)
 {
     cJSON *ranks = cJSON_AddObjectToObject(root, "ranks");
@@ -129,6 +129,7 @@ static void add_ranks(cJSON *root, const cdl_solution *sol)
     cJSON *threads = cJSON_AddArrayToObject(ranks, "threads");
     cJSON *seconds = cJSON_AddArrayToObject(ranks, "seconds");
     cJSON *work = cJSON_AddArrayToObject(ranks, "work_seconds");
+    cJSON *work_cpu = cJSON_AddArrayToObject(ranks, "work_cpu_seconds");
     cJSON *cpu = cJSON_AddArrayToObject(ranks, "cpu_seconds");
     cJSON *bytes = cJSON_AddArrayToObject(ranks, "bytes_received");
     cJSON *rss = cJSON_AddArrayToObject(ranks, "peak_rss_bytes");
@@ -136,6 +137,7 @@ static void add_ranks(cJSON *root, const cdl_solution *sol)
         cJSON_AddItemToArray(threads, cJSON_CreateNumber((double)sol->ranks[r].threads));
         cJSON_AddItemToArray(seconds, cJSON_CreateNumber(sol->ranks[r].seconds));
         cJSON_AddItemToArray(work, cJSON_CreateNumber(sol->ranks[r].work_seconds));
+        cJSON_AddItemToArray(work_cpu, cJSON_CreateNumber(sol->ranks[r].work_cpu_seconds));
         cJSON_AddItemToArray(cpu, cJSON_CreateNumber(sol->ranks[r].cpu_seconds));
         cJSON_AddItemToArray(bytes, cJSON_CreateNumber((double)sol->ranks[r].bytes_received));
         cJSON_AddItemToArray(rss, cJSON_CreateNumber((double)sol->ranks[r].peak_rss_bytes));

@@ -83,7 +83,8 @@ d = json.load(open(sys.argv[1]))
 alone = json.load(open(sys.argv[2]))["ranks"]
 r = d["ranks"]
 ok = r["count"] == 3 and r["threads"] == [1, 1, 1]
-ok = ok and all(len(r[k]) == 3 for k in ("seconds", "work_seconds", "cpu_seconds", "bytes_received", "peak_rss_bytes"))
+ok = ok and all(len(r[k]) == 3 for k in ("seconds", "work_seconds", "work_cpu_seconds", "cpu_seconds", "bytes_received",
+                                          "peak_rss_bytes"))
 ok = ok and all(b > 1 << 20 for b in r["peak_rss_bytes"])
 ok = ok and r["bytes_received"][0] > 0 and r["bytes_received"][0] == max(r["bytes_received"])
 ok = ok and alone["count"] == 1 and alone["bytes_received"] == [0]

@@ -9,12 +9,16 @@
 # and once with "method": "direct" (the direct light alone). Prints, from
 # each run's summary.json: the solve's seconds (wall, the process's start
 # and MPI's set-up excluded) with the best and the median of the repeats and
-# their ratio (the speed-up), each rank's CPU seconds, seconds computing its
-# share and bytes received, and the constants docs/mpi-scaling.md's model
-# takes (tools/bench/mpi_scaling_model.py): per point and per record CPU
-# seconds, the serial seconds every rank repeats, records, passes, points.
-# The candela command is build/candela unless CANDELA says otherwise. A
-# ratio of wall times, not a limit: run it on an idle machine for a speed-up.
+# their ratio (the wall-clock speed-up), each rank's CPU seconds computing
+# its share of the points (its worker threads' CPU time: the split,
+# whatever else the machine runs) and in all, and its bytes received; the
+# speed-up an idle machine would give, projected from CPU times (the serial
+# CPU every rank repeats plus the larger share); and the constants
+# docs/mpi-scaling.md's model takes (tools/bench/mpi_scaling_model.py): per
+# point and per record CPU seconds, the serial CPU seconds, records, passes,
+# points, the bytes a rank received. The candela command is build/candela
+# unless CANDELA says otherwise. Ratios, not limits: on a machine other
+# jobs load, the wall-clock speed-up says little.
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 scene=${1:-$root/data/bench/cube_dense.json}
@@ -45,30 +49,37 @@ def summary(name):
 alone = [summary(f"alone{k}") for k in range(1, n + 1)]
 two = [summary(f"two{k}") for k in range(1, n + 1)]
 direct = summary("direct")
+med = statistics.median
 wa = [s["seconds"] for s in alone]
 wt = [s["seconds"] for s in two]
 print(f"scene {scene}, {n} repeats; machine: {load.strip()}")
 ca = [s["ranks"]["cpu_seconds"][0] for s in alone]
-print(f"alone, 1 thread:      seconds best {min(wa):.3f}  median {statistics.median(wa):.3f}  "
-      f"CPU s median {statistics.median(ca):.3f}")
-print(f"2 ranks x 1 thread:   seconds best {min(wt):.3f}  median {statistics.median(wt):.3f}")
-print(f"speed-up (alone / 2 ranks): best {min(wa) / min(wt):.2f}  median {statistics.median(wa) / statistics.median(wt):.2f}")
+wca = [s["ranks"]["work_cpu_seconds"][0] for s in alone]
+print(f"alone, 1 thread:    seconds best {min(wa):.3f} median {med(wa):.3f}; CPU s {med(ca):.3f}, of which "
+      f"computing the points {med(wca):.3f}")
+print(f"2 ranks x 1 thread: seconds best {min(wt):.3f} median {med(wt):.3f}")
+print(f"wall-clock speed-up (alone / 2 ranks): best {min(wa) / min(wt):.2f}  median {med(wa) / med(wt):.2f}")
 for k, s in enumerate(two, 1):
     r = s["ranks"]
-    print(f"  run {k}: per rank CPU s {[round(x, 3) for x in r['cpu_seconds']]}  work s "
-          f"{[round(x, 3) for x in r['work_seconds']]}  bytes received {r['bytes_received']}")
+    print(f"  run {k}: per rank: work CPU s {[round(x, 3) for x in r['work_cpu_seconds']]}  CPU s "
+          f"{[round(x, 3) for x in r['cpu_seconds']]}  bytes received {r['bytes_received']}")
+# What an idle machine would take: the serial CPU every rank repeats (the
+# alone run's CPU outside the worker tasks) plus the larger rank's share.
+serial_cpu = med(c - w for c, w in zip(ca, wca))
+share = med(max(s["ranks"]["work_cpu_seconds"]) for s in two)
+split = med(max(s["ranks"]["work_cpu_seconds"]) / sum(s["ranks"]["work_cpu_seconds"]) for s in two)
+print(f"work split: the larger rank did {100 * split:.1f} % of the points' CPU; projected speed-up on an idle "
+      f"machine (alone CPU / (serial CPU + larger share)): {med(ca) / (serial_cpu + share):.2f}")
 a = alone[0]
 points = sum(g["count"] for g in a["grids"].values())
 inter = a["plan"]["interreflection"]
 records = inter.get("records", 0)
 passes = max((g.get("placement_passes", 0) for g in inter.get("grids", {}).values()), default=0)
-cpu_alone = statistics.median(s["ranks"]["cpu_seconds"][0] for s in alone)
-serial = statistics.median(s["seconds"] - s["ranks"]["work_seconds"][0] for s in alone)
-cpu_direct = direct["ranks"]["cpu_seconds"][0]
-per_point = cpu_direct / points
-per_record = (cpu_alone - cpu_direct - serial) / records if records else 0.0
+direct_work = direct["ranks"]["work_cpu_seconds"][0]
+per_point = direct_work / points
+per_record = (med(wca) - direct_work) / records if records else 0.0
 print("model constants (tools/bench/mpi_scaling_model.py):")
 print(f"  --points {points} --records {records} --passes {passes} --point-cpu {per_point:.3e} "
-      f"--record-cpu {per_record:.3e} --serial {serial:.3f} "
+      f"--record-cpu {per_record:.3e} --serial-cpu {serial_cpu:.3f} "
       f"--bytes-two {max(max(s['ranks']['bytes_received'][1:]) for s in two)}")
 PY
