@@ -111,6 +111,7 @@ void cdl_solution_clear(cdl_solution *s)
         free(s->observers[i].excluded);
     }
     free(s->observers);
+    free(s->ranks);
     memset(s, 0, sizeof *s);
 }
 
@@ -138,7 +139,8 @@ void cdl_solution_get_info(const cdl_solution *s, cdl_solution_info *info)
                              .cache_reused = s->cache_reused,
                              .installed_w = s->power.installed_w,
                              .luminaires_with_watts = s->power.luminaires_counted,
-                             .luminaires_without_watts = s->power.luminaires_without_watts};
+                             .luminaires_without_watts = s->power.luminaires_without_watts,
+                             .ranks = s->rank_count > 0 ? (int)s->rank_count : 1};
     cdl_sized_struct_fill(info, &all, sizeof all);
 }
 

@@ -82,11 +82,12 @@ typedef struct cdl_solution_info {
     int cache_reused;         /* 1: the records came from the cache file */
     double installed_w;       /* input watts of the luminaires whose files give them */
     size_t luminaires_with_watts, luminaires_without_watts;
+    int ranks;                /* processes that shared the solve (solve_ranks.h); 1 for one process */
 } cdl_solution_info;
 #define CDL_SOLUTION_INFO_INIT                                                                                        \
     {.size = sizeof(cdl_solution_info), .method = CDL_METHOD_AUTO, .quality = CDL_QUALITY_NORMAL, .target_error = 0.0, \
      .seed = 0, .threads = 0, .seconds = 0.0, .compute_seconds = 0.0, .rays = 0, .records = 0, .records_gathered = 0, \
-     .cache_reused = 0, .installed_w = 0.0, .luminaires_with_watts = 0, .luminaires_without_watts = 0}
+     .cache_reused = 0, .installed_w = 0.0, .luminaires_with_watts = 0, .luminaires_without_watts = 0, .ranks = 1}
 
 /* Free a solution (NULL is fine). */
 void cdl_solution_release(cdl_solution *solution);

@@ -117,6 +117,20 @@ typedef struct cdl_surface_shape {
     uint32_t *triangles;
 } cdl_surface_shape;
 
+/* One rank of a solve shared by ranks (solve_ranks.h), for summary.json;
+ * a solve in one process has one. */
+typedef struct cdl_rank_report {
+    uint64_t threads;                 /* its worker threads */
+    uint64_t bytes_received;          /* in the exchanges of results and records */
+    double seconds;                   /* from the start of its solve to the end of the last exchange */
+    double work_seconds;              /* computing its shares of the work (waits and exchanges excluded) */
+    double work_cpu_seconds;          /* its worker threads' CPU time computing its shares: the work split,
+                                         whatever else the machine runs */
+    double cpu_seconds;               /* CPU time of its solve, all its threads together (MPI's waits
+                                         included: they spin) */
+    uint64_t peak_rss_bytes;          /* the most memory its process held resident, up to the end of the solve */
+} cdl_rank_report;
+
 struct cdl_solution {
     cdl_method method;                /* the method actually used */
     cdl_solver_settings settings;     /* with quality-derived knobs filled in */
@@ -145,6 +159,9 @@ struct cdl_solution {
     /* Glare (the glare integrator): one result per scene observer, in order. */
     cdl_observer_result *observers;
     size_t observer_count;
+    /* The ranks that shared the solve, in rank order (one without ranks). */
+    cdl_rank_report *ranks;
+    size_t rank_count;
 };
 
 /* Zeroed arrays for the grid's points (gs->grid built): E, E_direct,

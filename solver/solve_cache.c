@@ -89,7 +89,8 @@ cdl_status cdl_solve_cache_open(cdl_solve_state *state, cdl_error *err)
     cdl_icache_file file;
     st = cdl_icache_file_load(cache->path, &found, &file, err);
     if (st != CDL_OK) return st;
-    if (!found) return check_cache_folder(cache->path, err);
+    /* Rank 0 alone writes the file (the other ranks of a shared solve need not see its folder). */
+    if (!found) return cdl_rank_group_rank(state->ranks) == 0 ? check_cache_folder(cache->path, err) : CDL_OK;
     st = take_records(state, &file, err);
     cdl_icache_file_release(&file);
     return st;

@@ -7,6 +7,7 @@
 #include "solver/solution_internal.h"
 #include "solver/solve.h"
 #include "solver/solve_debug.h"
+#include "solver/rank_group.h"
 #include "solver/solve_plan.h"
 
 /* cdl_solve_scene into a solution the caller holds (on its stack; freed
@@ -14,5 +15,14 @@
  * *out is left empty. */
 cdl_status cdl_solve_scene_into(const cdl_scene *scene, const cdl_solve_options *options,
                                 const cdl_solve_debug *debug, cdl_solution *out, cdl_error *err);
+
+/* cdl_solve_scene_into on every rank of `ranks` at once (solve_ranks.h;
+ * NULL: this process alone). Rank 0 gets the solution; the other ranks'
+ * *out is left empty. Failures: agreed by every rank, unless
+ * ranks->failure_agreed is 0 after a failure (this rank's alone: the others
+ * wait for it). */
+cdl_status cdl_solve_scene_shared(const cdl_scene *scene, const cdl_solve_options *options,
+                                  const cdl_solve_debug *debug, cdl_rank_group *ranks, cdl_solution *out,
+                                  cdl_error *err);
 
 #endif

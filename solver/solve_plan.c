@@ -83,7 +83,8 @@ static void settle_settings(cdl_solve_state *state)
     state->target = cdl_solver_settings_target(&scene->settings);
     out->target_error = state->target;
     int threads = state->options.threads >= 0 ? state->options.threads : scene->settings.threads;
-    if (threads <= 0) threads = cdl_pool_cpu_count();
+    /* The default: this process's cores, shared with the ranks beside it. */
+    if (threads <= 0) threads = cdl_pool_default_threads(state->ranks ? state->ranks->ranks.local_count : 1);
     if (state->debug.ray_log) threads = 1;
     state->threads = out->threads_used = threads;
 }

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "cli_args.h"
+#include "cli_ranks.h"
 #include "command.h"
 #include "base/atomic_file.h"
 #include "solver/bench/bench_ladder.h"
@@ -84,6 +85,7 @@ typedef struct bench_args {
     int threads;
     int quiet;
     size_t reference_points;     /* 0: every point */
+    cdl_cli_ranks *ranks;        /* the ranks sharing every solve; rank 0 decides, writes and prints */
 } bench_args;
 
 /* The whole run's bound when --budget is not given: nine minutes, so that
@@ -176,14 +178,28 @@ static int parse_args(int argc, char **argv, bench_args *a)
     return CDL_EXIT_OK;
 }
 
-/* Solve one rung and write its files into `dir`. */
-static cdl_status solve_into(const cdl_scene *scene, cdl_method method, double target, int threads,
+/* One solve on the ranks (rank 0 gets the solution; a failure of one
+ * rank alone ends them all). */
+static cdl_status solve_rung(const bench_args *a, const cdl_scene *scene, cdl_method method, double target,
+                             cdl_solution *sol, cdl_error *err)
+{
+    cdl_rank_group *group = &a->ranks->group;
+    cdl_status st = cdl_bench_solve_rung(scene, method, target, a->threads, group, sol, err);
+    if (st != CDL_OK && !group->failure_agreed && group->count > 1)
+        cdl_cli_ranks_abort(a->ranks, "bench", (int)st, err);
+    return st;
+}
+
+/* Solve one rung and write its files into `dir` (rank 0). */
+static cdl_status solve_into(const bench_args *a, const cdl_scene *scene, cdl_method method, double target,
                              const char *dir, cdl_solution *sol, cdl_error *err)
 {
-    cdl_status st = cdl_solution_prepare_folder(dir, err);
-    if (st == CDL_OK) st = cdl_bench_solve_rung(scene, method, target, threads, sol, err);
+    int root = cdl_cli_ranks_root(a->ranks);
+    memset(sol, 0, sizeof *sol);
+    cdl_status st = cdl_cli_ranks_agree(a->ranks, root ? cdl_solution_prepare_folder(dir, err) : CDL_OK, err);
+    if (st == CDL_OK) st = solve_rung(a, scene, method, target, sol, err);
     if (st != CDL_OK) return st;
-    st = cdl_solution_write(scene, sol, dir, NULL, err);
+    st = cdl_cli_ranks_agree(a->ranks, root ? cdl_solution_write(scene, sol, dir, NULL, err) : CDL_OK, err);
     if (st != CDL_OK) cdl_solution_clear(sol);
     return st;
 }
@@ -201,29 +217,98 @@ static cdl_status estimate_reference(const cdl_scene *scene, const bench_args *a
     double t = cdl_quality_target_error(CDL_QUALITY_DRAFT);
     for (;;) {
         cdl_solution pilot;
-        cdl_status st = cdl_bench_solve_rung(scene, CDL_METHOD_PATHTRACE, t, a->threads, &pilot, err);
+        cdl_status st = solve_rung(a, scene, CDL_METHOD_PATHTRACE, t, &pilot, err);
         if (st != CDL_OK) return st;
         double ratio = t / target;
-        *pilot_target = t;
-        *pilot_compute = pilot.compute_seconds;
-        *need = (pilot.seconds - pilot.compute_seconds) + pilot.compute_seconds * ratio * ratio;
+        /* Rank 0's clock decides: need, the pilot's target and computing
+         * time, and whether to stop here. */
+        double said[4] = {(pilot.seconds - pilot.compute_seconds) + pilot.compute_seconds * ratio * ratio, t,
+                          pilot.compute_seconds, 0.0};
         double next = 16.0 * pilot.seconds;
+        said[3] = t / 4.0 < 4.0 * target || next > a->budget / 20.0;
         cdl_solution_clear(&pilot);
-        if (t / 4.0 < 4.0 * target || next > a->budget / 20.0) return CDL_OK;
+        cdl_cli_ranks_follow(a->ranks, "bench", said, sizeof said);
+        *need = said[0];
+        *pilot_target = said[1];
+        *pilot_compute = said[2];
+        if (said[3] != 0.0) return CDL_OK;
         t /= 4.0;
     }
 }
 
 #define KEY_HEADER "candela bench reference 2"
 
+/* What rank 0 finds in DIR/reference/reference.key: nothing (0), the
+ * scene's key (1) or another (2, with the key it holds). */
+static int read_key(const char *keypath, uint64_t key, unsigned long long *stored)
+{
+    FILE *kf = fopen(keypath, "r");
+    if (!kf) return 0;
+    char line[128] = "";
+    int ok = fgets(line, sizeof line, kf) && strncmp(line, KEY_HEADER, strlen(KEY_HEADER)) == 0 &&
+             fscanf(kf, " key %llx", stored) == 1;
+    fclose(kf);
+    return ok && *stored == key ? 1 : 2;
+}
+
+/* Path trace the reference into `dir` (its key beside it), when the budget
+ * allows; rank 0 judges the budget on its clock. */
+static int make_reference(const cdl_bench_sample *sample, const bench_args *a, double target, double t0,
+                          const char *dir, const char *keypath, uint64_t key)
+{
+    const cdl_scene *scene = &sample->scene;
+    cdl_error err;
+    cdl_error_clear(&err);
+    cdl_status st = CDL_OK;
+    if (a->budget > 0.0) {
+        double need = 0.0, pilot_target = 0.0, pilot_compute = 0.0;
+        st = estimate_reference(scene, a, target, &need, &pilot_target, &pilot_compute, &err);
+        if (st != CDL_OK) {
+            fprintf(stderr, "candela bench: %s\n", err.message);
+            return (int)st;
+        }
+        double spent = cdl_pool_now_seconds() - t0;
+        cdl_cli_ranks_follow(a->ranks, "bench", &spent, sizeof spent);
+        if (spent + need > a->budget) {
+            fprintf(stderr,
+                    "candela bench: --budget %g s is too small: the reference (path tracing to %g %%) needs about "
+                    "%.3g s at %zu points (a pilot to %g %% took %.3g s of computing, scaled by (%g/%g)^2), after "
+                    "the %.3g s the pilots took; give a larger --budget or fewer --reference-points\n",
+                    a->budget, 100.0 * target, need, sample->count, 100.0 * pilot_target, pilot_compute,
+                    pilot_target, target, spent);
+            return CDL_EXIT_INPUT;
+        }
+    }
+    if (!a->quiet) fprintf(stderr, "candela bench: reference: path tracing to %g %%\n", 100.0 * target);
+    cdl_solution sol;
+    st = solve_into(a, scene, CDL_METHOD_PATHTRACE, target, dir, &sol, &err);
+    if (st == CDL_OK) {
+        printf("reference: path traced to %g %% in %.2f s, %llu rays; written to %s\n", 100.0 * target, sol.seconds,
+               (unsigned long long)sol.rays, dir);
+        cdl_solution_clear(&sol);
+        char text[256];
+        int len = snprintf(text, sizeof text, KEY_HEADER "\nkey %016llx\ntarget %.17g\npoints %zu of %zu\n",
+                           (unsigned long long)key, target, sample->count, sample->total);
+        st = cdl_cli_ranks_agree(a->ranks,
+                                 cdl_cli_ranks_root(a->ranks) ? cdl_atomic_file_write_all(keypath, text, (size_t)len,
+                                                                                          &err)
+                                                              : CDL_OK,
+                                 &err);
+    }
+    if (st != CDL_OK) fprintf(stderr, "candela bench: %s\n", err.message);
+    return (int)st;
+}
+
 /* The reference: read from DIR/reference when its key matches (refused
  * when not), else path traced to `target` (within the budget) at the
  * sample's points and written there with its key. Read back from its CSV
- * either way, so a fresh and a reused reference give the same figures. */
+ * either way, so a fresh and a reused reference give the same figures
+ * (rank 0 reads it: the only rank that measures). */
 static int get_reference(const cdl_bench_sample *sample, const bench_args *a, double target, double t0,
                          cdl_solution *ref)
 {
     const cdl_scene *scene = &sample->scene;
+    memset(ref, 0, sizeof *ref);
     cdl_error err;
     cdl_error_clear(&err);
     char dir[4096], keypath[4200];
@@ -235,60 +320,27 @@ static int get_reference(const cdl_bench_sample *sample, const bench_args *a, do
         fprintf(stderr, "candela bench: %s\n", err.message);
         return (int)st;
     }
-    FILE *kf = fopen(keypath, "r");
-    if (kf) {
-        char line[128] = "";
-        unsigned long long stored = 0;
-        int ok = fgets(line, sizeof line, kf) && strncmp(line, KEY_HEADER, strlen(KEY_HEADER)) == 0 &&
-                 fscanf(kf, " key %llx", &stored) == 1;
-        fclose(kf);
-        if (!ok || stored != key) {
-            fprintf(stderr,
-                    "candela bench: %s: the reference there was made for another scene or other settings (its hash "
-                    "%016llx, this scene's %016llx: geometry, materials, lights, grids, the sampled points, seed or "
-                    "bounces changed); "
-                    "remove %s to compute a new one\n",
-                    dir, stored, (unsigned long long)key, dir);
-            return CDL_EXIT_INPUT;
-        }
+    unsigned long long found[2] = {0, 0}; /* what rank 0 found, the key it holds */
+    if (cdl_cli_ranks_root(a->ranks)) found[0] = (unsigned long long)read_key(keypath, key, &found[1]);
+    cdl_cli_ranks_follow(a->ranks, "bench", found, sizeof found);
+    if (found[0] == 2) {
+        fprintf(stderr,
+                "candela bench: %s: the reference there was made for another scene or other settings (its hash "
+                "%016llx, this scene's %016llx: geometry, materials, lights, grids, the sampled points, seed or "
+                "bounces changed); "
+                "remove %s to compute a new one\n",
+                dir, found[1], (unsigned long long)key, dir);
+        return CDL_EXIT_INPUT;
+    }
+    if (found[0] == 1) {
         printf("reference: reused %s (scene and settings hash %016llx match)\n", dir, (unsigned long long)key);
     } else {
-        if (a->budget > 0.0) {
-            double need = 0.0, pilot_target = 0.0, pilot_compute = 0.0;
-            st = estimate_reference(scene, a, target, &need, &pilot_target, &pilot_compute, &err);
-            if (st != CDL_OK) {
-                fprintf(stderr, "candela bench: %s\n", err.message);
-                return (int)st;
-            }
-            double spent = cdl_pool_now_seconds() - t0;
-            if (spent + need > a->budget) {
-                fprintf(stderr,
-                        "candela bench: --budget %g s is too small: the reference (path tracing to %g %%) needs about "
-                        "%.3g s at %zu points (a pilot to %g %% took %.3g s of computing, scaled by (%g/%g)^2), after "
-                        "the %.3g s the pilots took; give a larger --budget or fewer --reference-points\n",
-                        a->budget, 100.0 * target, need, sample->count, 100.0 * pilot_target, pilot_compute,
-                        pilot_target, target, spent);
-                return CDL_EXIT_INPUT;
-            }
-        }
-        if (!a->quiet) fprintf(stderr, "candela bench: reference: path tracing to %g %%\n", 100.0 * target);
-        cdl_solution sol;
-        st = solve_into(scene, CDL_METHOD_PATHTRACE, target, a->threads, dir, &sol, &err);
-        if (st == CDL_OK) {
-            printf("reference: path traced to %g %% in %.2f s, %llu rays; written to %s\n", 100.0 * target,
-                   sol.seconds, (unsigned long long)sol.rays, dir);
-            cdl_solution_clear(&sol);
-            char text[256];
-            int len = snprintf(text, sizeof text, KEY_HEADER "\nkey %016llx\ntarget %.17g\npoints %zu of %zu\n",
-                               (unsigned long long)key, target, sample->count, sample->total);
-            st = cdl_atomic_file_write_all(keypath, text, (size_t)len, &err);
-        }
-        if (st != CDL_OK) {
-            fprintf(stderr, "candela bench: %s\n", err.message);
-            return (int)st;
-        }
+        int rc = make_reference(sample, a, target, t0, dir, keypath, key);
+        if (rc != CDL_EXIT_OK) return rc;
     }
-    st = cdl_bench_reference_read(dir, scene, ref, &err);
+    st = cdl_cli_ranks_agree(a->ranks, cdl_cli_ranks_root(a->ranks) ? cdl_bench_reference_read(dir, scene, ref, &err)
+                                                                     : CDL_OK,
+                             &err);
     if (st != CDL_OK) {
         fprintf(stderr, "candela bench: %s\n", err.message);
         return (int)st;
@@ -323,10 +375,13 @@ static int run_ladder(const cdl_scene *scene, const bench_args *a, int m, const 
         row->rung.target = specs[k].target;
         if (a->budget > 0.0) {
             /* Monte Carlo: time ~ target^-2 at a fixed cost per sample; a
-             * method's first rung is run when any budget is left. */
+             * method's first rung is run when any budget is left. Rank 0's
+             * clock decides. */
             double ratio = prev ? prev->rung.target / specs[k].target : 0.0;
             double need = prev ? prev->rung.seconds * ratio * ratio : 0.0;
-            if (cdl_pool_now_seconds() - t0 + need >= a->budget) {
+            int skip = cdl_pool_now_seconds() - t0 + need >= a->budget;
+            cdl_cli_ranks_follow(a->ranks, "bench", &skip, sizeof skip);
+            if (skip) {
                 row->skipped = 1;
                 continue;
             }
@@ -337,12 +392,13 @@ static int run_ladder(const cdl_scene *scene, const bench_args *a, int m, const 
         cdl_error err;
         cdl_error_clear(&err);
         cdl_solution sol;
-        cdl_status st = solve_into(scene, method_of[m], specs[k].target, a->threads, dir, &sol, &err);
+        cdl_status st = solve_into(a, scene, method_of[m], specs[k].target, dir, &sol, &err);
         if (st != CDL_OK) {
             fprintf(stderr, "candela bench: %s: %s\n", row->label, err.message);
             return (int)st;
         }
-        cdl_bench_rung_measure(&sol, ref, sample, &row->rung);
+        /* Rank 0 holds the solution and the reference (the others' rows are never written). */
+        if (cdl_cli_ranks_root(a->ranks)) cdl_bench_rung_measure(&sol, ref, sample, &row->rung);
         cdl_solution_clear(&sol);
         /* an exact reference (no stated error) resolves everything */
         row->below_reference = ref_rms > 0.0 && row->rung.rms <= CDL_BENCH_RESOLVABLE * ref_rms;
@@ -413,6 +469,20 @@ static void print_sample(const cdl_bench_sample *sample)
         printf("reference points: every one of the grids' %zu\n", sample->total);
 }
 
+/* bench.csv, bench.svg and bench.png. */
+static cdl_status write_reports(const bench_args *a, const cdl_bench_row *rows, size_t count, double ref_rms,
+                                cdl_error *err)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%s/bench.csv", a->dir);
+    cdl_status st = cdl_bench_report_write_csv(path, rows, count, err);
+    snprintf(path, sizeof path, "%s/bench.svg", a->dir);
+    if (st == CDL_OK) st = cdl_bench_report_write_svg(path, rows, count, ref_rms, err);
+    snprintf(path, sizeof path, "%s/bench.png", a->dir);
+    if (st == CDL_OK) st = cdl_bench_report_write_png(path, rows, count, ref_rms, err);
+    return st;
+}
+
 static int bench(const bench_args *a, cdl_scene *scene)
 {
     double t0 = cdl_pool_now_seconds();
@@ -433,9 +503,11 @@ static int bench(const bench_args *a, cdl_scene *scene)
     cdl_error_clear(&err);
     char path[4200];
     snprintf(path, sizeof path, "%s/runs", a->dir);
-    int dir_existed = access(a->dir, F_OK) == 0;
-    cdl_status st = cdl_solution_prepare_folder(a->dir, &err);
-    if (st == CDL_OK) st = cdl_solution_prepare_folder(path, &err);
+    int root = cdl_cli_ranks_root(a->ranks);
+    int dir_existed = root && access(a->dir, F_OK) == 0;
+    cdl_status st = root ? cdl_solution_prepare_folder(a->dir, &err) : CDL_OK;
+    if (st == CDL_OK && root) st = cdl_solution_prepare_folder(path, &err);
+    st = cdl_cli_ranks_agree(a->ranks, st, &err);
     if (st != CDL_OK) {
         fprintf(stderr, "candela bench: %s\n", err.message);
         return (int)st;
@@ -453,10 +525,12 @@ static int bench(const bench_args *a, cdl_scene *scene)
     if (rc != CDL_EXIT_OK) {
         cdl_bench_sample_release(&sample);
         /* folders this run made and left empty go (rmdir refuses others) */
-        rmdir(path);
-        snprintf(path, sizeof path, "%s/reference", a->dir);
-        rmdir(path);
-        if (!dir_existed) rmdir(a->dir);
+        if (root) {
+            rmdir(path);
+            snprintf(path, sizeof path, "%s/reference", a->dir);
+            rmdir(path);
+            if (!dir_existed) rmdir(a->dir);
+        }
         return rc;
     }
     double ref_rms = cdl_bench_stated_rms(&ref);
@@ -470,12 +544,8 @@ static int bench(const bench_args *a, cdl_scene *scene)
     cdl_bench_sample_release(&sample);
     if (rc != CDL_EXIT_OK) return rc;
 
-    snprintf(path, sizeof path, "%s/bench.csv", a->dir);
-    st = cdl_bench_report_write_csv(path, rows, count, &err);
-    snprintf(path, sizeof path, "%s/bench.svg", a->dir);
-    if (st == CDL_OK) st = cdl_bench_report_write_svg(path, rows, count, ref_rms, &err);
-    snprintf(path, sizeof path, "%s/bench.png", a->dir);
-    if (st == CDL_OK) st = cdl_bench_report_write_png(path, rows, count, ref_rms, &err);
+    if (root) st = write_reports(a, rows, count, ref_rms, &err);
+    st = cdl_cli_ranks_agree(a->ranks, st, &err);
     if (st != CDL_OK) {
         fprintf(stderr, "candela bench: %s\n", err.message);
         return (int)st;
@@ -485,21 +555,36 @@ static int bench(const bench_args *a, cdl_scene *scene)
     return CDL_EXIT_OK;
 }
 
-static int run(int argc, char **argv)
+/* Every rank loads the scene and shares each solve; rank 0 decides from
+ * its clock and its files, writes and prints (cli_ranks.h). */
+static int bench_on_ranks(bench_args *a, cdl_cli_ranks *ranks)
 {
-    bench_args a;
-    int rc = parse_args(argc, argv, &a);
-    if (rc != CDL_EXIT_OK) return rc < 0 ? CDL_EXIT_OK : rc;
+    a->ranks = ranks;
     cdl_error err;
     cdl_error_clear(&err);
     cdl_scene *scene = NULL;
-    cdl_status st = cdl_scene_load(a.scene_path, &scene, &err);
+    cdl_status st = cdl_cli_ranks_agree(ranks, cdl_scene_load(a->scene_path, &scene, &err), &err);
     if (st != CDL_OK) {
         fprintf(stderr, "candela bench: %s\n", err.message);
+        cdl_scene_release(scene);
         return (int)st;
     }
-    rc = bench(&a, scene);
+    int rc = bench(a, scene);
     cdl_scene_release(scene);
+    return rc;
+}
+
+static int run(int argc, char **argv)
+{
+    cdl_cli_ranks ranks;
+    int rc = cdl_cli_ranks_begin("bench", &ranks);
+    if (rc == 0) {
+        bench_args a;
+        rc = parse_args(argc, argv, &a);
+        if (rc == CDL_EXIT_OK) rc = bench_on_ranks(&a, &ranks);
+        else if (rc < 0) rc = CDL_EXIT_OK;
+    }
+    cdl_cli_ranks_end(&ranks);
     return rc;
 }
 

@@ -6,6 +6,7 @@
 
 #include "base/error_report.h"
 #include "cli_args.h"
+#include "cli_ranks.h"
 #include "command.h"
 #include "solver/output/grid_result.h"
 #include "solver/output/solution_write.h"
@@ -127,7 +128,15 @@ static int progress(void *user, const cdl_progress *p)
     return 0;
 }
 
-static int run(int argc, char **argv)
+/* The command's settings, from its arguments. */
+typedef struct solve_args {
+    const char *scene, *out_dir, *ocio;
+    cdl_solve_options options;
+    int strict, log_scale, quiet;
+} solve_args;
+
+/* Returns -1 when the solve is to go on, else the exit status (help, usage). */
+static int parse(int argc, char **argv, solve_args *a)
 {
     cdl_cli_option opts[] = {
         {"output", 'o', 1, 0, NULL},
@@ -157,8 +166,12 @@ static int run(int argc, char **argv)
         fprintf(stderr, "candela solve: -o: expected a folder name, found an empty string\n(see 'candela solve --help')\n");
         return CDL_EXIT_USAGE;
     }
+    a->scene = args.positional[0];
+    a->out_dir = out_opt->value;
     cdl_solve_options so = CDL_SOLVE_OPTIONS_INIT;
-    if (cdl_cli_parse_threads("solve", cdl_cli_find(opts, nopts, "threads"), &so.threads)) return CDL_EXIT_USAGE;
+    a->options = so;
+    if (cdl_cli_parse_threads("solve", cdl_cli_find(opts, nopts, "threads"), &a->options.threads))
+        return CDL_EXIT_USAGE;
     cdl_cli_option *cache = cdl_cli_find(opts, nopts, "cache");
     if (cache->present) {
         if (!cache->value[0]) {
@@ -166,9 +179,8 @@ static int run(int argc, char **argv)
                             "(see 'candela solve --help')\n");
             return CDL_EXIT_USAGE;
         }
-        so.cache_path = cache->value;
+        a->options.cache_path = cache->value;
     }
-    int log_scale = 0;
     cdl_cli_option *scale = cdl_cli_find(opts, nopts, "map-scale");
     if (scale->present) {
         if (strcmp(scale->value, "log") != 0 && strcmp(scale->value, "linear") != 0) {
@@ -176,97 +188,125 @@ static int run(int argc, char **argv)
                             "(see 'candela solve --help')\n", scale->value);
             return CDL_EXIT_USAGE;
         }
-        log_scale = strcmp(scale->value, "log") == 0;
+        a->log_scale = strcmp(scale->value, "log") == 0;
     }
+    a->quiet = cdl_cli_find(opts, nopts, "quiet")->present;
+    a->strict = cdl_cli_find(opts, nopts, "strict")->present;
+    a->ocio = cdl_cli_find(opts, nopts, "ocio")->present ? cdl_cli_find(opts, nopts, "ocio")->value
+                                                         : cdl_default_ocio_config();
+    return -1;
+}
+
+/* A line per grid and observer, the totals and where the results went. */
+static void print_results(const cdl_scene *scene, const cdl_solution *sol, const solve_args *a)
+{
+    for (size_t g = 0; g < sol->grid_count; ++g) {
+        cdl_grid_result r;
+        cdl_grid_solution_result(&sol->grids[g], &r);
+        cdl_grid_stats s;
+        cdl_grid_result_stats(&r, &s);
+        printf("%-16s %6zu points  Em %10.4g lx  Emin %10.4g lx  Emax %10.4g lx  U0 %.3f  Ud %.3f", r.name, s.count,
+               s.E_avg_lx, s.E_min_lx, s.E_max_lx, s.U0, s.Ud);
+        if (r.Ez) printf("  Ez %.4g lx", s.Ez.avg);
+        if (r.Esz) printf("  Esz %.4g lx", s.Esz.avg);
+        if (r.L) printf("  L %.4g cd/m2", s.L.avg);
+        printf("\n");
+    }
+    for (size_t i = 0; i < sol->observer_count; ++i) {
+        const cdl_observer_result *o = &sol->observers[i];
+        const cdl_observer_spec *os = &scene->observers[i];
+        printf("%-16s UGR ", os->name);
+        if (o->defined) printf("%5.1f +- %.2g", o->ugr, o->ugr_stderr);
+        else printf("%5s", "-");
+        printf("  Lb %.4g cd/m2  %zu source%s in view", o->background_cd_m2, o->source_count,
+               o->source_count == 1 ? "" : "s");
+        if (os->required_ugr > 0.0 && o->defined)
+            printf("  UGR_L %g: %s", os->required_ugr, o->ugr <= os->required_ugr ? "pass" : "FAIL");
+        printf("\n");
+    }
+    printf("method %s, %.3f s, %llu rays", cdl_method_name(sol->method), sol->seconds, (unsigned long long)sol->rays);
+    if (sol->rank_count > 1) printf(", %zu ranks", sol->rank_count);
+    printf("; results in %s\n", a->out_dir);
+    if (sol->power.luminaires_counted > 0)
+        printf("installed power %.6g W (%zu luminaire%s%s)\n", sol->power.installed_w, sol->power.luminaires_counted,
+               sol->power.luminaires_counted == 1 ? "" : "s",
+               sol->power.luminaires_without_watts ? ", others without a wattage" : "");
+    if (a->options.cache_path)
+        printf("irradiance cache %s: %s\n", a->options.cache_path,
+               sol->cache_reused ? "records read from it, none gathered" : "records gathered and written to it");
+}
+
+/* Rank 0, after the solve: the warnings (refused under --strict), then
+ * the files. */
+static cdl_status write_results(const cdl_scene *scene, const cdl_solution *sol, const solve_args *a,
+                                cdl_error *err)
+{
+    /* No silent zeros: every warning on stderr; --strict refuses them
+     * before any result is written. */
+    for (size_t w = 0; w < sol->warning_count; ++w)
+        fprintf(stderr, "candela solve: %s: %s\n", a->strict ? "error" : "warning", sol->warnings[w]);
+    if (a->strict && sol->warning_count > 0)
+        return cdl_error_set(err, CDL_ERR_INPUT, "%s: %zu warning%s, refused under --strict (see above); no results "
+                                                 "written",
+                             scene->path, sol->warning_count, sol->warning_count == 1 ? "" : "s");
+    cdl_solution_write_options wo = CDL_SOLUTION_WRITE_OPTIONS_INIT;
+    wo.ocio_config = a->ocio;
+    wo.map_log_scale = a->log_scale;
+    return cdl_solution_write(scene, sol, a->out_dir, &wo, err);
+}
+
+/* The solve on the ranks (one process alone without a launcher): every
+ * rank loads the scene and solves its share; rank 0 prepares the folder,
+ * writes and prints; after each step the ranks agree on how it went. */
+static int solve(const solve_args *a, cdl_cli_ranks *ranks)
+{
+    int root = cdl_cli_ranks_root(ranks);
+    cdl_solve_options so = a->options;
     progress_state shown = {-1.0, NULL};
-    if (!cdl_cli_find(opts, nopts, "quiet")->present && isatty(STDERR_FILENO)) {
+    if (!a->quiet && root && isatty(STDERR_FILENO)) {
         so.progress.fn = progress;
         so.progress.user = &shown;
     }
-    const char *ocio = cdl_cli_find(opts, nopts, "ocio")->present ? cdl_cli_find(opts, nopts, "ocio")->value
-                                                                   : cdl_default_ocio_config();
-
     cdl_error err;
     cdl_error_clear(&err);
     cdl_scene *scene = NULL;
-    cdl_status st = cdl_scene_load(args.positional[0], &scene, &err);
-    if (st != CDL_OK) {
-        fprintf(stderr, "candela solve: %s\n", err.message);
-        return (int)st;
-    }
+    cdl_status st = cdl_cli_ranks_agree(ranks, cdl_scene_load(a->scene, &scene, &err), &err);
     /* The output folder is checked before the solve, which may be long; a
      * folder made for this run and left empty by a failure is removed. */
-    int folder_existed = access(out_opt->value, F_OK) == 0;
-    st = cdl_solution_prepare_folder(out_opt->value, &err);
-    if (st != CDL_OK) {
-        fprintf(stderr, "candela solve: %s\n", err.message);
-        cdl_scene_release(scene);
-        return (int)st;
-    }
+    int folder_existed = root && access(a->out_dir, F_OK) == 0;
+    if (st == CDL_OK)
+        st = cdl_cli_ranks_agree(ranks, root ? cdl_solution_prepare_folder(a->out_dir, &err) : CDL_OK, &err);
     cdl_solution sol;
-    st = cdl_solve_scene_into(scene, &so, NULL, &sol, &err);
-    int strict = cdl_cli_find(opts, nopts, "strict")->present;
+    memset(&sol, 0, sizeof sol);
+    int prepared = st == CDL_OK;
     if (st == CDL_OK) {
-        /* No silent zeros: every warning on stderr; --strict refuses them
-         * before any result is written. */
-        for (size_t w = 0; w < sol.warning_count; ++w)
-            fprintf(stderr, "candela solve: %s: %s\n", strict ? "error" : "warning", sol.warnings[w]);
-        if (strict && sol.warning_count > 0) {
-            st = cdl_error_set(&err, CDL_ERR_INPUT,
-                               "%s: %zu warning%s, refused under --strict (see above); no results written",
-                               scene->path, sol.warning_count, sol.warning_count == 1 ? "" : "s");
-        }
+        st = cdl_solve_scene_shared(scene, &so, NULL, &ranks->group, &sol, &err);
+        if (st != CDL_OK && !ranks->group.failure_agreed && ranks->group.count > 1)
+            cdl_cli_ranks_abort(ranks, "solve", (int)st, &err);
     }
-    if (st == CDL_OK) {
-        cdl_solution_write_options wo = CDL_SOLUTION_WRITE_OPTIONS_INIT;
-        wo.ocio_config = ocio;
-        wo.map_log_scale = log_scale;
-        st = cdl_solution_write(scene, &sol, out_opt->value, &wo, &err);
-        if (st == CDL_OK) {
-            for (size_t g = 0; g < sol.grid_count; ++g) {
-                cdl_grid_result r;
-                cdl_grid_solution_result(&sol.grids[g], &r);
-                cdl_grid_stats s;
-                cdl_grid_result_stats(&r, &s);
-                printf("%-16s %6zu points  Em %10.4g lx  Emin %10.4g lx  Emax %10.4g lx  U0 %.3f  Ud %.3f", r.name,
-                       s.count, s.E_avg_lx, s.E_min_lx, s.E_max_lx, s.U0, s.Ud);
-                if (r.Ez) printf("  Ez %.4g lx", s.Ez.avg);
-                if (r.Esz) printf("  Esz %.4g lx", s.Esz.avg);
-                if (r.L) printf("  L %.4g cd/m2", s.L.avg);
-                printf("\n");
-            }
-            for (size_t i = 0; i < sol.observer_count; ++i) {
-                const cdl_observer_result *o = &sol.observers[i];
-                const cdl_observer_spec *os = &scene->observers[i];
-                printf("%-16s UGR ", os->name);
-                if (o->defined) printf("%5.1f +- %.2g", o->ugr, o->ugr_stderr);
-                else printf("%5s", "-");
-                printf("  Lb %.4g cd/m2  %zu source%s in view", o->background_cd_m2, o->source_count,
-                       o->source_count == 1 ? "" : "s");
-                if (os->required_ugr > 0.0 && o->defined)
-                    printf("  UGR_L %g: %s", os->required_ugr, o->ugr <= os->required_ugr ? "pass" : "FAIL");
-                printf("\n");
-            }
-            printf("method %s, %.3f s, %llu rays; results in %s\n", cdl_method_name(sol.method), sol.seconds,
-                   (unsigned long long)sol.rays, out_opt->value);
-            if (sol.power.luminaires_counted > 0)
-                printf("installed power %.6g W (%zu luminaire%s%s)\n", sol.power.installed_w,
-                       sol.power.luminaires_counted, sol.power.luminaires_counted == 1 ? "" : "s",
-                       sol.power.luminaires_without_watts ? ", others without a wattage" : "");
-            if (so.cache_path)
-                printf("irradiance cache %s: %s\n", so.cache_path,
-                       sol.cache_reused ? "records read from it, none gathered" : "records gathered and written to it");
-        }
-        cdl_solution_clear(&sol);
-    } else if (sol.grids || sol.warnings) {
-        cdl_solution_clear(&sol);
-    }
+    if (st == CDL_OK) st = cdl_cli_ranks_agree(ranks, root ? write_results(scene, &sol, a, &err) : CDL_OK, &err);
+    if (st == CDL_OK && root) print_results(scene, &sol, a);
+    cdl_solution_clear(&sol);
     if (st != CDL_OK) {
         fprintf(stderr, "candela solve: %s\n", err.message);
-        if (!folder_existed) rmdir(out_opt->value); /* fails, as it should, unless empty */
+        if (root && prepared && !folder_existed) rmdir(a->out_dir); /* fails, as it should, unless empty */
     }
     cdl_scene_release(scene);
     return (int)st;
+}
+
+static int run(int argc, char **argv)
+{
+    cdl_cli_ranks ranks;
+    int status = cdl_cli_ranks_begin("solve", &ranks);
+    if (status == 0) {
+        solve_args a;
+        memset(&a, 0, sizeof a);
+        status = parse(argc, argv, &a);
+        if (status < 0) status = solve(&a, &ranks);
+    }
+    cdl_cli_ranks_end(&ranks);
+    return status;
 }
 
 const cdl_command cdl_command_solve = {"solve", "compute illuminance on every grid of a scene", run, print_help};

@@ -22,6 +22,9 @@
  *   solver/solution.h             results in memory: E, direct, indirect, stderr per point
  *   solver/solve_options.h        the options of a solve
  *   solver/solve.h                solving a scene
+ *   solver/solve_ranks.h          one solve shared by several processes (ranks), through the caller's
+ *                                 collectives (candela/candela_mpi.h gives them for MPI; not included here,
+ *                                 so that this header needs no mpi.h)
  *   solver/output/solution_write.h  writing a solve's files (CSV, EXR, PNG, summary.json)
  *
  * Why these: they are what a program needs to do what the `candela`
@@ -110,6 +113,7 @@ extern "C" {
 #include "solver/solution.h"
 #include "solver/solve_options.h"
 #include "solver/solve.h"
+#include "solver/solve_ranks.h"
 #include "solver/output/solution_write.h"
 
 /* The release of the library, "MAJOR.MINOR.PATCH", the same string

@@ -16,14 +16,15 @@
 #include "solver/solve_internal.h"
 
 cdl_status cdl_bench_solve_rung(const cdl_scene *scene, cdl_method method, double target, int threads,
-                                cdl_solution *out, cdl_error *err)
+                                cdl_rank_group *ranks, cdl_solution *out, cdl_error *err)
 {
     cdl_scene copy = *scene; /* shallow: the solve only reads it */
     copy.settings.method = method;
     copy.settings.target_error = target;
     cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
     o.threads = threads;
-    return cdl_solve_scene_into(&copy, &o, NULL, out, err);
+    if (!ranks) return cdl_solve_scene_into(&copy, &o, NULL, out, err);
+    return cdl_solve_scene_shared(&copy, &o, NULL, ranks, out, err);
 }
 
 double cdl_bench_stated_rms(const cdl_solution *sol)

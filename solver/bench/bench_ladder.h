@@ -30,6 +30,7 @@
 #include <stdint.h>
 
 #include "base/error.h"
+#include "solver/rank_group.h"
 #include "solver/scene/scene_internal.h"
 #include "solver/solution_internal.h"
 
@@ -59,9 +60,10 @@ typedef struct cdl_bench_row {
 
 /* Solve `scene` with its settings' method and target_error replaced by
  * `method` and `target` (the scene itself is not changed). threads < 0: as
- * the scene says. */
+ * the scene says. With `ranks` (NULL: this process alone) the solve is
+ * shared by them and only rank 0's *out holds it (cdl_solve_scene_shared). */
 cdl_status cdl_bench_solve_rung(const cdl_scene *scene, cdl_method method, double target, int threads,
-                                cdl_solution *out, cdl_error *err);
+                                cdl_rank_group *ranks, cdl_solution *out, cdl_error *err);
 
 /* RMS over all points of E_stderr/E (points with E <= 0 are skipped). */
 double cdl_bench_stated_rms(const cdl_solution *solution);

@@ -33,6 +33,7 @@
 #include "radiometry/vec3.h"
 #include "solver/geometry/occluder_index.h"
 #include "solver/geometry/ray_scene.h"
+#include "solver/rank_group.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_lights.h"
 
@@ -122,6 +123,12 @@ typedef struct cdl_direct_sample_stats {
 /* Add b's counts (rays, evaluations, routes of `light_count` lights when
  * both have them) to a. */
 void cdl_direct_stats_add(cdl_direct_sample_stats *a, const cdl_direct_sample_stats *b, size_t light_count);
+
+/* s's counts (and its routes of `light_count` lights, when it has them)
+ * added up over the ranks of `group` (a collective; nothing without one):
+ * afterwards every rank holds the whole solve's. */
+cdl_status cdl_direct_stats_share(cdl_rank_group *group, cdl_direct_sample_stats *s, size_t light_count,
+                                  cdl_error *err);
 
 /* For integrators beyond direct light (glare at an eye), the two visibility
  * questions the direct solver asks, with its tolerances: is the region

@@ -38,6 +38,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "solver/direct/sky_region.h"
@@ -374,6 +375,41 @@ void cdl_direct_stats_add(cdl_direct_sample_stats *a, const cdl_direct_sample_st
         if (b->routes[l].most_occluders > a->routes[l].most_occluders)
             a->routes[l].most_occluders = b->routes[l].most_occluders;
     }
+}
+
+cdl_status cdl_direct_stats_share(cdl_rank_group *group, cdl_direct_sample_stats *s, size_t light_count,
+                                  cdl_error *err)
+{
+    if (cdl_rank_group_count(group) == 1) return CDL_OK;
+    /* Counts add up; the most occluders of any point is a maximum. */
+    size_t per = CDL_ROUTE_COUNT + 1, n = 3 + (s->routes ? light_count * per : 0);
+    uint64_t *sum = malloc(n * sizeof *sum), *most = malloc((light_count + 1) * sizeof *most);
+    cdl_status st = sum && most ? CDL_OK : cdl_error_out_of_memory(err);
+    if (st == CDL_OK) {
+        sum[0] = s->rays;
+        sum[1] = s->exact_evaluations;
+        sum[2] = s->sampled_evaluations;
+        for (size_t l = 0; s->routes && l < light_count; ++l) {
+            for (int r = 0; r < CDL_ROUTE_COUNT; ++r) sum[3 + l * per + (size_t)r] = s->routes[l].points[r];
+            sum[3 + l * per + CDL_ROUTE_COUNT] = s->routes[l].capped;
+            most[l] = s->routes[l].most_occluders;
+        }
+        st = cdl_rank_sum_u64(group, sum, n, err);
+    }
+    if (st == CDL_OK && s->routes) st = cdl_rank_max_u64(group, most, light_count, err);
+    if (st == CDL_OK) {
+        s->rays = sum[0];
+        s->exact_evaluations = sum[1];
+        s->sampled_evaluations = sum[2];
+        for (size_t l = 0; s->routes && l < light_count; ++l) {
+            for (int r = 0; r < CDL_ROUTE_COUNT; ++r) s->routes[l].points[r] = sum[3 + l * per + (size_t)r];
+            s->routes[l].capped = sum[3 + l * per + CDL_ROUTE_COUNT];
+            s->routes[l].most_occluders = (uint32_t)most[l];
+        }
+    }
+    free(sum);
+    free(most);
+    return st;
 }
 
 void cdl_direct_route_describe(const cdl_direct_route_tally *t, char *out, size_t size)

@@ -80,45 +80,53 @@ static cdl_status solve_chunk(void *shared, void *local, size_t start, size_t en
 
 cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
                                  const cdl_grid *grid, size_t grid_index, double *E, double *variance,
-                                 int threads, const cdl_progress_sink *progress, const cdl_direct_outputs *outputs,
-                                 const char *stage, cdl_direct_sample_stats *stats, cdl_error *err)
+                                 const cdl_workers *workers, const cdl_direct_outputs *outputs, const char *stage,
+                                 cdl_direct_sample_stats *stats, cdl_error *err)
 {
-    if (threads < 1) threads = 1;
-    grid_worker *workers = calloc((size_t)threads, sizeof *workers);
-    uint32_t *active = malloc((size_t)threads * (ctx->light_count + 1) * sizeof(uint32_t));
-    if (!workers || !active) {
-        free(workers);
+    int threads = workers->threads < 1 ? 1 : workers->threads;
+    size_t lights = ctx->light_count + 1;
+    grid_worker *w = calloc((size_t)threads, sizeof *w);
+    uint32_t *active = malloc((size_t)threads * lights * sizeof(uint32_t));
+    /* Each worker tallies its points' routes apart (when the caller asks),
+     * and the sum over workers and ranks goes to the caller's. */
+    cdl_direct_route_tally *routes = stats->routes ? calloc((size_t)(threads + 1) * lights, sizeof *routes) : NULL;
+    if (!w || !active || (stats->routes && !routes)) {
+        free(w);
         free(active);
-        return cdl_error_out_of_memory(err);
-    }
-    /* Each worker tallies its points' routes apart (when the caller asks). */
-    cdl_direct_route_tally *routes =
-        stats->routes ? calloc((size_t)threads * (ctx->light_count + 1), sizeof *routes) : NULL;
-    if (stats->routes && !routes) {
-        free(workers);
-        free(active);
+        free(routes);
         return cdl_error_out_of_memory(err);
     }
     for (int i = 0; i < threads; ++i) {
-        workers[i].active = active + (size_t)i * (ctx->light_count + 1);
-        workers[i].stats.routes = routes ? routes + (size_t)i * (ctx->light_count + 1) : NULL;
+        w[i].active = active + (size_t)i * lights;
+        w[i].stats.routes = routes ? routes + (size_t)(i + 1) * lights : NULL;
     }
     grid_job job = {ctx, strategies, grid, grid_index, E, variance, outputs};
+    const cdl_direct_outputs none = {0};
+    const cdl_direct_outputs *v = outputs ? outputs : &none;
     cdl_pool_task task = {.count = grid->count,
                           .chunk = CHUNK,
                           .run = solve_chunk,
                           .shared = &job,
-                          .locals = workers,
-                          .local_size = sizeof *workers,
-                          .stage = stage};
-    cdl_status st = cdl_pool_run(&task, threads, progress, err);
+                          .locals = w,
+                          .local_size = sizeof *w,
+                          .stage = stage,
+                          .outputs = {{E, sizeof *E},
+                                      {variance, sizeof *variance},
+                                      {v->ao, sizeof *v->ao},
+                                      {v->ao_stderr, sizeof *v->ao_stderr},
+                                      {v->Ez, sizeof *v->Ez},
+                                      {v->Esz, sizeof *v->Esz}}};
+    cdl_status st = cdl_pool_run_shared(&task, workers, err);
+    cdl_direct_sample_stats sum = {.routes = routes};
     for (int i = 0; i < threads; ++i) {
-        cdl_direct_stats_add(stats, &workers[i].stats, ctx->light_count);
-        cdl_direct_scratch_release(&workers[i].scratch);
+        cdl_direct_stats_add(&sum, &w[i].stats, ctx->light_count);
+        cdl_direct_scratch_release(&w[i].scratch);
     }
+    if (st == CDL_OK) st = cdl_direct_stats_share(workers->ranks, &sum, ctx->light_count, err);
+    if (st == CDL_OK) cdl_direct_stats_add(stats, &sum, ctx->light_count);
     free(routes);
     free(active);
-    free(workers);
+    free(w);
     return st;
 }
 

@@ -31,12 +31,14 @@ typedef struct cdl_direct_outputs {
 } cdl_direct_outputs;
 
 /* Direct illuminance (lux) at every point of `grid`, the variance of each
- * value (0 where exact), and the outputs `outputs` asks for (NULL: none).
- * Sample counts are added to *stats. */
+ * value (0 where exact), and the outputs `outputs` asks for (NULL: none),
+ * on the workers (pool.h: with ranks, each rank's block of the points,
+ * every rank's results everywhere or kept as `workers` says). Sample
+ * counts, over all ranks, are added to *stats. */
 cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
                                  const cdl_grid *grid, size_t grid_index, double *E, double *variance,
-                                 int threads, const cdl_progress_sink *progress, const cdl_direct_outputs *outputs,
-                                 const char *stage, cdl_direct_sample_stats *stats, cdl_error *err);
+                                 const cdl_workers *workers, const cdl_direct_outputs *outputs, const char *stage,
+                                 cdl_direct_sample_stats *stats, cdl_error *err);
 
 /* Where p (receiving normal n) is evaluated: itself, or, where a surface
  * passes through it at an angle to its receiving plane, the point just off

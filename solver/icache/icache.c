@@ -312,10 +312,10 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
 }
 
 /* Gather records at grid points base->at[0 .. count - 1] onto the end of
- * recs (base: the job but for out and tallies). */
-static cdl_status gather(const gather_job *base, size_t count, cdl_icache_records *recs, int threads,
-                         const cdl_progress_sink *progress, const char *stage, cdl_icache_stats *stats,
-                         cdl_error *err)
+ * recs (base: the job but for out and tallies). With ranks, each gathers
+ * its block of them and every rank gets every record, in order. */
+static cdl_status gather(const gather_job *base, size_t count, cdl_icache_records *recs, const cdl_workers *workers,
+                         const char *stage, cdl_icache_stats *stats, cdl_error *err)
 {
     if (recs->count + count > recs->capacity) {
         size_t cap = 2 * (recs->count + count);
@@ -324,6 +324,7 @@ static cdl_status gather(const gather_job *base, size_t count, cdl_icache_record
         recs->items = grown;
         recs->capacity = cap;
     }
+    int threads = workers->threads < 1 ? 1 : workers->threads;
     cdl_path_stats *locals = calloc((size_t)threads, sizeof *locals);
     cdl_path_tally *tallies = calloc(count ? count : 1, sizeof *tallies);
     if (!locals || !tallies) {
@@ -334,16 +335,29 @@ static cdl_status gather(const gather_job *base, size_t count, cdl_icache_record
     gather_job job = *base;
     job.out = recs->items + recs->count;
     job.tallies = tallies;
-    cdl_pool_task task = {.count = count, .chunk = 1, .run = gather_records, .shared = &job, .locals = locals,
-                          .local_size = sizeof *locals, .stage = stage, .records = recs->count};
-    cdl_status st = cdl_pool_run(&task, threads, progress, err);
-    for (int t = 0; t < threads; ++t) cdl_path_stats_add(&stats->paths, &locals[t]);
-    cdl_path_stats_add_tallies(&stats->paths, tallies, count);
+    cdl_workers everywhere = *workers;
+    everywhere.everywhere = 1;
+    cdl_pool_task task = {.count = count,
+                          .chunk = 1,
+                          .run = gather_records,
+                          .shared = &job,
+                          .locals = locals,
+                          .local_size = sizeof *locals,
+                          .stage = stage,
+                          .records = recs->count,
+                          .outputs = {{job.out, sizeof *job.out}, {tallies, sizeof *tallies}}};
+    cdl_status st = cdl_pool_run_shared(&task, &everywhere, err);
+    cdl_path_stats sum = {0};
+    for (int t = 0; t < threads; ++t) cdl_path_stats_add(&sum, &locals[t]);
+    if (st == CDL_OK) st = cdl_path_stats_share(workers->ranks, &sum, err);
+    if (st == CDL_OK) {
+        cdl_path_stats_add(&stats->paths, &sum);
+        cdl_path_stats_add_tallies(&stats->paths, tallies, count);
+        recs->count += count;
+    }
     free(locals);
     free(tallies);
-    if (st != CDL_OK) return st;
-    recs->count += count;
-    return CDL_OK;
+    return st;
 }
 
 /* A new record's radius: the harmonic mean distance, no larger than
@@ -375,12 +389,11 @@ static cdl_status add_records(const cdl_icache_context *ctx, const reach_limits 
                               size_t grid_index, const double *E_direct, const double *floors, const size_t *at,
                               size_t count,
                               cdl_icache_records *recs, cdl_record_octree *tree, unsigned char *has, lookup *lk,
-                              int threads, const cdl_progress_sink *progress, const char *stage,
-                              cdl_icache_stats *stats, cdl_error *err)
+                              const cdl_workers *workers, const char *stage, cdl_icache_stats *stats, cdl_error *err)
 {
     size_t first = recs->count;
     gather_job base = {ctx, grid, grid_index, E_direct, NULL, 0, at, 0.0, floors, NULL, NULL};
-    cdl_status st = gather(&base, count, recs, threads, progress, stage, stats, err);
+    cdl_status st = gather(&base, count, recs, workers, stage, stats, err);
     for (size_t c = 0; st == CDL_OK && c < count; ++c) has[at[c]] = 1;
     for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
         set_radius(l, recs, id, tree, lk);
@@ -395,13 +408,12 @@ static cdl_status add_records(const cdl_icache_context *ctx, const reach_limits 
 static cdl_status add_own_records(const cdl_icache_context *ctx, const reach_limits *l, const cdl_grid *grid,
                                   size_t grid_index, const double *E_direct, const double *var_direct, double floor,
                                   const double *floors, const size_t *at, size_t count, cdl_icache_records *recs,
-                                  cdl_record_octree *tree,
-                                  int threads, const cdl_progress_sink *progress, const char *stage,
+                                  cdl_record_octree *tree, const cdl_workers *workers, const char *stage,
                                   cdl_icache_stats *stats, cdl_error *err)
 {
     size_t first = recs->count;
     gather_job base = {ctx, grid, grid_index, E_direct, var_direct, 1, at, floor, floors, NULL, NULL};
-    cdl_status st = gather(&base, count, recs, threads, progress, stage, stats, err);
+    cdl_status st = gather(&base, count, recs, workers, stage, stats, err);
     for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
         recs->items[id].radius = OWN_RADIUS;
         st = cdl_record_octree_insert(tree, (uint32_t)id, recs->items[id].p, tree_reach(l, &recs->items[id]), err);
@@ -456,16 +468,58 @@ static cdl_status visit_points(void *shared, void *local, size_t begin, size_t e
     return CDL_OK;
 }
 
-static cdl_status visit(point_job *job, int threads, const cdl_progress_sink *progress, const char *stage,
-                        size_t records, cdl_error *err)
+/* With ranks, each rank's asks (its block of the points'), exchanged as
+ * the list of the points that ask: every rank then holds every point's
+ * ask, as one process would, for what is usually a small share of them. */
+typedef struct ask_entry {
+    uint64_t index;
+    double ask;
+} ask_entry;
+
+static cdl_status share_asks(cdl_rank_group *group, double *ask, size_t count, cdl_error *err)
 {
+    if (cdl_rank_group_count(group) == 1) return CDL_OK;
+    size_t begin, end, mine = 0;
+    cdl_rank_block(count, CDL_RANK_KEEP_ALIGN, group->rank, group->count, &begin, &end);
+    for (size_t i = begin; i < end; ++i) mine += ask[i] > 0.0;
+    ask_entry *own = malloc((mine + 1) * sizeof *own);
+    if (!own) return cdl_error_out_of_memory(err);
+    mine = 0;
+    for (size_t i = begin; i < end; ++i)
+        if (ask[i] > 0.0) own[mine++] = (ask_entry){i, ask[i]};
+    void *all = NULL;
+    size_t total = 0;
+    cdl_status st = cdl_rank_allgather_list(group, own, mine, sizeof *own, &all, &total, err);
+    if (st == CDL_OK) {
+        memset(ask, 0, count * sizeof *ask);
+        const ask_entry *e = all;
+        for (size_t k = 0; k < total; ++k) ask[e[k].index] = e[k].ask;
+    }
+    free(own);
+    free(all);
+    return st;
+}
+
+/* Every point through visit_points on the workers: the final values kept
+ * or everywhere as the workers say, the asks always everywhere. */
+static cdl_status visit(point_job *job, const cdl_workers *workers, const char *stage, size_t records,
+                        cdl_error *err)
+{
+    int threads = workers->threads < 1 ? 1 : workers->threads;
     lookup *locals = calloc((size_t)threads, sizeof *locals);
     if (!locals) return cdl_error_out_of_memory(err);
+    cdl_workers w = *workers;
+    if (!job->final) w.everywhere = 0;
     cdl_pool_task task = {.count = job->grid->count, .chunk = 16, .run = visit_points, .shared = job,
                           .locals = locals, .local_size = sizeof *locals, .stage = stage, .records = records};
-    cdl_status st = cdl_pool_run(&task, threads, progress, err);
+    if (job->final) {
+        task.outputs[0] = (cdl_pool_output){job->E, sizeof *job->E};
+        task.outputs[1] = (cdl_pool_output){job->var, sizeof *job->var};
+    }
+    cdl_status st = cdl_pool_run_shared(&task, &w, err);
     for (int t = 0; t < threads; ++t) lookup_release(&locals[t]);
     free(locals);
+    if (st == CDL_OK && !job->final) st = share_asks(workers->ranks, job->ask, job->grid->count, err);
     return st;
 }
 
@@ -517,11 +571,35 @@ typedef struct serve_request {
     const double *floors;
     const cdl_grid *gather_at; /* where records for the points are gathered (the same indices), or NULL: at them */
     int place, seed, passes, own;
-    int threads;
-    const cdl_progress_sink *progress;
+    const cdl_workers *workers;
     const char *stage;
     cdl_icache_stats *stats;
 } serve_request;
+
+/* The points whose stated error, direct and interpolated, is above the
+ * target, in index order, into at[0 .. *count - 1]. With kept results each
+ * rank looks at its block and the ranks exchange what they found. */
+static cdl_status find_alone(const serve_request *q, double floor, size_t *at, size_t *count, cdl_error *err)
+{
+    size_t n = q->grid->count, begin = 0, end = n;
+    cdl_rank_group *group = q->workers->ranks;
+    int kept = !q->workers->everywhere && cdl_rank_group_count(group) > 1;
+    if (kept) cdl_rank_block(n, CDL_RANK_KEEP_ALIGN, group->rank, group->count, &begin, &end);
+    *count = 0;
+    for (size_t i = begin; i < end; ++i) {
+        double least = q->floors ? fmax(floor, q->floors[i]) : floor;
+        double R = fmax(q->E_direct[i] + q->E_indirect[i], least);
+        if (q->var_direct[i] + q->var_indirect[i] > q->ctx->target * q->ctx->target * R * R) at[(*count)++] = i;
+    }
+    if (!kept) return CDL_OK;
+    void *all = NULL;
+    size_t total = 0;
+    cdl_status st = cdl_rank_allgather_list(group, at, *count, sizeof *at, &all, &total, err);
+    if (st == CDL_OK && total) memcpy(at, all, total * sizeof *at);
+    if (st == CDL_OK) *count = total;
+    free(all);
+    return st;
+}
 
 static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
 {
@@ -544,48 +622,44 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
         st = pick(grid, ask, has, box, &at, &count, err);
         if (st == CDL_OK)
             st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->floors, at, count, q->recs, q->tree,
-                             has, &lk, q->threads, q->progress, q->stage, q->stats, err);
+                             has, &lk, q->workers, q->stage, q->stats, err);
     }
     point_job job = {q->ctx, l, q->recs, q->tree, grid, q->E_direct, q->var_direct, 1e-3 * brightest, q->floors,
                      0, 0, q->E_indirect, q->var_indirect, ask};
     for (int pass = 1; st == CDL_OK && q->place && q->passes && pass <= MAX_PASSES; ++pass) {
-        st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
+        st = visit(&job, q->workers, q->stage, q->recs->count, err);
         size_t count = 0;
         if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
         if (st != CDL_OK || count == 0) break;
         q->stats->passes = (size_t)pass;
         st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->floors, at, count, q->recs, q->tree,
-                         has, &lk, q->threads, q->progress, q->stage, q->stats, err);
+                         has, &lk, q->workers, q->stage, q->stats, err);
     }
     /* No point may go unserved (it would read 0 +- 0): the passes take
      * asking points apart from each other and may stop before every point
      * is served; the sweep gives each point still unserved its own record. */
     if (st == CDL_OK && q->place) {
         job.sweep = 1;
-        st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
+        st = visit(&job, q->workers, q->stage, q->recs->count, err);
         job.sweep = 0;
         size_t count = 0;
         if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
         if (st == CDL_OK && count > 0)
             st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->floors, at, count, q->recs, q->tree,
-                             has, &lk, q->threads, q->progress, q->stage, q->stats, err);
+                             has, &lk, q->workers, q->stage, q->stats, err);
     }
     if (st == CDL_OK) {
         job.final = 1;
-        st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
+        st = visit(&job, q->workers, q->stage, q->recs->count, err);
     }
     /* Points still above the target: each gets a record of its own. */
     size_t alone = 0;
-    for (size_t i = 0; st == CDL_OK && q->place && q->own && i < grid->count; ++i) {
-        double least = q->floors ? fmax(job.floor, q->floors[i]) : job.floor;
-        double R = fmax(q->E_direct[i] + q->E_indirect[i], least);
-        if (q->var_direct[i] + q->var_indirect[i] > q->ctx->target * q->ctx->target * R * R) at[alone++] = i;
-    }
+    if (st == CDL_OK && q->place && q->own) st = find_alone(q, job.floor, at, &alone, err);
     if (st == CDL_OK && alone > 0) {
         st = add_own_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->var_direct, job.floor, q->floors, at,
-                             alone, q->recs, q->tree, q->threads, q->progress, q->stage, q->stats, err);
+                             alone, q->recs, q->tree, q->workers, q->stage, q->stats, err);
         q->stats->alone += alone;
-        if (st == CDL_OK) st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
+        if (st == CDL_OK) st = visit(&job, q->workers, q->stage, q->recs->count, err);
     }
     lookup_release(&lk);
     free(at);
@@ -596,11 +670,10 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
 
 cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *grid, size_t grid_index,
                                  const double *E_direct, const double *var_direct, double *E_indirect,
-                                 double *var_indirect, cdl_icache_records *recs, int threads,
-                                 const cdl_progress_sink *progress, const char *stage, cdl_icache_stats *stats,
+                                 double *var_indirect, cdl_icache_records *recs,
+                                 const cdl_workers *workers, const char *stage, cdl_icache_stats *stats,
                                  cdl_error *err)
 {
-    if (threads < 1) threads = 1;
     if (grid->count == 0) return CDL_OK;
     reach_limits l = limits_for(grid_spacing(grid), ctx->target);
     cdl_bounds3 box = cdl_bounds3_empty();
@@ -611,8 +684,8 @@ cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *
     /* Records read from a cache file keep the radii they were made with. */
     for (size_t id = 0; st == CDL_OK && reuse && id < recs->count; ++id)
         st = cdl_record_octree_insert(tree, (uint32_t)id, recs->items[id].p, tree_reach(&l, &recs->items[id]), err);
-    serve_request q = {ctx,     &l,      recs,    tree,     grid, grid_index, E_direct, var_direct, E_indirect,
-                       var_indirect, NULL, NULL, !reuse, !reuse, 1, 1, threads, progress, stage, stats};
+    serve_request q = {ctx,     &l,      recs,    tree,    grid, grid_index, E_direct, var_direct, E_indirect,
+                       var_indirect, NULL, NULL, !reuse, !reuse, 1, 1, workers, stage, stats};
     if (st == CDL_OK) st = serve(&q, box, err);
     stats->records += recs->count;
     cdl_record_octree_release(tree);
@@ -683,8 +756,7 @@ cdl_status cdl_icache_solve_shared(const cdl_icache_context *ctx, cdl_icache_sha
                        before == 0,
                        !target->only_unserved,
                        !target->no_own_records,
-                       target->threads < 1 ? 1 : target->threads,
-                       target->progress,
+                       target->workers,
                        target->stage,
                        target->stats};
     cdl_status st = serve(&q, cache->bounds, err);

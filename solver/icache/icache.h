@@ -73,11 +73,17 @@ typedef struct cdl_icache_stats {
  * 0.03; each point takes its own, solver/direct/.) When `records`
  * holds records (read from a cache file), they are used as they are and
  * none is gathered; otherwise the records made are left in it (the caller
- * releases them). grid_index keys the random numbers. */
+ * releases them). grid_index keys the random numbers.
+ *
+ * On the workers (pool.h): with ranks, every rank must hold every point's
+ * direct light; each gathers its block of each pass's records and every
+ * rank gets them all, in the same order (so every rank's cache is the
+ * same); each interpolates its block of the points, and the final values
+ * are kept by their ranks or shared as `workers` says. */
 cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *grid, size_t grid_index,
                                  const double *E_direct, const double *var_direct, double *E_indirect,
-                                 double *var_indirect, cdl_icache_records *records, int threads,
-                                 const cdl_progress_sink *progress, const char *stage, cdl_icache_stats *stats,
+                                 double *var_indirect, cdl_icache_records *records,
+                                 const cdl_workers *workers, const char *stage, cdl_icache_stats *stats,
                                  cdl_error *err);
 
 void cdl_icache_records_release(cdl_icache_records *records);
@@ -119,8 +125,7 @@ typedef struct cdl_icache_target {
                                          the interpolation states, rather than get a record of their own
                                          (surface maps' probes: their count grows with refinement, and a
                                          record of one's own costs a whole point's paths) */
-    int threads;
-    const cdl_progress_sink *progress;
+    const cdl_workers *workers;       /* threads and ranks (as cdl_icache_solve_grid) */
     const char *stage;
     cdl_icache_stats *stats;          /* records added to it, passes, paths, own records */
 } cdl_icache_target;

@@ -62,10 +62,10 @@ static cdl_status run_direct(cdl_solve_state *state, cdl_grid_job *job, cdl_erro
     cdl_direct_outputs outputs = {gs->ao, gs->ao_stderr, gs->Ez, gs->Esz,
                                   job->on_surface_count ? job->on_surface : NULL};
     state->direct_stats.routes = state->routes;
+    cdl_workers workers = cdl_solve_workers(state, cdl_grid_job_direct_everywhere(state, job));
     double t0 = cdl_pool_now_seconds();
     st = cdl_direct_solve_grid(direct, state->strategies, &gs->grid, (size_t)job->plan->key, gs->E_direct,
-                               job->var_direct, state->threads, &state->options.progress, &outputs, stage,
-                               &state->direct_stats, err);
+                               job->var_direct, &workers, &outputs, stage, &state->direct_stats, err);
     state->direct_stats.routes = NULL;
     state->out->compute_seconds += cdl_pool_now_seconds() - t0;
     return st;

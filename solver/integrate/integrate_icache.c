@@ -23,6 +23,7 @@ static cdl_status run_icache(cdl_solve_state *state, cdl_grid_job *job, cdl_erro
     cdl_grid_job_stage(job, "interreflection (records)", stage, sizeof stage);
     cdl_icache_stats before = state->icache_stats;
     size_t preloaded = records->count;
+    cdl_workers workers = cdl_solve_workers(state, job->everywhere);
     double t0 = cdl_pool_now_seconds();
     cdl_status st;
     if (state->shared_cache) {
@@ -33,15 +34,14 @@ static cdl_status run_icache(cdl_solve_state *state, cdl_grid_job *job, cdl_erro
                                     .var_direct = job->var_direct,
                                     .E_indirect = gs->E_indirect,
                                     .var_indirect = job->var_indirect,
-                                    .threads = state->threads,
-                                    .progress = &state->options.progress,
+                                    .workers = &workers,
                                     .stage = stage,
                                     .stats = &state->icache_stats};
         st = cdl_icache_solve_shared(&state->icache, state->shared_cache, &target, err);
     } else {
         st = cdl_icache_solve_grid(&state->icache, &gs->grid, (size_t)job->plan->key, gs->E_direct, job->var_direct,
-                                   gs->E_indirect, job->var_indirect, records, state->threads,
-                                   &state->options.progress, stage, &state->icache_stats, err);
+                                   gs->E_indirect, job->var_indirect, records, &workers, stage,
+                                   &state->icache_stats, err);
     }
     state->out->compute_seconds += cdl_pool_now_seconds() - t0;
     state->out->records_gathered += records->count - preloaded;

@@ -143,6 +143,8 @@ static cdl_status cached_indirect(cdl_solve_state *state, const surface_field *f
          * within its stated error without). */
         cdl_icache_context ctx = state->icache;
         if (g % 2) ctx.gradients = 0;
+        /* Every rank refines the meshes: each needs every point's light. */
+        cdl_workers workers = cdl_solve_workers(state, 1);
         cdl_icache_target t = {.points = &grid,
                                .spacing = f->spacing,
                                .key = key + (size_t)g,
@@ -154,8 +156,7 @@ static cdl_status cached_indirect(cdl_solve_state *state, const surface_field *f
                                .gather_at = &gather,
                                .only_unserved = g >= 2,
                                .no_own_records = 1,
-                               .threads = state->threads,
-                               .progress = &state->options.progress,
+                               .workers = &workers,
                                .stage = stage,
                                .stats = &state->icache_stats};
         size_t before = cdl_icache_shared_count(state->shared_cache);
@@ -199,15 +200,16 @@ static cdl_status field(void *user, const cdl_field_probe *probes, size_t count,
     snprintf(stage, sizeof stage, "surface maps: round %zu (%zu points)", f->batch + 1, count);
     ++f->batch;
     cdl_direct_plan_grid(&state->direct, points, count, state->strategies);
+    /* Every rank refines the meshes: each needs every point's light. */
+    cdl_workers workers = cdl_solve_workers(state, 1);
     double t0 = cdl_pool_now_seconds();
-    cdl_status st = cdl_direct_solve_grid(&state->direct, state->strategies, &grid, key, E_dir, var_dir,
-                                          state->threads, &state->options.progress, NULL, stage, &state->direct_stats,
-                                          err);
+    cdl_status st = cdl_direct_solve_grid(&state->direct, state->strategies, &grid, key, E_dir, var_dir, &workers,
+                                          NULL, stage, &state->direct_stats, err);
     if (st == CDL_OK && state->surface_method == CDL_METHOD_ICACHE)
         st = cached_indirect(state, f, probes, count, points, E_dir, var_dir, E_ind, var_ind, key, stage, err);
     else if (st == CDL_OK && state->surface_method == CDL_METHOD_PATHTRACE)
-        st = cdl_pathtrace_solve_grid(&state->pathtrace, &grid, key, E_dir, var_dir, E_ind, var_ind, state->threads,
-                                      &state->options.progress, stage, &state->pathtrace_stats, err);
+        st = cdl_pathtrace_solve_grid(&state->pathtrace, &grid, key, E_dir, var_dir, E_ind, var_ind, &workers, stage,
+                                      &state->pathtrace_stats, err);
 
     state->out->compute_seconds += cdl_pool_now_seconds() - t0;
     for (size_t i = 0; st == CDL_OK && i < count; ++i) {

@@ -20,11 +20,12 @@ static cdl_status run_vertical(cdl_solve_state *state, cdl_grid_job *job, cdl_er
     char stage[160];
     cdl_grid_job_stage(job, "cylindrical illuminance", stage, sizeof stage);
     cdl_path_stats before = state->vertical_stats;
+    cdl_workers workers = cdl_solve_workers(state, job->everywhere);
     double t0 = cdl_pool_now_seconds();
     cdl_status st = cdl_vertical_sampled_grid(&state->vertical, &gs->grid, (size_t)job->plan->key,
                                               job->on_surface_count ? job->on_surface : NULL, gs->Ez, gs->Esz,
-                                              gs->Ez_stderr, gs->Esz_stderr, state->threads,
-                                              &state->options.progress, stage, &state->vertical_stats, err);
+                                              gs->Ez_stderr, gs->Esz_stderr, &workers, stage,
+                                              &state->vertical_stats, err);
     state->out->compute_seconds += cdl_pool_now_seconds() - t0;
     job->vertical_rays = state->vertical_stats.rays - before.rays + state->vertical_stats.direct.rays -
                          before.direct.rays;

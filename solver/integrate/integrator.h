@@ -75,6 +75,7 @@ typedef struct cdl_solve_state {
     const char *reflector;            /* the first surface that reflects (its JSON path), NULL when none */
     double reflector_rho;
     int threads;
+    cdl_rank_group *ranks;            /* the ranks sharing the solve (rank_group.h), NULL: this process alone */
 
     cdl_scene_geometry *geometry;     /* owned */
     size_t pieces;                    /* its surface pieces (0: nothing can occlude or reflect) */
@@ -129,6 +130,9 @@ typedef struct cdl_solve_state {
 typedef struct cdl_grid_job {
     size_t index;                     /* in the scene's grids (the observers' job: grid_count) */
     int observers;                    /* 1: the observers' job (glare) */
+    int everywhere;                   /* with ranks: 1: every rank holds every point's results (the glare
+                                       * integrator needs them); 0: each keeps its block's until the job
+                                       * ends and rank 0 gathers them */
     const cdl_direct_context *direct; /* the direct light it takes: the state's, or the background's */
     const cdl_grid_spec *spec;
     cdl_grid_solution *gs;            /* its results (borrowed from the solution) */
@@ -166,6 +170,15 @@ typedef struct cdl_solve_integrator {
 } cdl_solve_integrator;
 
 extern const cdl_solve_integrator cdl_integrator_surfaces; /* integrate_surfaces.c */
+
+/* The workers of a task of the solve: its threads and ranks, the results
+ * everywhere or kept (pool.h). */
+cdl_workers cdl_solve_workers(const cdl_solve_state *state, int everywhere);
+
+/* Whether the job's direct light goes to every rank: where the job's
+ * results do, and where the irradiance cache follows (it gathers records
+ * at any point, with that point's direct light). */
+int cdl_grid_job_direct_everywhere(const cdl_solve_state *state, const cdl_grid_job *job);
 
 /* "grid NAME" or "grid NAME: WHAT", the stage a progress report names. */
 void cdl_grid_job_stage(const cdl_grid_job *job, const char *what, char *out, size_t size);

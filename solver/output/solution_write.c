@@ -118,6 +118,32 @@ static void add_surfaces(cJSON *root, const cdl_scene *scene, const cdl_solution
     }
 }
 
+/* "ranks": the processes that shared the solve (solve_ranks.h), each with
+ * its threads, seconds, seconds and CPU seconds computing its share, CPU
+ * seconds in all, bytes received and peak resident memory. */
+static void add_ranks(cJSON *root, const cdl_solution *sol)
+{
+    cJSON *ranks = cJSON_AddObjectToObject(root, "ranks");
+    size_t n = sol->rank_count;
+    cJSON_AddNumberToObject(ranks, "count", n ? (double)n : 1.0);
+    cJSON *threads = cJSON_AddArrayToObject(ranks, "threads");
+    cJSON *seconds = cJSON_AddArrayToObject(ranks, "seconds");
+    cJSON *work = cJSON_AddArrayToObject(ranks, "work_seconds");
+    cJSON *work_cpu = cJSON_AddArrayToObject(ranks, "work_cpu_seconds");
+    cJSON *cpu = cJSON_AddArrayToObject(ranks, "cpu_seconds");
+    cJSON *bytes = cJSON_AddArrayToObject(ranks, "bytes_received");
+    cJSON *rss = cJSON_AddArrayToObject(ranks, "peak_rss_bytes");
+    for (size_t r = 0; r < n; ++r) {
+        cJSON_AddItemToArray(threads, cJSON_CreateNumber((double)sol->ranks[r].threads));
+        cJSON_AddItemToArray(seconds, cJSON_CreateNumber(sol->ranks[r].seconds));
+        cJSON_AddItemToArray(work, cJSON_CreateNumber(sol->ranks[r].work_seconds));
+        cJSON_AddItemToArray(work_cpu, cJSON_CreateNumber(sol->ranks[r].work_cpu_seconds));
+        cJSON_AddItemToArray(cpu, cJSON_CreateNumber(sol->ranks[r].cpu_seconds));
+        cJSON_AddItemToArray(bytes, cJSON_CreateNumber((double)sol->ranks[r].bytes_received));
+        cJSON_AddItemToArray(rss, cJSON_CreateNumber((double)sol->ranks[r].peak_rss_bytes));
+    }
+}
+
 static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol, const cdl_grid_stats *stats,
                                 const char *path, cdl_error *err)
 {
@@ -220,6 +246,7 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
     cJSON_AddNumberToObject(set, "direct_samples", sol->settings.direct_samples);
     cJSON_AddNumberToObject(set, "ao_samples", sol->settings.ao_samples);
     cJSON_AddNumberToObject(root, "seconds", sol->seconds);
+    add_ranks(root, sol);
     cJSON_AddNumberToObject(root, "rays", (double)sol->rays);
     cJSON *plan = cJSON_Parse(sol->plan_json ? sol->plan_json : "{}");
     if (plan) cJSON_AddItemToObject(root, "plan", plan);

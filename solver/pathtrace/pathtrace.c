@@ -111,10 +111,10 @@ static cdl_status trace_points(void *shared, void *local, size_t begin, size_t e
 
 cdl_status cdl_pathtrace_solve_grid(const cdl_pathtrace_context *ctx, const cdl_grid *grid, size_t grid_index,
                                     const double *E_direct, const double *var_direct, double *E_indirect,
-                                    double *var_indirect, int threads, const cdl_progress_sink *progress,
-                                    const char *stage, cdl_path_stats *stats, cdl_error *err)
+                                    double *var_indirect, const cdl_workers *workers, const char *stage,
+                                    cdl_path_stats *stats, cdl_error *err)
 {
-    if (threads < 1) threads = 1;
+    int threads = workers->threads < 1 ? 1 : workers->threads;
     cdl_path_stats *locals = calloc((size_t)threads, sizeof *locals);
     cdl_path_tally *tallies = calloc(grid->count ? grid->count : 1, sizeof *tallies);
     if (!locals || !tallies) {
@@ -124,11 +124,27 @@ cdl_status cdl_pathtrace_solve_grid(const cdl_pathtrace_context *ctx, const cdl_
     }
     grid_job job = {ctx, grid, grid_index, E_direct, var_direct, E_indirect, var_indirect, tallies};
     /* Points differ a hundredfold in cost: small chunks keep threads busy. */
-    cdl_pool_task task = {.count = grid->count, .chunk = 2, .run = trace_points, .shared = &job,
-                          .locals = locals, .local_size = sizeof *locals, .stage = stage};
-    cdl_status st = cdl_pool_run(&task, threads, progress, err);
-    for (int t = 0; t < threads; ++t) cdl_path_stats_add(stats, &locals[t]);
-    cdl_path_stats_add_tallies(stats, tallies, grid->count);
+    cdl_pool_task task = {.count = grid->count,
+                          .chunk = 2,
+                          .run = trace_points,
+                          .shared = &job,
+                          .locals = locals,
+                          .local_size = sizeof *locals,
+                          .stage = stage,
+                          .outputs = {{E_indirect, sizeof *E_indirect},
+                                      {var_indirect, sizeof *var_indirect},
+                                      {tallies, sizeof *tallies}}};
+    cdl_status st = cdl_pool_run_shared(&task, workers, err);
+    cdl_path_stats sum = {0};
+    for (int t = 0; t < threads; ++t) cdl_path_stats_add(&sum, &locals[t]);
+    if (st == CDL_OK) st = cdl_path_stats_share(workers->ranks, &sum, err);
+    /* Kept results: rank 0, which reports the stats, sums every point's tallies. */
+    if (st == CDL_OK && !workers->everywhere)
+        st = cdl_rank_gather_items(workers->ranks, tallies, sizeof *tallies, grid->count, CDL_RANK_KEEP_ALIGN, err);
+    if (st == CDL_OK) {
+        cdl_path_stats_add(stats, &sum);
+        cdl_path_stats_add_tallies(stats, tallies, grid->count);
+    }
     free(locals);
     free(tallies);
     return st;

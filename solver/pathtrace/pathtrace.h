@@ -33,11 +33,13 @@ typedef struct cdl_pathtrace_context {
 
 /* The interreflected illuminance at every point of a grid, and its
  * variance, given the points' direct illuminance and its variance (their
- * sum is held to the target). grid_index keys the random numbers. */
+ * sum is held to the target), on the workers (pool.h; with ranks kept, a
+ * rank needs only its block's direct light, and rank 0's stats get every
+ * point's tallies). grid_index keys the random numbers. */
 cdl_status cdl_pathtrace_solve_grid(const cdl_pathtrace_context *ctx, const cdl_grid *grid, size_t grid_index,
                                     const double *E_direct, const double *var_direct, double *E_indirect,
-                                    double *var_indirect, int threads, const cdl_progress_sink *progress,
-                                    const char *stage, cdl_path_stats *stats, cdl_error *err);
+                                    double *var_indirect, const cdl_workers *workers, const char *stage,
+                                    cdl_path_stats *stats, cdl_error *err);
 
 /* The same for one point (p, unit n) with stream `stream`; adds to *stats
  * and its paths' sums to *tally. */

@@ -80,6 +80,25 @@ void cdl_path_stats_add(cdl_path_stats *to, const cdl_path_stats *from)
     to->direct.sampled_evaluations += from->direct.sampled_evaluations;
 }
 
+cdl_status cdl_path_stats_share(cdl_rank_group *group, cdl_path_stats *s, cdl_error *err)
+{
+    if (cdl_rank_group_count(group) == 1) return CDL_OK;
+    uint64_t sum[6] = {s->paths, s->vertices, s->rays, s->direct.rays, s->direct.exact_evaluations,
+                       s->direct.sampled_evaluations};
+    uint64_t longest = s->longest;
+    cdl_status st = cdl_rank_sum_u64(group, sum, 6, err);
+    if (st == CDL_OK) st = cdl_rank_max_u64(group, &longest, 1, err);
+    if (st != CDL_OK) return st;
+    s->paths = sum[0];
+    s->vertices = sum[1];
+    s->rays = sum[2];
+    s->direct.rays = sum[3];
+    s->direct.exact_evaluations = sum[4];
+    s->direct.sampled_evaluations = sum[5];
+    s->longest = longest;
+    return CDL_OK;
+}
+
 void cdl_path_stats_add_tallies(cdl_path_stats *stats, const cdl_path_tally *tallies, size_t count)
 {
     for (size_t i = 0; i < count; ++i) {

@@ -28,6 +28,7 @@
 #include "base/rng.h"
 #include "radiometry/vec3.h"
 #include "solver/direct/direct.h"
+#include "solver/rank_group.h"
 #include "solver/scene/scene_geometry.h"
 
 /* Most reflections a path follows under "auto": the Russian roulette ends
@@ -86,6 +87,12 @@ void cdl_transport_path(const cdl_path_context *ctx, cdl_rng_key key, cdl_vec3 p
 
 /* to += from */
 void cdl_path_stats_add(cdl_path_stats *to, const cdl_path_stats *from);
+
+/* s's counts added up (its longest path the longest) over the ranks of
+ * `group` (a collective; nothing without one). Its floating-point sums are
+ * left alone: they come from per-item tallies, added in item order once
+ * the ranks have exchanged them. */
+cdl_status cdl_path_stats_share(cdl_rank_group *group, cdl_path_stats *s, cdl_error *err);
 
 /* The fraction of the interreflected light a bounce limit left out,
  * estimated from the stats' last two reflections (0 when nothing was cut). */

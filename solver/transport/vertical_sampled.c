@@ -276,18 +276,29 @@ static cdl_status sample_points(void *shared, void *local, size_t begin, size_t 
 
 cdl_status cdl_vertical_sampled_grid(const cdl_vertical_context *ctx, const cdl_grid *grid, size_t grid_index,
                                      const unsigned char *on_surface, double *Ez, double *Esz, double *Ez_stderr,
-                                     double *Esz_stderr, int threads,
-                                     const cdl_progress_sink *progress, const char *stage, cdl_path_stats *stats,
-                                     cdl_error *err)
+                                     double *Esz_stderr, const cdl_workers *workers, const char *stage,
+                                     cdl_path_stats *stats, cdl_error *err)
 {
-    if (threads < 1) threads = 1;
+    int threads = workers->threads < 1 ? 1 : workers->threads;
     cdl_path_stats *locals = calloc((size_t)threads, sizeof *locals);
     if (!locals) return cdl_error_out_of_memory(err);
     grid_job job = {ctx, grid, grid_index, Ez, Esz, Ez_stderr, Esz_stderr, on_surface};
-    cdl_pool_task task = {.count = grid->count, .chunk = 2, .run = sample_points, .shared = &job,
-                          .locals = locals, .local_size = sizeof *locals, .stage = stage};
-    cdl_status st = cdl_pool_run(&task, threads, progress, err);
-    for (int t = 0; t < threads; ++t) cdl_path_stats_add(stats, &locals[t]);
+    cdl_pool_task task = {.count = grid->count,
+                          .chunk = 2,
+                          .run = sample_points,
+                          .shared = &job,
+                          .locals = locals,
+                          .local_size = sizeof *locals,
+                          .stage = stage,
+                          .outputs = {{Ez, sizeof *Ez},
+                                      {Esz, sizeof *Esz},
+                                      {Ez_stderr, sizeof *Ez_stderr},
+                                      {Esz_stderr, sizeof *Esz_stderr}}};
+    cdl_status st = cdl_pool_run_shared(&task, workers, err);
+    cdl_path_stats sum = {0};
+    for (int t = 0; t < threads; ++t) cdl_path_stats_add(&sum, &locals[t]);
+    if (st == CDL_OK) st = cdl_path_stats_share(workers->ranks, &sum, err);
+    if (st == CDL_OK) cdl_path_stats_add(stats, &sum);
     free(locals);
     return st;
 }

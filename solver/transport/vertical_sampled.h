@@ -33,13 +33,13 @@ void cdl_vertical_sampled_point(const cdl_vertical_context *ctx, uint64_t stream
                                 cdl_path_stats *stats);
 
 /* Every point of a grid: Ez and Esz (either may be NULL) gain the sampled
- * part, Ez_stderr and Esz_stderr (with them) receive its standard error.
- * Semicylinders face each point's normal's horizontal part. on_surface
- * (NULL: no point does): per point, 1 where it lies on a surface. */
+ * part, Ez_stderr and Esz_stderr (with them) receive its standard error,
+ * on the workers (pool.h). Semicylinders face each point's normal's
+ * horizontal part. on_surface (NULL: no point does): per point, 1 where it
+ * lies on a surface. Counts over all ranks are added to *stats. */
 cdl_status cdl_vertical_sampled_grid(const cdl_vertical_context *ctx, const cdl_grid *grid, size_t grid_index,
                                      const unsigned char *on_surface, double *Ez, double *Esz, double *Ez_stderr,
-                                     double *Esz_stderr, int threads,
-                                     const cdl_progress_sink *progress, const char *stage, cdl_path_stats *stats,
-                                     cdl_error *err);
+                                     double *Esz_stderr, const cdl_workers *workers, const char *stage,
+                                     cdl_path_stats *stats, cdl_error *err);
 
 #endif

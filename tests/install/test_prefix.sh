@@ -34,10 +34,13 @@ for f in CandelaConfig.cmake CandelaConfigVersion.cmake CandelaTargets.cmake; do
   check "CMake package: $f" '[ -f "$L/cmake/Candela/$f" ]'
 done
 
-# The headers installed are the umbrella and exactly those it includes.
+# The headers installed are the umbrella and exactly those it includes,
+# and beside it the MPI glue (candela_mpi.h: header-only, it needs mpi.h,
+# which the umbrella must not).
 inc=$P/include/candela
 check "umbrella candela/candela.h" '[ -f "$inc/candela.h" ]'
-installed=$(cd "$inc" && find . -type f | sed 's|^\./||' | grep -vx candela.h | sort)
+check "candela/candela_mpi.h" '[ -f "$inc/candela_mpi.h" ]'
+installed=$(cd "$inc" && find . -type f | sed 's|^\./||' | grep -vx -e candela.h -e candela_mpi.h | sort)
 declared=$(sed -n 's/^#include "\([^"]*\)".*/\1/p' "$CANDELA_SOURCE_DIR/include/candela/candela.h" | sort)
 check "installed headers = the umbrella's includes" '[ "$installed" = "$declared" ]'
 [ "$installed" = "$declared" ] || diff <(echo "$declared") <(echo "$installed")

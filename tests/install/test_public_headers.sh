@@ -34,8 +34,22 @@ while IFS= read -r h; do
   compiles_cxx "$h"; st=$?
   [ $st -eq 0 ] || cat "$tmp/alone.err"
   check "$h compiles alone as C++17 (-Wpedantic)" '[ $st -eq 0 ]'
-done < <(cd "$inc/candela" && find . -name '*.h' | sed 's|^\./||' | sort)
+done < <(cd "$inc/candela" && find . -name '*.h' ! -name candela_mpi.h | sed 's|^\./||' | sort)
 check "headers found ($count)" '[ $count -ge 10 ]'
+
+# The MPI glue needs mpi.h: with MPI's compiler flags and pkg-config's include
+# flags, in C and C++.
+if [ -n "${CANDELA_MPIEXEC:-}" ] && command -v mpicc > /dev/null; then
+  printf '#include <candela/candela_mpi.h>\nint main(void) { return 0; }\n' > "$tmp/mpi.c"
+  mpicc -std=c11 -Wall -Wextra -Wpedantic -Werror -fsyntax-only -I"$inc" -I"$inc/candela" "$tmp/mpi.c"; st=$?
+  check "<candela/candela_mpi.h> compiles with mpicc (C11, -Wpedantic)" '[ $st -eq 0 ]'
+  cp "$tmp/mpi.c" "$tmp/mpi.cpp"
+  # (without Open MPI's deprecated C++ bindings, whose own casts -Wextra refuses)
+  # shellcheck disable=SC2046
+  "$CXX" -std=c++17 -Wall -Wextra -Werror -fsyntax-only -DOMPI_SKIP_MPICXX -DMPICH_SKIP_MPICXX $(mpicc --showme:compile) \
+    -I"$inc" -I"$inc/candela" "$tmp/mpi.cpp"; st=$?
+  check "<candela/candela_mpi.h> compiles as C++17" '[ $st -eq 0 ]'
+fi
 
 printf '#include <candela/candela.h>\nint main(void) { return cdl_abi_version() > 0 ? 0 : 1; }\n' > "$tmp/umbrella.c"
 "$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -fsyntax-only -I"$inc" -I"$inc/candela" "$tmp/umbrella.c"; st=$?

@@ -20,19 +20,10 @@
 source "$(dirname "$0")/harness.sh"
 cd "$tmp" || exit 1
 
-# 24 points spread over the wall (a Fibonacci lattice), 0.999 m from the
-# centre, normals towards it.
-points=$(awk 'BEGIN { n = 24; pi = atan2(0, -1); R = 0.999
-  for (i = 0; i < n; ++i) {
-    z = 1 - 2 * (i + 0.5) / n; r = sqrt(1 - z * z); ph = i * pi * (3 - sqrt(5))
-    x = r * cos(ph); y = r * sin(ph)
-    printf "%s{\"p\": [%.9f, %.9f, %.9f], \"n\": [%.9f, %.9f, %.9f]}", (i ? ", " : ""), R*x, R*y, R*z, -x, -y, -z
-  } }')
-scene() { # reflectance
-  printf '{"version": 1,\n "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "inward": true, "reflectance": %s}],\n' "$1"
-  printf ' "luminaires": [{"type": "point", "position": [0, 0, 0], "flux_lm": 1000}],\n'
-  printf ' "grids": [{"name": "wall", "type": "points", "points": [%s]}]}\n' "$points"
-}
+# 24 points spread over the wall.
+source "$(dirname "$0")/sphere_scene.sh"
+sphere_points 24
+scene() { sphere_scene "$1"; }
 scene 0.5 > sphere.json
 
 "$CANDELA" bench sphere.json -o B --quiet > out1.txt 2> err1.txt; st=$?

@@ -58,7 +58,7 @@ static int solve(cdl_scene *scene, cdl_method method, double target, int threads
 {
     cdl_error err;
     cdl_error_clear(&err);
-    if (cdl_bench_solve_rung(scene, method, target, threads, sol, &err) != CDL_OK) {
+    if (cdl_bench_solve_rung(scene, method, target, threads, NULL, sol, &err) != CDL_OK) {
         fprintf(stderr, "bench_icache: %s\n", err.message);
         return 1;
     }
