@@ -92,6 +92,32 @@ static cdl_status load_scene(cdl_report_input *in, cdl_error *err)
     return CDL_OK;
 }
 
+/* The scene as it is now against what the solve recorded it depended on
+ * (scene_inputs.h): a changed part makes every number in the folder stale. */
+static cdl_status check_inputs(const cdl_report_input *in, cdl_error *err)
+{
+    char where[512];
+    snprintf(where, sizeof where, "%s: inputs", in->summary_path);
+    cdl_scene_inputs then, now;
+    cdl_status st = cdl_scene_inputs_from_json(member(in->summary, "inputs"), where, &then, err);
+    if (st != CDL_OK) return st;
+    st = cdl_scene_inputs_collect(in->scene, &now, err);
+    if (st != CDL_OK) {
+        cdl_scene_inputs_release(&then);
+        return st;
+    }
+    char changes[1024];
+    size_t n = cdl_scene_inputs_describe_changes(&then, &now, changes, sizeof changes);
+    if (n > 0 || cdl_scene_inputs_hash(&then) != cdl_scene_inputs_hash(&now))
+        st = cdl_error_set(err, CDL_ERR_INPUT,
+                           "%s: stale: the scene %s changed since the solve: %s (its results no longer describe it: "
+                           "solve again)",
+                           in->summary_path, in->scene->path, n > 0 ? changes : "its parts differ");
+    cdl_scene_inputs_release(&then);
+    cdl_scene_inputs_release(&now);
+    return st;
+}
+
 /* ---- the grids -------------------------------------------------------------------- */
 
 static cdl_status summary_grid_number(const cdl_report_input *in, const cJSON *o, const char *grid, const char *key,
@@ -374,6 +400,7 @@ cdl_status cdl_report_input_read(const char *out_dir, const char *requirements_p
     cdl_status st = in->out_dir && in->summary_path ? CDL_OK : cdl_error_out_of_memory(err);
     if (st == CDL_OK) st = read_summary(in, err);
     if (st == CDL_OK) st = load_scene(in, err);
+    if (st == CDL_OK) st = check_inputs(in, err);
     if (st == CDL_OK) st = read_grids(in, err);
     if (st == CDL_OK && requirements_path) {
         in->requirements_path = cdl_string_copy(requirements_path);
