@@ -61,7 +61,7 @@ static cdl_status make_image(cdl_grid_map *m, cdl_error *err)
         free(rgb);
         return cdl_error_out_of_memory(err);
     }
-    for (size_t i = 0; i < n; ++i) t[i] = cdl_lux_scale_position(&m->scale, cdl_lux(m->grid->E[i]));
+    for (size_t i = 0; i < n; ++i) t[i] = cdl_lux_scale_position(&m->scale, cdl_lux(m->field->values[i]));
     for (int k = 0; k < 256; ++k) t[n + (size_t)k] = k / 255.0;
     cdl_display_transform *view = NULL;
     cdl_status st = cdl_display_transform_open(cdl_default_ocio_config(), "linear", "sRGB", "False colour", &view, err);
@@ -99,22 +99,23 @@ static cdl_status make_image(cdl_grid_map *m, cdl_error *err)
 
 static cdl_status trace_contours(cdl_grid_map *m, cdl_error *err)
 {
-    m->level_count = cdl_contour_levels(m->grid->Emin, m->grid->Emax, m->levels, CDL_GRID_MAP_MAX_LEVELS);
+    m->level_count = cdl_contour_levels(m->field->min, m->field->max, m->levels, CDL_GRID_MAP_MAX_LEVELS);
     cdl_status st = CDL_OK;
     for (size_t k = 0; k < m->level_count && st == CDL_OK; ++k)
-        st = cdl_contour_trace_grid(&m->grid->grid, m->grid->E, m->levels[k], &m->segments[k], &m->segment_count[k],
-                                    err);
+        st = cdl_contour_trace_grid(&m->grid->grid, m->field->values, m->levels[k], &m->segments[k],
+                                    &m->segment_count[k], err);
     return st;
 }
 
 cdl_status cdl_grid_map_prepare(cdl_grid_map *m, const cdl_report_input *input, const cdl_report_grid *grid,
-                                cdl_error *err)
+                                size_t field, cdl_error *err)
 {
     memset(m, 0, sizeof *m);
     m->input = input;
     m->grid = grid;
+    m->field = &grid->fields[field];
     const cdl_grid *g = &grid->grid;
-    m->scale = cdl_lux_scale_linear_for_values(grid->E, g->count);
+    m->scale = cdl_lux_scale_linear_for_values(m->field->values, g->count);
     double w_m = g->raster_width * g->pixel_width_m, h_m = g->raster_height * g->pixel_height_m;
     m->metres_to_points = fmin(MAP_MAX_W / w_m, MAP_MAX_H / h_m);
     m->map_x = MAP_LEFT;
@@ -123,7 +124,13 @@ cdl_status cdl_grid_map_prepare(cdl_grid_map *m, const cdl_report_input *input, 
     m->map_h = h_m * m->metres_to_points;
     m->width = m->map_x + m->map_w + LEGEND_GAP + LEGEND_W + LEGEND_LABELS_W;
     m->height = m->map_y + fmax(m->map_h, LEGEND_MIN_H) + BELOW_MAP;
-    snprintf(m->title, sizeof m->title, "%s: illuminance E in lx, isolux lines, plan and luminaires", grid->spec->name);
+    const cdl_report_field *f = m->field;
+    if (f->unit[0])
+        snprintf(m->title, sizeof m->title, "%s: %s %s in %s, %s lines, plan and luminaires", grid->spec->name, f->what,
+                 f->symbol, f->unit, strcmp(f->unit, "lx") == 0 ? "isolux" : "contour");
+    else
+        snprintf(m->title, sizeof m->title, "%s: %s %s, contour lines, plan and luminaires", grid->spec->name, f->what,
+                 f->symbol);
     cdl_status st = make_image(m, err);
     if (st == CDL_OK) st = trace_contours(m, err);
     if (st != CDL_OK) cdl_grid_map_release(m);
@@ -297,7 +304,7 @@ static void draw_contours(cairo_t *cr, const cdl_grid_map *m)
         double x, y;
         to_page(m, 0.5 * (seg->x0 + seg->x1), 0.5 * (seg->y0 + seg->y1), &x, &y);
         char label[32];
-        snprintf(label, sizeof label, "%g lx", m->levels[k]);
+        snprintf(label, sizeof label, "%g%s%s", m->levels[k], m->field->unit[0] ? " " : "", m->field->unit);
         boxed_label(cr, x, y, label, 8.0);
     }
     cairo_restore(cr);
@@ -319,7 +326,7 @@ static void draw_extreme(cairo_t *cr, const cdl_grid_map *m, size_t index, const
     cairo_stroke(cr);
     char v[32], label[64];
     cdl_report_format(v, sizeof v, value, u);
-    snprintf(label, sizeof label, "%s %s lx", what, v);
+    snprintf(label, sizeof label, "%s %s%s%s", what, v, m->field->unit[0] ? " " : "", m->field->unit);
     /* beside the mark, inside the map where there is room */
     double lx = x + 30.0 > m->map_x + m->map_w - 20.0 ? x - 32.0 : x + 32.0;
     double ly = y - 9.0 < m->map_y + 6.0 ? y + 9.0 : y - 9.0;
@@ -350,9 +357,13 @@ static void draw_legend(cairo_t *cr, const cdl_grid_map *m)
         cairo_move_to(cr, x + LEGEND_W, ty);
         cairo_line_to(cr, x + LEGEND_W + 4.0, ty);
         cairo_stroke(cr);
-        char label[48], v[40];
+        /* the scale's round value ("480 lx", "12.5k lx") in the quantity's unit */
+        char label[64], v[40];
         cdl_lux_scale_value_label(lx, v, sizeof v);
-        snprintf(label, sizeof label, "%s%s", k == 0 && s->clipped ? "<=" : "", v);
+        size_t n = strlen(v);
+        if (n > 3 && strcmp(v + n - 3, " lx") == 0) v[n - 3] = '\0';
+        snprintf(label, sizeof label, "%s%s%s%s", k == 0 && s->clipped ? "<=" : "", v, m->field->unit[0] ? " " : "",
+                 m->field->unit);
         cdl_text_draw(cr, x + LEGEND_W + 6.0, ty - 5.5, label, &small);
     }
 }
@@ -418,9 +429,9 @@ static void draw(cairo_t *cr, const void *user)
     cairo_restore(cr);
     draw_contours(cr, m);
     draw_plan(cr, m);
-    double r_max = m->grid->stderr_max_rel;
-    draw_extreme(cr, m, m->grid->min_index, "min", m->grid->Emin, m->grid->Emin * r_max);
-    draw_extreme(cr, m, m->grid->max_index, "max", m->grid->Emax, m->grid->Emax * r_max);
+    const cdl_report_field *f = m->field;
+    draw_extreme(cr, m, f->min_index, "min", f->min, f->min * f->stderr_max_rel);
+    draw_extreme(cr, m, f->max_index, "max", f->max, f->max * f->stderr_max_rel);
     draw_frame_and_scale(cr, m);
     draw_legend(cr, m);
     cairo_restore(cr);

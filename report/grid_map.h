@@ -29,6 +29,7 @@
 typedef struct cdl_grid_map {
     const cdl_report_input *input;
     const cdl_report_grid *grid;
+    const cdl_report_field *field;  /* the quantity shown: grid->fields[k] */
     cdl_lux_scale scale;
     cairo_surface_t *image;        /* the false colours, each raster pixel `zoom` x `zoom` */
     int zoom;
@@ -44,8 +45,9 @@ typedef struct cdl_grid_map {
     char title[160];
 } cdl_grid_map;
 
+/* The map of grid->fields[field] (0: E). */
 cdl_status cdl_grid_map_prepare(cdl_grid_map *map, const cdl_report_input *input, const cdl_report_grid *grid,
-                                cdl_error *err);
+                                size_t field, cdl_error *err);
 cdl_figure cdl_grid_map_figure(const cdl_grid_map *map);
 void cdl_grid_map_release(cdl_grid_map *map);
 
