@@ -23,7 +23,11 @@
 #define LEGEND_W 14.0
 #define LEGEND_MIN_H 160.0
 #define LEGEND_LABELS_W 70.0
-#define BELOW_MAP 62.0 /* the scale bar and two lines of key */
+/* Below the map: the scale bar, then the key (two lines), which starts
+ * below the legend too where that reaches lower than the map. */
+#define KEY_BELOW_MAP 24.0
+#define KEY_BELOW_LEGEND 8.0
+#define KEY_H 30.0
 /* The image: each raster pixel drawn as zoom x zoom pixels, zoom enough for
  * about 800 pixels on the long side (sharp edges in any viewer). */
 #define IMAGE_LONG_SIDE 800
@@ -216,7 +220,7 @@ cdl_status cdl_grid_map_prepare(cdl_grid_map *m, const cdl_report_input *input, 
     m->map_w = w_m * m->metres_to_points;
     m->map_h = h_m * m->metres_to_points;
     m->width = m->map_x + m->map_w + LEGEND_GAP + LEGEND_W + LEGEND_LABELS_W;
-    m->height = m->map_y + fmax(m->map_h, LEGEND_MIN_H) + BELOW_MAP;
+    m->height = m->map_y + fmax(m->map_h + KEY_BELOW_MAP, LEGEND_MIN_H + KEY_BELOW_LEGEND) + KEY_H;
     const cdl_report_field *f = m->field;
     if (f->unit[0])
         snprintf(m->title, sizeof m->title, "%s: %s %s in %s, %s lines, plan and luminaires", grid->spec->name, f->what,
@@ -491,7 +495,8 @@ static void draw_frame_and_scale(cairo_t *cr, const cdl_grid_map *m)
              "plan seen along -normal: %s to the right, %s up; luminaires as their luminous openings (a ring: none "
              "given), aiming lines to their aim, masts filled; blue: open faces; x min and max",
              right, up);
-    cdl_text_draw(cr, m->map_x, y + 10.0, label,
+    double key_y = m->map_y + fmax(m->map_h + KEY_BELOW_MAP, LEGEND_MIN_H + KEY_BELOW_LEGEND);
+    cdl_text_draw(cr, m->map_x, key_y, label,
                   &(cdl_text_style){.size = 8.0, .wrap_width = m->width - m->map_x - 4.0});
 }
 

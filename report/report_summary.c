@@ -75,8 +75,10 @@ static void outputs_table(cdl_report_builder *b, const cdl_report_input *in)
             cdl_report_cell(b, t, r, 1, "%s", name);
             for (size_t c = 0; c < 4; ++c) cdl_report_cell(b, t, r, c + 2, "%s", v[c]);
             cdl_report_cell(b, t, r, 6, "%s", f->what);
-            cdl_report_cell(b, t, r, 7, "%.2g %%", 100.0 * rm);
-            cdl_report_cell(b, t, r, 8, "%.2g %%", 100.0 * rx);
+            cdl_report_format_percent(v[0], sizeof v[0], rm);
+            cdl_report_format_percent(v[1], sizeof v[1], rx);
+            cdl_report_cell(b, t, r, 7, "%s", v[0]);
+            cdl_report_cell(b, t, r, 8, "%s", v[1]);
         }
     cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0,
                     "Ez: cylindrical illuminance, the mean vertical illuminance around the point (EN 12464-1); Esz: "
