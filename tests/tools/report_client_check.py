@@ -22,18 +22,12 @@ usage: report_client_check.py SCENE OUTDIR PDF_TEXT -> "ok ..." / "FAIL ..." lin
 """
 import csv, html, json, re, sys
 
-scene_path, out, pdf_path = sys.argv[1:4]
+from report_files import Report
+
+scene_path, out = sys.argv[1:3]
 scene = json.load(open(scene_path))
-summary = json.load(open(out + "/summary.json"))
-page = open(out + "/report.html", encoding="utf-8").read()
-pdf = open(pdf_path, encoding="utf-8").read()
-failed = False
-
-
-def say(ok, what):
-    global failed
-    print(("ok " if ok else "FAIL ") + what)
-    failed |= not ok
+report = Report(out, sys.argv[3])
+summary, page, pdf, say = report.summary, report.page, report.pdf, report.say
 
 
 def tables():
@@ -188,4 +182,4 @@ for g in scene["grids"]:
     say(col0 == nu and bad == 0, "%s: %d x %d values as the CSV's, laid out as the map (%d differ)" % (g["name"], nu,
                                                                                                  nv, bad))
 
-sys.exit(1 if failed else 0)
+sys.exit(1 if report.failed else 0)
