@@ -34,5 +34,9 @@ void cdl_content_hash_u64(cdl_content_hash *h, uint64_t v);
 /* The IEEE 754 bits of v, little-endian (-0 and 0 differ). */
 void cdl_content_hash_f64(cdl_content_hash *h, double v);
 void cdl_content_hash_vec3(cdl_content_hash *h, cdl_vec3 v);
+/* The bytes of the file at `path`, then their count (u64). Returns 0, or
+ * the errno of what failed (opening or reading; the hash is then of part
+ * of the file and must not be used). */
+int cdl_content_hash_file(cdl_content_hash *h, const char *path);
 
 #endif

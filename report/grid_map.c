@@ -10,9 +10,9 @@
 #include "graphics/text.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
+#include "graphics/palette.h"
+#include "report/plan_symbols.h"
 #include "report/report_numbers.h"
-#include "solver/output/false_colour.h"
-#include "solver/output/solution_write.h"
 
 /* Layout, points. */
 #define MAP_MAX_W 380.0
@@ -23,10 +23,20 @@
 #define LEGEND_W 14.0
 #define LEGEND_MIN_H 160.0
 #define LEGEND_LABELS_W 70.0
-#define BELOW_MAP 46.0
+/* Below the map: the scale bar, then the key (two lines), which starts
+ * below the legend too where that reaches lower than the map. */
+#define KEY_BELOW_MAP 24.0
+#define KEY_BELOW_LEGEND 8.0
+#define KEY_H 30.0
 /* The image: each raster pixel drawn as zoom x zoom pixels, zoom enough for
  * about 800 pixels on the long side (sharp edges in any viewer). */
 #define IMAGE_LONG_SIDE 800
+/* Labels: white around the text, the least room between two boxes, the
+ * markers' half size, the most places tried along a contour line. */
+#define LABEL_PAD 1.5
+#define LABEL_GAP 1.0
+#define MARK 4.0
+#define LEVEL_CANDIDATES 48
 
 void cdl_grid_map_raster_position(const cdl_grid *g, cdl_vec3 p, double *x, double *y)
 {
@@ -50,71 +60,159 @@ static void world_to_page(const cdl_grid_map *m, cdl_vec3 p, double *px, double 
     to_page(m, x, y, px, py);
 }
 
+/* The false colours: each point's place on the scale through the palette. */
 static cdl_status make_image(cdl_grid_map *m, cdl_error *err)
 {
     const cdl_grid *g = &m->grid->grid;
     size_t n = g->count;
-    double *t = malloc((n + 256) * sizeof *t);
-    uint8_t *rgb = malloc((n + 256) * 3);
-    if (!t || !rgb) {
-        free(t);
-        free(rgb);
-        return cdl_error_out_of_memory(err);
-    }
-    for (size_t i = 0; i < n; ++i) t[i] = cdl_lux_scale_position(&m->scale, cdl_lux(m->grid->E[i]));
-    for (int k = 0; k < 256; ++k) t[n + (size_t)k] = k / 255.0;
-    cdl_display_transform *view = NULL;
-    cdl_status st = cdl_display_transform_open(cdl_default_ocio_config(), "linear", "sRGB", "False colour", &view, err);
-    if (st == CDL_OK) st = cdl_false_colour_rgb8(view, t, n + 256, rgb, err);
-    cdl_display_transform_release(view);
-    if (st == CDL_OK) {
-        memcpy(m->legend_rgb, rgb + 3 * n, sizeof m->legend_rgb);
-        int long_side = g->raster_width > g->raster_height ? g->raster_width : g->raster_height;
-        m->zoom = long_side > 0 ? (IMAGE_LONG_SIDE + long_side - 1) / long_side : 1;
-        if (m->zoom < 1) m->zoom = 1;
-        int w = g->raster_width * m->zoom, h = g->raster_height * m->zoom;
-        m->image = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
-        if (cairo_surface_status(m->image) != CAIRO_STATUS_SUCCESS) {
-            st = cdl_error_set(err, CDL_ERR_INTERNAL, "cannot make a %d x %d image for the map", w, h);
-        } else {
-            unsigned char *data = cairo_image_surface_get_data(m->image);
-            int stride = cairo_image_surface_get_stride(m->image);
-            for (int y = 0; y < h; ++y) {
-                uint32_t *row = (uint32_t *)(void *)(data + (size_t)y * (size_t)stride);
-                for (int x = 0; x < w; ++x) {
-                    size_t pixel = (size_t)(y / m->zoom) * (size_t)g->raster_width + (size_t)(x / m->zoom);
-                    int32_t idx = g->raster_index[pixel];
-                    const uint8_t *c = rgb + 3 * (size_t)(idx < 0 ? 0 : idx);
-                    /* ARGB32, premultiplied: transparent outside the grid. */
-                    row[x] = idx < 0 ? 0u : 0xFF000000u | (uint32_t)c[0] << 16 | (uint32_t)c[1] << 8 | c[2];
-                }
+    uint8_t *rgb = malloc((n + 1) * 3);
+    if (!rgb) return cdl_error_out_of_memory(err);
+    for (size_t i = 0; i < n; ++i)
+        cdl_palette_rgb8(cdl_lux_scale_position(&m->scale, cdl_lux(m->field->values[i])), rgb + 3 * i);
+    cdl_palette_ramp(m->legend_rgb);
+    int long_side = g->raster_width > g->raster_height ? g->raster_width : g->raster_height;
+    m->zoom = long_side > 0 ? (IMAGE_LONG_SIDE + long_side - 1) / long_side : 1;
+    if (m->zoom < 1) m->zoom = 1;
+    int w = g->raster_width * m->zoom, h = g->raster_height * m->zoom;
+    m->image = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
+    cdl_status st = CDL_OK;
+    if (cairo_surface_status(m->image) != CAIRO_STATUS_SUCCESS) {
+        st = cdl_error_set(err, CDL_ERR_INTERNAL, "cannot make a %d x %d image for the map", w, h);
+    } else {
+        unsigned char *data = cairo_image_surface_get_data(m->image);
+        int stride = cairo_image_surface_get_stride(m->image);
+        for (int y = 0; y < h; ++y) {
+            uint32_t *row = (uint32_t *)(void *)(data + (size_t)y * (size_t)stride);
+            for (int x = 0; x < w; ++x) {
+                size_t pixel = (size_t)(y / m->zoom) * (size_t)g->raster_width + (size_t)(x / m->zoom);
+                int32_t idx = g->raster_index[pixel];
+                const uint8_t *c = rgb + 3 * (size_t)(idx < 0 ? 0 : idx);
+                /* ARGB32, premultiplied: transparent outside the grid. */
+                row[x] = idx < 0 ? 0u : 0xFF000000u | (uint32_t)c[0] << 16 | (uint32_t)c[1] << 8 | c[2];
             }
-            cairo_surface_mark_dirty(m->image);
         }
+        cairo_surface_mark_dirty(m->image);
     }
-    free(t);
     free(rgb);
     return st;
 }
 
 static cdl_status trace_contours(cdl_grid_map *m, cdl_error *err)
 {
-    m->level_count = cdl_contour_levels(m->grid->Emin, m->grid->Emax, m->levels, CDL_GRID_MAP_MAX_LEVELS);
+    m->level_count = cdl_contour_levels(m->field->min, m->field->max, m->levels, CDL_GRID_MAP_MAX_LEVELS);
     cdl_status st = CDL_OK;
     for (size_t k = 0; k < m->level_count && st == CDL_OK; ++k)
-        st = cdl_contour_trace_grid(&m->grid->grid, m->grid->E, m->levels[k], &m->segments[k], &m->segment_count[k],
-                                    err);
+        st = cdl_contour_trace_grid(&m->grid->grid, m->field->values, m->levels[k], &m->segments[k],
+                                    &m->segment_count[k], err);
     return st;
 }
 
+/* ---- the plan and the labels ------------------------------------------------------- */
+
+static void project(const void *user, cdl_vec3 p, double *x, double *y)
+{
+    world_to_page(user, p, x, y);
+}
+
+/* A label's text and size, measured, with a little white around it. */
+static void label_text(cdl_grid_map_label *l, double size, const char *text, double *w, double *h)
+{
+    snprintf(l->text, sizeof l->text, "%s", text);
+    l->size = size;
+    cdl_text_measure_alone(text, &(cdl_text_style){.size = size}, w, h);
+    *w += 2.0 * LABEL_PAD;
+}
+
+/* Candidates around a marker at (x, y): right, left, above, below, then the corners. */
+static void around(double x, double y, double w, double h, double *centres)
+{
+    const double dx = 0.5 * w + 6.0, dy = 0.5 * h + 6.0;
+    const double offsets[8][2] = {{dx, 0}, {-dx, 0}, {0, -dy}, {0, dy}, {dx, -dy}, {-dx, -dy}, {dx, dy}, {-dx, dy}};
+    for (int k = 0; k < 8; ++k) {
+        centres[2 * k] = x + offsets[k][0];
+        centres[2 * k + 1] = y + offsets[k][1];
+    }
+}
+
+/* A level's candidates: its segments' midpoints on the page, at most
+ * LEVEL_CANDIDATES of them spread evenly along the list, nearest the
+ * middle of the list first (a label mid-line reads best). */
+static size_t level_candidates(const cdl_grid_map *m, size_t level, double *centres)
+{
+    size_t n = m->segment_count[level], take = n < LEVEL_CANDIDATES ? n : LEVEL_CANDIDATES;
+    size_t index[LEVEL_CANDIDATES];
+    for (size_t j = 0; j < take; ++j) index[j] = j * n / take;
+    /* by distance from the middle (insertion sort: a few dozen) */
+    for (size_t j = 1; j < take; ++j)
+        for (size_t i = j; i > 0; --i) {
+            size_t a = index[i - 1], b = index[i], mid = n / 2;
+            if ((a > mid ? a - mid : mid - a) <= (b > mid ? b - mid : mid - b)) break;
+            index[i - 1] = b;
+            index[i] = a;
+        }
+    for (size_t j = 0; j < take; ++j) {
+        const cdl_contour_segment *seg = &m->segments[level][index[j]];
+        to_page(m, 0.5 * (seg->x0 + seg->x1), 0.5 * (seg->y0 + seg->y1), &centres[2 * j], &centres[2 * j + 1]);
+    }
+    return take;
+}
+
+static cdl_status place_labels(cdl_grid_map *m, cdl_error *err)
+{
+    const cdl_report_field *f = m->field;
+    const cdl_grid *g = &m->grid->grid;
+    world_to_page(m, g->points[f->min_index], &m->min_x, &m->min_y);
+    world_to_page(m, g->points[f->max_index], &m->max_x, &m->max_y);
+    cdl_label_request requests[CDL_GRID_MAP_MAX_LABELS];
+    double centres[CDL_GRID_MAP_MAX_LABELS][2 * LEVEL_CANDIDATES];
+    const char *space = f->unit[0] ? " " : "";
+    char text[64], v[32];
+    const double extreme[2] = {f->min, f->max}, ex[2] = {m->min_x, m->max_x}, ey[2] = {m->min_y, m->max_y};
+    for (int k = 0; k < 2; ++k) {
+        cdl_report_format(v, sizeof v, extreme[k], extreme[k] * f->stderr_max_rel);
+        snprintf(text, sizeof text, "%s %s%s%s", k ? "max" : "min", v, space, f->unit);
+        label_text(&m->labels[k], 8.5, text, &requests[k].width, &requests[k].height);
+        around(ex[k], ey[k], requests[k].width, requests[k].height, centres[k]);
+        requests[k].centres = centres[k];
+        requests[k].centre_count = 8;
+    }
+    m->label_count = 2;
+    for (size_t k = 0; k < m->level_count; ++k) {
+        size_t i = m->label_count++;
+        snprintf(text, sizeof text, "%g%s%s", m->levels[k], space, f->unit);
+        label_text(&m->labels[i], 8.0, text, &requests[i].width, &requests[i].height);
+        requests[i].centres = centres[i];
+        requests[i].centre_count = level_candidates(m, k, centres[i]);
+    }
+    /* keep clear of the luminaires and of both markers */
+    cdl_label_box *obstacles = malloc((m->symbol_count + 2) * sizeof *obstacles);
+    if (!obstacles) return cdl_error_out_of_memory(err);
+    for (size_t k = 0; k < m->symbol_count; ++k) obstacles[k] = m->symbols[k].box;
+    for (int k = 0; k < 2; ++k)
+        obstacles[m->symbol_count + (size_t)k] = (cdl_label_box){ex[k] - MARK, ey[k] - MARK, ex[k] + MARK, ey[k] + MARK};
+    cdl_label_box bounds = {m->map_x, m->map_y, m->map_x + m->map_w, m->map_y + m->map_h};
+    cdl_label_box boxes[CDL_GRID_MAP_MAX_LABELS];
+    int placed[CDL_GRID_MAP_MAX_LABELS];
+    cdl_label_layout(requests, m->label_count, obstacles, m->symbol_count + 2, bounds, LABEL_GAP, boxes, placed);
+    for (size_t k = 0; k < m->label_count; ++k) {
+        m->labels[k].placed = placed[k];
+        m->labels[k].box = boxes[k];
+    }
+    free(obstacles);
+    return CDL_OK;
+}
+
 cdl_status cdl_grid_map_prepare(cdl_grid_map *m, const cdl_report_input *input, const cdl_report_grid *grid,
-                                cdl_error *err)
+                                size_t field, cdl_error *err)
 {
     memset(m, 0, sizeof *m);
     m->input = input;
     m->grid = grid;
+    m->field = &grid->fields[field];
     const cdl_grid *g = &grid->grid;
-    m->scale = cdl_lux_scale_linear_for_values(grid->E, g->count);
+    m->scale = cdl_lux_scale_linear_for_values(m->field->values, g->count);
+    if (strcmp(m->field->column, "AO") == 0) /* a share: always 0 to 1 */
+        m->scale = (cdl_lux_scale){.kind = CDL_LUX_SCALE_LINEAR, .lo = cdl_lux(0.0), .hi = cdl_lux(1.0), .tick_lx = 0.2};
     double w_m = g->raster_width * g->pixel_width_m, h_m = g->raster_height * g->pixel_height_m;
     m->metres_to_points = fmin(MAP_MAX_W / w_m, MAP_MAX_H / h_m);
     m->map_x = MAP_LEFT;
@@ -122,10 +220,20 @@ cdl_status cdl_grid_map_prepare(cdl_grid_map *m, const cdl_report_input *input, 
     m->map_w = w_m * m->metres_to_points;
     m->map_h = h_m * m->metres_to_points;
     m->width = m->map_x + m->map_w + LEGEND_GAP + LEGEND_W + LEGEND_LABELS_W;
-    m->height = m->map_y + fmax(m->map_h, LEGEND_MIN_H) + BELOW_MAP;
-    snprintf(m->title, sizeof m->title, "%s: illuminance E in lx, isolux lines, plan and luminaires", grid->spec->name);
+    m->height = m->map_y + fmax(m->map_h + KEY_BELOW_MAP, LEGEND_MIN_H + KEY_BELOW_LEGEND) + KEY_H;
+    const cdl_report_field *f = m->field;
+    if (f->unit[0])
+        snprintf(m->title, sizeof m->title, "%s: %s %s in %s, %s lines, plan and luminaires", grid->spec->name, f->what,
+                 f->symbol, f->unit, strcmp(f->unit, "lx") == 0 ? "isolux" : "contour");
+    else
+        snprintf(m->title, sizeof m->title, "%s: %s %s, contour lines, plan and luminaires", grid->spec->name, f->what,
+                 f->symbol);
+    cdl_plan_view view = {project, m, g->count ? g->points[0] : cdl_vec3_make(0, 0, 0),
+                          g->count ? g->normals[0] : cdl_vec3_make(0, 0, 1)};
     cdl_status st = make_image(m, err);
     if (st == CDL_OK) st = trace_contours(m, err);
+    if (st == CDL_OK) st = cdl_plan_symbols_make(input, &view, &m->symbols, &m->symbol_count, err);
+    if (st == CDL_OK) st = place_labels(m, err);
     if (st != CDL_OK) cdl_grid_map_release(m);
     return st;
 }
@@ -138,6 +246,8 @@ void cdl_grid_map_release(cdl_grid_map *m)
         free(m->segments[k]);
         m->segments[k] = NULL;
     }
+    free(m->symbols);
+    m->symbols = NULL;
 }
 
 /* ---- drawing ---------------------------------------------------------------------- */
@@ -219,60 +329,43 @@ static void outline(cairo_t *cr, const cdl_grid_map *m, const cdl_surface_spec *
     }
 }
 
+/* A box's open faces (windows, doors): their edges, for a blue line under the outline. */
+static void open_faces(cairo_t *cr, const cdl_grid_map *m, const cdl_surface_spec *s)
+{
+    if (s->kind != CDL_SURFACE_BOX) return;
+    const double lo[3] = {s->box_min.x, s->box_min.y, s->box_min.z}, hi[3] = {s->box_max.x, s->box_max.y, s->box_max.z};
+    for (int f = 0; f < CDL_BOX_FACES; ++f) {
+        if (!s->face_open[f]) continue;
+        int axis = f / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
+        cdl_vec3 c[4];
+        for (int k = 0; k < 4; ++k) {
+            double p[3];
+            p[axis] = f % 2 ? hi[axis] : lo[axis];
+            p[a] = (k == 1 || k == 2) ? hi[a] : lo[a];
+            p[b] = k >= 2 ? hi[b] : lo[b];
+            c[k] = cdl_vec3_make(p[0], p[1], p[2]);
+        }
+        ring_world(cr, m, c, 4);
+    }
+}
+
+/* The surfaces' outlines (open faces in blue beneath), then the luminaires. */
 static void draw_plan(cairo_t *cr, const cdl_grid_map *m)
 {
     const cdl_scene *scene = m->input->scene;
     cairo_save(cr);
     cairo_rectangle(cr, m->map_x - 1.0, m->map_y - 1.0, m->map_w + 2.0, m->map_h + 2.0);
     cairo_clip(cr);
-    cairo_set_source_rgba(cr, 0.15, 0.15, 0.15, 0.8);
+    cairo_set_source_rgb(cr, 0.2, 0.45, 0.95);
+    cairo_set_line_width(cr, 3.0);
+    for (size_t k = 0; k < scene->surface_count; ++k) open_faces(cr, m, &scene->surfaces[k]);
+    cairo_stroke(cr);
+    cairo_set_source_rgba(cr, 0.1, 0.1, 0.1, 0.85);
     cairo_set_line_width(cr, 0.7);
     for (size_t k = 0; k < scene->surface_count; ++k) outline(cr, m, &scene->surfaces[k]);
     cairo_stroke(cr);
-    /* Luminaires: a ring with a cross at each position; area luminaires by their outline, dashed. */
-    cairo_set_line_width(cr, 1.0);
-    const double dash[2] = {3.0, 2.0};
-    for (size_t k = 0; k < scene->luminaire_count; ++k) {
-        const cdl_luminaire_spec *l = &scene->luminaires[k];
-        if (l->kind == CDL_LUMINAIRE_AREA) {
-            cairo_set_dash(cr, dash, 2, 0.0);
-            cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
-            outline(cr, m, &l->shape);
-            cairo_stroke(cr);
-            cairo_set_dash(cr, NULL, 0, 0.0);
-            continue;
-        }
-        if (l->kind != CDL_LUMINAIRE_POINT && l->kind != CDL_LUMINAIRE_SPOT && l->kind != CDL_LUMINAIRE_GONIOMETRIC)
-            continue;
-        double x, y;
-        world_to_page(m, l->position, &x, &y);
-        cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
-        cairo_new_sub_path(cr);
-        cairo_arc(cr, x, y, 4.5, 0.0, 2.0 * CDL_PI);
-        cairo_fill(cr);
-        cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
-        cairo_new_sub_path(cr);
-        cairo_arc(cr, x, y, 4.5, 0.0, 2.0 * CDL_PI);
-        cairo_move_to(cr, x - 4.5, y);
-        cairo_line_to(cr, x + 4.5, y);
-        cairo_move_to(cr, x, y - 4.5);
-        cairo_line_to(cr, x, y + 4.5);
-        cairo_stroke(cr);
-    }
+    cdl_plan_symbols_draw(cr, m->symbols, m->symbol_count);
     cairo_restore(cr);
-}
-
-/* A label on a white box, centred at (x, y). */
-static void boxed_label(cairo_t *cr, double x, double y, const char *text, double size)
-{
-    cdl_text_style style = {.size = size, .align = CDL_TEXT_CENTRE};
-    double w = 0.0, h = 0.0;
-    cdl_text_measure(cr, text, &style, &w, &h);
-    cairo_set_source_rgba(cr, 1.0, 1.0, 1.0, 0.85);
-    cairo_rectangle(cr, x - w / 2.0 - 1.5, y - h / 2.0, w + 3.0, h);
-    cairo_fill(cr);
-    cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
-    cdl_text_draw(cr, x, y - h / 2.0, text, &style);
 }
 
 static void draw_contours(cairo_t *cr, const cdl_grid_map *m)
@@ -290,40 +383,41 @@ static void draw_contours(cairo_t *cr, const cdl_grid_map *m)
             cairo_line_to(cr, x1, y1);
         }
     cairo_stroke(cr);
-    /* Each level labelled once, at the middle one of its segments. */
-    for (size_t k = 0; k < m->level_count; ++k) {
-        if (m->segment_count[k] == 0) continue;
-        const cdl_contour_segment *seg = &m->segments[k][m->segment_count[k] / 2];
-        double x, y;
-        to_page(m, 0.5 * (seg->x0 + seg->x1), 0.5 * (seg->y0 + seg->y1), &x, &y);
-        char label[32];
-        snprintf(label, sizeof label, "%g lx", m->levels[k]);
-        boxed_label(cr, x, y, label, 8.0);
-    }
     cairo_restore(cr);
 }
 
-static void draw_extreme(cairo_t *cr, const cdl_grid_map *m, size_t index, const char *what, double value, double u)
+/* The min and max markers: a white-edged cross. */
+static void draw_markers(cairo_t *cr, const cdl_grid_map *m)
 {
-    double x, y;
-    world_to_page(m, m->grid->grid.points[index], &x, &y);
+    const double x[2] = {m->min_x, m->max_x}, y[2] = {m->min_y, m->max_y};
+    for (int k = 0; k < 2; ++k) {
+        cairo_move_to(cr, x[k] - MARK, y[k] - MARK);
+        cairo_line_to(cr, x[k] + MARK, y[k] + MARK);
+        cairo_move_to(cr, x[k] + MARK, y[k] - MARK);
+        cairo_line_to(cr, x[k] - MARK, y[k] + MARK);
+    }
     cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
     cairo_set_line_width(cr, 2.5);
-    cairo_move_to(cr, x - 4.0, y - 4.0);
-    cairo_line_to(cr, x + 4.0, y + 4.0);
-    cairo_move_to(cr, x + 4.0, y - 4.0);
-    cairo_line_to(cr, x - 4.0, y + 4.0);
     cairo_stroke_preserve(cr);
     cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
     cairo_set_line_width(cr, 1.2);
     cairo_stroke(cr);
-    char v[32], label[64];
-    cdl_report_format(v, sizeof v, value, u);
-    snprintf(label, sizeof label, "%s %s lx", what, v);
-    /* beside the mark, inside the map where there is room */
-    double lx = x + 30.0 > m->map_x + m->map_w - 20.0 ? x - 32.0 : x + 32.0;
-    double ly = y - 9.0 < m->map_y + 6.0 ? y + 9.0 : y - 9.0;
-    boxed_label(cr, lx, ly, label, 8.5);
+}
+
+/* The placed labels: a white box each, the text centred in it. */
+static void draw_labels(cairo_t *cr, const cdl_grid_map *m)
+{
+    for (size_t k = 0; k < m->label_count; ++k) {
+        const cdl_grid_map_label *l = &m->labels[k];
+        if (!l->placed) continue;
+        const cdl_label_box *b = &l->box;
+        cairo_set_source_rgba(cr, 1.0, 1.0, 1.0, 0.88);
+        cairo_rectangle(cr, b->x0, b->y0, b->x1 - b->x0, b->y1 - b->y0);
+        cairo_fill(cr);
+        cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+        cdl_text_draw(cr, 0.5 * (b->x0 + b->x1), b->y0, l->text,
+                      &(cdl_text_style){.size = l->size, .align = CDL_TEXT_CENTRE});
+    }
 }
 
 static void draw_legend(cairo_t *cr, const cdl_grid_map *m)
@@ -350,9 +444,13 @@ static void draw_legend(cairo_t *cr, const cdl_grid_map *m)
         cairo_move_to(cr, x + LEGEND_W, ty);
         cairo_line_to(cr, x + LEGEND_W + 4.0, ty);
         cairo_stroke(cr);
-        char label[48], v[40];
+        /* the scale's round value ("480 lx", "12.5k lx") in the quantity's unit */
+        char label[64], v[40];
         cdl_lux_scale_value_label(lx, v, sizeof v);
-        snprintf(label, sizeof label, "%s%s", k == 0 && s->clipped ? "<=" : "", v);
+        size_t n = strlen(v);
+        if (n > 3 && strcmp(v + n - 3, " lx") == 0) v[n - 3] = '\0';
+        snprintf(label, sizeof label, "%s%s%s%s", k == 0 && s->clipped ? "<=" : "", v, m->field->unit[0] ? " " : "",
+                 m->field->unit);
         cdl_text_draw(cr, x + LEGEND_W + 6.0, ty - 5.5, label, &small);
     }
 }
@@ -387,15 +485,19 @@ static void draw_frame_and_scale(cairo_t *cr, const cdl_grid_map *m)
     cairo_move_to(cr, x1, y - 3.0);
     cairo_line_to(cr, x1, y + 3.0);
     cairo_stroke(cr);
-    char label[96], right[8], up[8];
+    char label[256], right[8], up[8];
     snprintf(label, sizeof label, "%g m", len);
     const cdl_text_style small = {.size = 8.5};
     cdl_text_draw(cr, x1 + 5.0, y - 6.0, label, &small);
     axis_name(g->raster_right, "u", right, sizeof right);
     axis_name(g->raster_up, "v", up, sizeof up);
-    snprintf(label, sizeof label, "plan seen along -normal: %s to the right, %s up; + luminaire, x Emin and Emax",
+    snprintf(label, sizeof label,
+             "plan seen along -normal: %s to the right, %s up; luminaires as their luminous openings (a ring: none "
+             "given), aiming lines to their aim, masts filled; blue: open faces; x min and max",
              right, up);
-    cdl_text_draw(cr, m->map_x, y + 10.0, label, &small);
+    double key_y = m->map_y + fmax(m->map_h + KEY_BELOW_MAP, LEGEND_MIN_H + KEY_BELOW_LEGEND);
+    cdl_text_draw(cr, m->map_x, key_y, label,
+                  &(cdl_text_style){.size = 8.0, .wrap_width = m->width - m->map_x - 4.0});
 }
 
 static void draw(cairo_t *cr, const void *user)
@@ -418,9 +520,8 @@ static void draw(cairo_t *cr, const void *user)
     cairo_restore(cr);
     draw_contours(cr, m);
     draw_plan(cr, m);
-    double r_max = m->grid->stderr_max_rel;
-    draw_extreme(cr, m, m->grid->min_index, "min", m->grid->Emin, m->grid->Emin * r_max);
-    draw_extreme(cr, m, m->grid->max_index, "max", m->grid->Emax, m->grid->Emax * r_max);
+    draw_markers(cr, m);
+    draw_labels(cr, m);
     draw_frame_and_scale(cr, m);
     draw_legend(cr, m);
     cairo_restore(cr);

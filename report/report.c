@@ -13,10 +13,10 @@
 cdl_status cdl_report_write(const char *out_dir, const cdl_report_options *options, cdl_error *err)
 {
     cdl_report_input *input = NULL;
-    cdl_status st = cdl_report_input_read(out_dir, options ? options->requirements_path : NULL, &input, err);
+    cdl_status st = cdl_report_input_read(out_dir, options, &input, err);
     if (st != CDL_OK) return st;
     cdl_report_document *doc = NULL;
-    st = cdl_report_document_build(input, options ? options->title : NULL, &doc, err);
+    st = cdl_report_document_build(input, options, &doc, err);
     size_t n = strlen(out_dir) + 16;
     char *html_path = malloc(n), *pdf_path = malloc(n);
     if (st == CDL_OK && (!html_path || !pdf_path)) st = cdl_error_out_of_memory(err);

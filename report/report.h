@@ -17,8 +17,11 @@
 #include "base/error.h"
 
 typedef struct cdl_report_options {
-    const char *title;               /* NULL: "Lighting report: SCENE" */
+    const char *title;               /* NULL: the scene's "name", else its file name without the extension */
     const char *requirements_path;   /* NULL: the scene's own requirements only */
+    const char *project_path;        /* NULL: the scene's own "project" only; else a JSON file of the same
+                                      * object, whose fields replace the scene's one by one */
+    int values;                      /* 1: a table of the values at each grid's points */
 } cdl_report_options;
 
 cdl_status cdl_report_write(const char *out_dir, const cdl_report_options *options, cdl_error *err);

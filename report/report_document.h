@@ -3,19 +3,24 @@
  * The report is built as a list of blocks (headings, paragraphs, tables,
  * figures, page breaks) from a checked input (report_input.h), in the order
  * a reviewer reads it:
- *   1. cover: title, scene, the solve's date, Candela version, method,
- *      quality and target error, seed, threads, the time the solve took;
- *   2. summary: a row per grid (summary_table.h) with the check against
- *      the requirements;
- *   3. a map per rect and polygon grid (grid_map.h), then the surface
- *      maps' table, requirements and the room in 3D (report_surfaces.h);
- *   4. glare, with observers (report_glare.h): their UGR against their
- *      limits and the plan with them on it;
- *   5. the luminaire schedule and a polar diagram per photometric file
- *      (lights/photometry/photometry_polar.h), and with observers each
- *      file's UGR table;
- *   6. method and accuracy: what the plan modelled and why, bounces, the
- *      error statement, the solve's warnings.
+ *   1. cover: the title (the scene's name), the project block (project,
+ *      client, designer, date, notes), the calculation's facts (scene
+ *      file, solve date, Candela version, method, quality, seed, threads,
+ *      the time it took);
+ *   2. summary (report_summary.c): a row per grid with the check against
+ *      its requirements, a row per other quantity asked (Ez, Esz, L, AO),
+ *      installed power and power density per grid;
+ *   3. room and surfaces (report_room.c): dimensions, areas, reflectances;
+ *   4. luminaires (report_luminaires.c): every luminaire placed, the
+ *      schedule of types, a polar diagram per photometric file, and with
+ *      observers each file's UGR table;
+ *   5. a map per quantity of each rect and polygon grid (grid_map.h), then
+ *      the surface maps (report_surfaces.h);
+ *   6. glare, with observers (report_glare.h);
+ *   7. on request, the values at each grid's points (report_values.c);
+ *   8. method and accuracy (report_method.c): what the plan modelled and
+ *      why, each light and grid by name, the error statement, the solve's
+ *      warnings.
  * report_html.c and report_pdf.c lay the same blocks out, so the HTML and
  * the PDF carry the same text and figures.
  *
@@ -28,6 +33,7 @@
 #include <stddef.h>
 
 #include "graphics/figure.h"
+#include "report/report.h"
 #include "report/report_input.h"
 
 typedef enum cdl_report_block_kind {
@@ -62,10 +68,10 @@ typedef struct cdl_report_document {
     struct cdl_glare_plan *glare_plan; /* the observers on the plan (report_glare.c), or NULL */
 } cdl_report_document;
 
-/* Build the report of `input`; title NULL for the default ("Lighting
- * report: SCENE"). */
-cdl_status cdl_report_document_build(const cdl_report_input *input, const char *title, cdl_report_document **out,
-                                     cdl_error *err);
+/* Build the report of `input` with the options' title (NULL: the scene's
+ * name, else its file's) and, with `values`, the tables of values. */
+cdl_status cdl_report_document_build(const cdl_report_input *input, const cdl_report_options *options,
+                                     cdl_report_document **out, cdl_error *err);
 void cdl_report_document_release(cdl_report_document *document);
 
 /* A cell's emphasis: +1 for a passed check ("pass..."), -1 for a failed

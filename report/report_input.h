@@ -31,17 +31,46 @@
 #include <cjson/cJSON.h>
 #include <stddef.h>
 
-#include "lights/photometry/photometry.h"
 #include "base/error.h"
+#include "lights/photometry/photometry.h"
+#include "report/report.h"
 #include "solver/grid/grid.h"
 #include "solver/output/grid_result.h"
 #include "solver/scene/scene_internal.h"
 
+/* Most quantities a grid's CSV gives per point: E and the outputs a grid
+ * may ask for (Ez, Esz, L, AO), with room for more. */
+#define CDL_REPORT_MAX_FIELDS 8
+
+/* One quantity of a grid, per point from NAME.csv, with its statistics:
+ * E always (fields[0]), then each output the grid asked for, in the CSV's
+ * order. avg, min, max and U0 = min / avg as summary.json gives them where
+ * it does (E, Ez, Esz, L: the CSV is held to them), else computed from the
+ * CSV as the solve computes E's (AO). The stated error per point is the
+ * CSV's standard error column (E_stderr_lx, Ez_stderr_lx, Esz_stderr_lx,
+ * AO_stderr; none: exact), for L = rho E / pi E's relative error. */
+typedef struct cdl_report_field {
+    const char *column;            /* "E_lx", "Ez_lx", "Esz_lx", "L_cd_m2", "AO" (static, or the CSV's) */
+    const char *symbol;            /* "E", "Ez", "Esz", "L", "AO" */
+    const char *unit;              /* "lx", "cd/m2", "" */
+    const char *what;              /* "illuminance", "cylindrical illuminance", ... */
+    double *values, *stderr_values;/* per point */
+    size_t min_index, max_index;   /* the points of min and max */
+    double avg, min, max, U0;
+    double stderr_mean_rel, stderr_max_rel;
+    char column_name[32];          /* an unknown column's name, kept here */
+} cdl_report_field;
+
 typedef struct cdl_report_grid {
     const cdl_grid_spec *spec;     /* in the input's scene */
     cdl_grid grid;                 /* rebuilt from the spec */
-    double *E, *E_stderr;          /* per point, from NAME.csv */
+    double *E, *E_stderr;          /* per point, from NAME.csv (fields[0]'s) */
     size_t min_index, max_index;   /* the points of Emin and Emax */
+    cdl_report_field fields[CDL_REPORT_MAX_FIELDS];
+    size_t field_count;
+    /* power over the grid's area (summary.json): 0 when the files do not say */
+    double area_m2, power_w, power_density_w_m2;
+    size_t luminaires_over;
     /* summary.json's values */
     size_t count;
     double Em, Emin, Emax, U0, Ud, stderr_mean_rel, stderr_max_rel, spacing_m;
@@ -80,12 +109,18 @@ typedef struct cdl_report_input {
     size_t type_count;
     cdl_report_observer *observers;  /* one per scene observer (none without) */
     size_t observer_count;
+    cdl_scene_project project;       /* the scene's "project", with a --project file's fields over it (owned) */
+    char *project_path;              /* as given, or NULL */
 } cdl_report_input;
 
-/* Read and check OUTDIR (above); requirements_path may be NULL. */
-cdl_status cdl_report_input_read(const char *out_dir, const char *requirements_path, cdl_report_input **out,
+/* Read and check OUTDIR (above), with the options' requirements and
+ * project files (each may be NULL). */
+cdl_status cdl_report_input_read(const char *out_dir, const cdl_report_options *options, cdl_report_input **out,
                                  cdl_error *err);
 void cdl_report_input_release(cdl_report_input *input);
+
+/* The type (schedule entry) of a scene luminaire, or NULL. */
+const cdl_report_luminaire_type *cdl_report_type_of(const cdl_report_input *input, const cdl_luminaire_spec *luminaire);
 
 /* summary.json's string at `key` (a top-level key, or "a.b" one level
  * down), or NULL. */

@@ -18,3 +18,10 @@ void cdl_report_format(char *buf, size_t size, double value, double u)
 {
     snprintf(buf, size, "%.*f", cdl_report_decimals(value, u), value);
 }
+
+void cdl_report_format_percent(char *buf, size_t size, double fraction)
+{
+    double p = 100.0 * fraction;
+    if (fabs(p) >= 10.0) snprintf(buf, size, "%.0f %%", p);
+    else snprintf(buf, size, "%.2g %%", p);
+}

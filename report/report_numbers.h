@@ -28,4 +28,8 @@ int cdl_report_decimals(double value, double uncertainty);
 /* v printed with those decimals into buf ("%.*f"). */
 void cdl_report_format(char *buf, size_t size, double value, double uncertainty);
 
+/* A relative error as a percentage of two significant digits, never in
+ * exponent form: "0.63 %", "11 %", "130 %". */
+void cdl_report_format_percent(char *buf, size_t size, double fraction);
+
 #endif

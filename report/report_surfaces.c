@@ -324,7 +324,7 @@ cdl_status cdl_report_surfaces_section(cdl_report_document *d, const cdl_report_
                        "and 30 lx) with U0 >= 0.10; requirements come from the scene's surfaces.");
     add_table(d, s, &failed);
     if (failed) return cdl_error_out_of_memory(err);
-    cdl_status st = cdl_surface_view_prepare(&s->view, s->meshes, s->count, s->luminaires, s->luminaire_count, NULL,
+    cdl_status st = cdl_surface_view_prepare(&s->view, s->meshes, s->count, s->luminaires, s->luminaire_count,
                                              err);
     if (st != CDL_OK) return cdl_error_prefix(err, "the surfaces in 3D: ");
     s->view_ready = 1;

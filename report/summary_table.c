@@ -10,11 +10,6 @@
 const char *const cdl_report_row_headings[10] = {"Em (lx)", "Emin (lx)", "Emax (lx)", "U0", "Ud", "points",
                                                  "spacing (m)", "error mean", "error worst", "requirement"};
 
-static void percent(char *buf, size_t size, double fraction)
-{
-    snprintf(buf, size, "%.2g %%", 100.0 * fraction);
-}
-
 void cdl_report_row_of(const cdl_report_grid *g, cdl_report_row *row)
 {
     memset(row, 0, sizeof *row);
@@ -36,8 +31,8 @@ void cdl_report_row_of(const cdl_report_grid *g, cdl_report_row *row)
     snprintf(row->count, sizeof row->count, "%zu", g->count);
     if (g->spec->kind == CDL_GRID_POINTS) snprintf(row->spacing, sizeof row->spacing, "-");
     else snprintf(row->spacing, sizeof row->spacing, "%.3g", g->spacing_m);
-    percent(row->error_mean, sizeof row->error_mean, r_mean);
-    percent(row->error_max, sizeof row->error_max, r_max);
+    cdl_report_format_percent(row->error_mean, sizeof row->error_mean, r_mean);
+    cdl_report_format_percent(row->error_max, sizeof row->error_max, r_max);
     row->has_requirements = g->required_Em_lx > 0.0 || g->required_U0 > 0.0;
     if (!row->has_requirements) return;
     int pass = 1, close = 0;

@@ -9,8 +9,7 @@
 #include "graphics/text.h"
 #include "radiometry/constants.h"
 #include "solver/geometry/key_table.h"
-#include "solver/output/display_transform.h"
-#include "solver/output/false_colour.h"
+#include "graphics/palette.h"
 #include "solver/output/surface_output.h"
 #include "solver/output/solution_write.h"
 #include "base/error_report.h"
@@ -53,7 +52,7 @@ void cdl_surface_view_project(const cdl_surface_view *v, int panel, cdl_vec3 q, 
     *y = p->y + (p->hi_up - cdl_vec3_dot(q, p->up)) * v->metres_to_points;
 }
 
-static cdl_status make_colours(cdl_surface_view *v, const char *ocio_config, cdl_error *err)
+static cdl_status make_colours(cdl_surface_view *v, cdl_error *err)
 {
     size_t mapped = 0;
     for (size_t m = 0; m < v->mesh_count; ++m)
@@ -74,12 +73,8 @@ static cdl_status make_colours(cdl_surface_view *v, const char *ocio_config, cdl
     v->scale = cdl_lux_scale_linear_for_areas(E, area, st == CDL_OK ? mapped : 0);
     for (size_t i = 0; i < mapped; ++i) t[i] = cdl_lux_scale_position(&v->scale, cdl_lux(E[i]));
     for (int i = 0; i < 256; ++i) t[mapped + (size_t)i] = i / 255.0;
-    cdl_display_transform *view = NULL;
-    if (st == CDL_OK)
-        st = cdl_display_transform_open(ocio_config ? ocio_config : cdl_default_ocio_config(), "linear", "sRGB",
-                                        "False colour", &view, err);
-    if (st == CDL_OK) st = cdl_false_colour_rgb8(view, t, mapped + 256, rgb, err);
-    cdl_display_transform_release(view);
+    /* the report's perceptually uniform scale (palette.h) */
+    for (size_t i = 0; st == CDL_OK && i < mapped + 256; ++i) cdl_palette_rgb8(t[i], rgb + 3 * i);
     k = 0;
     for (size_t m = 0; st == CDL_OK && m < v->mesh_count; ++m) {
         if (!v->meshes[m].E_lx) continue;
@@ -230,7 +225,7 @@ static void layout(cdl_surface_view *v)
 }
 
 cdl_status cdl_surface_view_prepare(cdl_surface_view *v, const cdl_view_mesh *meshes, size_t mesh_count,
-                                    const cdl_vec3 *luminaires, size_t luminaire_count, const char *ocio_config,
+                                    const cdl_vec3 *luminaires, size_t luminaire_count,
                                     cdl_error *err)
 {
     memset(v, 0, sizeof *v);
@@ -244,7 +239,7 @@ cdl_status cdl_surface_view_prepare(cdl_surface_view *v, const cdl_view_mesh *me
     set_direction(&v->panel[1], 225.0, 1);
     v->panel[0].caption = "from above";
     v->panel[1].caption = "from below";
-    cdl_status st = make_colours(v, ocio_config, err);
+    cdl_status st = make_colours(v, err);
     if (st == CDL_OK) st = find_outlines(v, err);
     for (int k = 0; st == CDL_OK && k < CDL_SURFACE_VIEW_PANELS; ++k) st = order_panel(v, &v->panel[k], err);
     if (st != CDL_OK) {

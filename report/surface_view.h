@@ -10,8 +10,8 @@
  * the farthest to the nearest. Mapped surfaces are Gouraud-shaded: each
  * triangle a cairo mesh-pattern patch whose corners carry their vertices'
  * false colours (a linear lux scale topped at 99 % of the area, lux_scale.h,
- * and the maps' OpenColorIO false-colour
- * view), so the colour varies across it as the linear interpolant does;
+ * and the report's perceptually uniform palette, palette.h), so the colour
+ * varies across it as the linear interpolant does;
  * unmapped surfaces are light grey, shaded by the angle they face the
  * viewer at; outlines of every surface are drawn thin and dark,
  * luminaires as yellow dots. A horizontal lux legend runs below.
@@ -20,7 +20,7 @@
  * page the patches are vector shading; cairo's SVG output rasterises them.
  * Ownership: the view borrows the meshes and luminaire positions (they
  * must outlive it) and owns its colours and orders; release frees them.
- * Errors: memory, the OCIO config's.
+ * Errors: memory.
  */
 #ifndef CANDELA_REPORT_SURFACE_VIEW_H
 #define CANDELA_REPORT_SURFACE_VIEW_H
@@ -74,10 +74,9 @@ typedef struct cdl_surface_view {
     char title[96];
 } cdl_surface_view;
 
-/* Colour, project and order the meshes; ocio_config NULL for Candela's. */
+/* Colour, project and order the meshes. */
 cdl_status cdl_surface_view_prepare(cdl_surface_view *view, const cdl_view_mesh *meshes, size_t mesh_count,
-                                    const cdl_vec3 *luminaires, size_t luminaire_count, const char *ocio_config,
-                                    cdl_error *err);
+                                    const cdl_vec3 *luminaires, size_t luminaire_count, cdl_error *err);
 cdl_figure cdl_surface_view_figure(const cdl_surface_view *view);
 void cdl_surface_view_release(cdl_surface_view *view);
 

@@ -35,6 +35,7 @@ static const char *ref_words(const char *ref)
         {"#/$defs/requirements", "object (see \"grid requirements\")"},
         {"#/$defs/observer", "observer"},
         {"#/$defs/observer_requirements", "object (see \"observer requirements\")"},
+        {"#/$defs/project", "object (see \"project\")"},
     };
     for (size_t i = 0; i < sizeof names / sizeof names[0]; ++i)
         if (strcmp(ref, names[i].ref) == 0) return names[i].words;
@@ -146,8 +147,8 @@ int cdl_scene_help_print(FILE *out)
     snprintf(top, sizeof top, "%s (the top level)", cJSON_IsString(root_title) ? root_title->valuestring : "scene");
     print_object(out, top, schema);
     const cJSON *defs = cJSON_GetObjectItemCaseSensitive(schema, "$defs");
-    static const char *const order[] = {"surface_",     "shape_",   "luminaire_", "array", "grid_",
-                                        "requirements", "observer", "solver",     NULL};
+    static const char *const order[] = {"surface_",     "shape_",   "luminaire_", "array",  "grid_",
+                                        "requirements", "observer", "project",    "solver", NULL};
     for (int k = 0; order[k]; ++k)
         for (const cJSON *d = defs ? defs->child : NULL; d; d = d->next) {
             const cJSON *t = cJSON_GetObjectItemCaseSensitive(d, "title");

@@ -156,6 +156,21 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
     char *absolute = realpath(scene->path, NULL);
     if (absolute) cJSON_AddStringToObject(root, "scene_absolute_path", absolute);
     free(absolute);
+    /* What the results depend on, part by part (scene_inputs.h): the
+     * report refuses this folder once the scene no longer matches it. */
+    cdl_scene_inputs inputs;
+    cdl_status hashed = cdl_scene_inputs_collect(scene, &inputs, err);
+    if (hashed != CDL_OK) {
+        cJSON_Delete(root);
+        return hashed;
+    }
+    cJSON *inputs_json = cdl_scene_inputs_to_json(&inputs);
+    cdl_scene_inputs_release(&inputs);
+    if (!inputs_json) {
+        cJSON_Delete(root);
+        return cdl_error_out_of_memory(err);
+    }
+    cJSON_AddItemToObject(root, "inputs", inputs_json);
     cJSON *grids = cJSON_AddObjectToObject(root, "grids");
     for (size_t g = 0; g < sol->grid_count; ++g) {
         cJSON *o = cJSON_AddObjectToObject(grids, scene->grids[g].name);

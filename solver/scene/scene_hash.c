@@ -1,8 +1,6 @@
 /* scene_hash.c - the scene's geometry, materials and lights, hashed. */
 #include "solver/scene/scene_hash.h"
 
-#include <errno.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "base/content_hash.h"
@@ -50,23 +48,10 @@ static void hash_material(cdl_content_hash *h, const cdl_surface_spec *s)
 static cdl_status hash_file(cdl_content_hash *h, const char *path, const cdl_scene *scene, const char *json_path,
                             cdl_error *err)
 {
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
-        return cdl_error_set(err, CDL_ERR_INPUT, "%s: %s.file: %s: cannot open it to hash its content: %s",
-                             scene->path, json_path, path, strerror(errno));
-    unsigned char buffer[65536];
-    uint64_t total = 0;
-    size_t n;
-    while ((n = fread(buffer, 1, sizeof buffer, fp)) > 0) {
-        cdl_content_hash_raw(h, buffer, n);
-        total += n;
-    }
-    int failed = ferror(fp);
-    fclose(fp);
-    if (failed)
-        return cdl_error_set(err, CDL_ERR_INTERNAL, "%s: %s.file: %s: cannot read it to hash its content",
-                             scene->path, json_path, path);
-    cdl_content_hash_u64(h, total);
+    int code = cdl_content_hash_file(h, path);
+    if (code != 0)
+        return cdl_error_set(err, CDL_ERR_INPUT, "%s: %s.file: %s: cannot read it to hash its content: %s",
+                             scene->path, json_path, path, strerror(code));
     return CDL_OK;
 }
 

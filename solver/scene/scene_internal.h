@@ -29,6 +29,7 @@
 #include "radiometry/vec3.h"
 #include "solver/geometry/ring3.h"
 #include "solver/scene/scene.h"
+#include "solver/scene/scene_inputs.h"
 
 #define CDL_JSON_PATH_SIZE 96
 
@@ -270,6 +271,21 @@ typedef struct cdl_observer_spec {
  * degrees: CIE 117's position index is for a horizontal line of sight. */
 #define CDL_OBSERVER_TILT_MAX_DEG 1.0
 
+/* ---- what the report says about the scene ---------------------------------- */
+
+/* "project": who and what the results are for, printed on the cover of
+ * `candela report` (which may take them from a file instead, field by
+ * field). Free text; none of it changes a result. NULL when not given. */
+typedef struct cdl_scene_project {
+    char *project, *client, *designer, *date, *notes;
+} cdl_scene_project;
+
+/* A project file: the object a scene's "project" holds, alone
+ * ({"project": "...", "client": "..."}); messages name the file and the
+ * key. The caller frees *out with cdl_scene_project_free. */
+cdl_status cdl_scene_project_load(const char *path, cdl_scene_project *out, cdl_error *err);
+void cdl_scene_project_free(cdl_scene_project *project);
+
 /* ---- the scene ------------------------------------------------------------ */
 
 struct cdl_scene {
@@ -284,6 +300,9 @@ struct cdl_scene {
     cdl_observer_spec *observers;        /* "observers" and the points of observer grids, in order */
     size_t observer_count;
     cdl_solver_settings settings;
+    char *name;                          /* "name": the scene's name for reports; NULL when not given */
+    cdl_scene_project project;           /* "project" */
+    cdl_scene_inputs inputs;             /* the description's parts, hashed (scene_inputs.h) */
 };
 
 

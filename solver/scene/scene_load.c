@@ -1,6 +1,7 @@
 /* scene_load.c - the JSON scene file of DESIGN.md into a cdl_scene.
  *
- * Top level: version (required, 1), surfaces, luminaires, observers
+ * Top level: version (required, 1), name and project (scene_project.c),
+ * surfaces, luminaires, observers
  * (scene_observers.c), grids (at least one unless there are observers; a
  * grid of "type": "observers" places observers), solver. Luminaire keys by type (all take
  * maintenance_factor in (0, 1], default 1):
@@ -52,8 +53,8 @@
 /* Room in the key tables of luminaires and grids, NULL included. */
 #define LUMINAIRE_KEYS_MAX 16
 
-static const char *const document_keys[] = {"$schema", "version", "surfaces", "luminaires", "grids", "observers",
-                                            "solver", NULL};
+static const char *const document_keys[] = {"$schema", "version", "name",   "project", "surfaces",
+                                            "luminaires", "grids", "observers", "solver", NULL};
 static const char *const settings_keys[] = {"method", "quality", "target_error", "bounces", "seed", "threads",
                                             "direct_samples", "ao_samples", "surface_maps", NULL};
 static const char *const point_keys[] = {"p", "n", NULL};
@@ -659,6 +660,7 @@ static cdl_status read_document(const cdl_scene_parse *ctx, const cJSON *root, c
     const cJSON *version = field(root, "", "version", p);
     if (!cJSON_IsNumber(version) || version->valuedouble != 1.0)
         return cdl_scene_json_fail(ctx, p, "the scene format version 1", version);
+    if (cdl_scene_json_read_about(ctx, root, scene) != CDL_OK) return CDL_ERR_INPUT;
 
     const cJSON *list = field(root, "", "surfaces", p);
     if (array_items(ctx, list, p, "a list of surfaces", 0, sizeof *scene->surfaces, (void **)&scene->surfaces,
@@ -807,6 +809,7 @@ cdl_status cdl_scene_load_string(const char *json, const char *path, cdl_scene *
     }
     cdl_scene_parse ctx = {path, scene->base_dir, err};
     cdl_status st = read_document(&ctx, root, scene);
+    if (st == CDL_OK) st = cdl_scene_inputs_from_document(root, &scene->inputs, err);
     cJSON_Delete(root);
     if (st != CDL_OK) {
         cdl_scene_release(scene);
@@ -857,6 +860,9 @@ void cdl_scene_release(cdl_scene *scene)
     free(scene->grids);
     for (size_t i = 0; i < scene->observer_count; ++i) free(scene->observers[i].name);
     free(scene->observers);
+    free(scene->name);
+    cdl_scene_project_free(&scene->project);
+    cdl_scene_inputs_release(&scene->inputs);
     free(scene->path);
     free(scene->base_dir);
     free(scene);
@@ -870,6 +876,7 @@ void cdl_scene_keys_collect(cdl_scene_keys *out)
     size_t n = 0;
     out->sets[n++] = (cdl_scene_key_set){"scene", document_keys};
     out->sets[n++] = (cdl_scene_key_set){"solver", settings_keys};
+    out->sets[n++] = (cdl_scene_key_set){"project", cdl_scene_project_keys};
     out->sets[n++] = (cdl_scene_key_set){"grid point", point_keys};
     out->sets[n++] = (cdl_scene_key_set){"array", cdl_scene_array_keys};
     out->sets[n++] = (cdl_scene_key_set){"requirements", cdl_scene_requirements_keys};

@@ -142,6 +142,12 @@ size_t cdl_scene_surface_key_sets(cdl_scene_keys *keys, size_t first);
  * starting with '.' or '-' (grids, observers, surface maps). */
 int cdl_scene_name_ok(const char *name);
 
+/* ---- the scene's name and project (scene_project.c) ------------------------------------ */
+
+extern const char *const cdl_scene_project_keys[];
+/* The top-level "name" and "project" of `root` into the scene. */
+cdl_status cdl_scene_json_read_about(const cdl_scene_parse *ctx, const cJSON *root, cdl_scene *scene);
+
 /* ---- observers (scene_observers.c) --------------------------------------------------- */
 
 extern const char *const cdl_scene_observer_keys[];

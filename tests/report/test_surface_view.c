@@ -12,7 +12,6 @@
 #include "radiometry/constants.h"
 #include "report/surface_view.h"
 
-#define CONFIG CANDELA_SOURCE_DIR "/data/ocio/config.ocio"
 
 /* A 6 x 5 x 2.8 m room as the six faces of a box seen from inside, each
  * face split in two triangles, and a 2 x 1 m table top; E = 100 + 20 x +
@@ -97,7 +96,7 @@ int main(void)
     cdl_view_mesh meshes[2] = {{"room", r.xyz, 24, r.tri, 12, r.E}, {"table", r.table_xyz, 4, r.table_tri, 2, NULL}};
     cdl_vec3 lamp = {3, 2.5, 2.7};
     cdl_surface_view v;
-    CHECK_OK(cdl_surface_view_prepare(&v, meshes, 2, &lamp, 1, CONFIG, &err), &err);
+    CHECK_OK(cdl_surface_view_prepare(&v, meshes, 2, &lamp, 1, &err), &err);
 
     /* From above (panel 0, looking along +x +y and down): the floor, the
      * far walls (y = D, x = W) and the table; from below (panel 1): the

@@ -9,19 +9,13 @@ the value is exact (u = 0) and carries 4 significant digits).
 
 usage: report_check.py OUTDIR PDF_TEXT  -> prints one line per check, "ok ..." or "FAIL ..."
 """
-import csv, html, json, math, re, sys
+import csv, html, math, re, sys
 
-out, pdf_text_path = sys.argv[1], sys.argv[2]
-summary = json.load(open(out + "/summary.json"))
-page = open(out + "/report.html", encoding="utf-8").read()
-pdf = open(pdf_text_path, encoding="utf-8").read()
-failed = False
+from report_files import Report
 
-
-def say(ok, what):
-    global failed
-    print(("ok " if ok else "FAIL ") + what)
-    failed |= not ok
+out = sys.argv[1]
+report = Report(out, sys.argv[2])
+summary, page, pdf, say = report.summary, report.page, report.pdf, report.say
 
 
 def decimals(text):
@@ -73,4 +67,4 @@ for name, g in summary["grids"].items():
     if m:
         say(m.group(1) == cells[1] and m.group(4) == cells[4],
             "PDF %s: Em %s and U0 %s as in the HTML (%s, %s)" % (name, m.group(1), m.group(4), cells[1], cells[4]))
-sys.exit(1 if failed else 0)
+sys.exit(1 if report.failed else 0)
