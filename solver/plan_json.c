@@ -98,6 +98,7 @@ cdl_status cdl_plan_json_lights(cdl_plan_json *plan, const cdl_solve_state *stat
         cJSON *item = cJSON_CreateObject();
         cJSON_AddStringToObject(item, "light", lights->lights[l].label);
         cJSON_AddStringToObject(item, "kind", lights->kinds[l]);
+        if (lights->lights[l].model) cJSON_AddStringToObject(item, "model", lights->lights[l].model);
         if (lights->lights[l].near_field_unspread)
             cJSON_AddStringToObject(item, "near_field",
                                     "\"always\" asked, but the file gives no luminous opening that is spread "

@@ -27,6 +27,14 @@ const char *cdl_light_strategy_describe(cdl_light_strategy s, const cdl_scene_li
                "(the exact value less the hidden part): surfaces may hide part of this opening";
     if (opening && s == CDL_STRATEGY_SAMPLED)
         return "sampled with shadow rays: no exact value for this luminous solid's light while surfaces may hide it";
+    /* The sun as a disk: its own words (direct_exact_route.c). */
+    if (light && light->is_sun_disk && s == CDL_STRATEGY_EXTENDED_EXACT)
+        return "exact (E_n cos theta, the disk clipped by the receiving plane where it crosses it), nothing can "
+               "hide it";
+    if (light && light->is_sun_disk && s == CDL_STRATEGY_EXTENDED_TESTED)
+        return "exact where the sun's disk is in full view, its visible part past few planar occluders (the disk as "
+               "a 240-gon: the penumbra to 1e-4), else sampled within the disk with shadow rays: surfaces may hide "
+               "the sun";
     return cdl_light_strategy_name(s);
 }
 
@@ -96,7 +104,8 @@ void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points,
             strategies[l] = CDL_STRATEGY_SAMPLED;
         else if (!may_occlude)
             strategies[l] = CDL_STRATEGY_EXTENDED_EXACT;
-        else if (light->outline_count == 0 && !light->outline_is_sphere && !light->is_environment)
+        else if (light->outline_count == 0 && !light->outline_is_sphere && !light->is_environment &&
+                 !light->is_sun_disk)
             strategies[l] = CDL_STRATEGY_SAMPLED;
         else
             strategies[l] = CDL_STRATEGY_EXTENDED_TESTED;

@@ -158,7 +158,7 @@ static cdl_direct_route sky_route(const cdl_scene_light *light, cdl_vec3 p, cdl_
 {
     cdl_visible_face faces[5];
     if (!sky_faces(light, p, n, near, occ, count, faces)) return CDL_ROUTE_TOO_COMPLEX;
-    if (!light->is_image && !light->is_overcast) {
+    if (!light->is_image && !light->sky_varies) {
         double omega = 0.0;
         for (int k = 0; k < 5; ++k) omega += cdl_visible_face_projected_solid_angle(&faces[k], n);
         faces_release(faces);
@@ -192,6 +192,48 @@ static cdl_direct_route sky_route(const cdl_scene_light *light, cdl_vec3 p, cdl_
     }
     *region = r;
     return sun ? CDL_ROUTE_SKY_SUN : CDL_ROUTE_SKY_REGION;
+}
+
+/* The sun's disk as SUN_SECTORS convex sectors of SUN_SECTOR_EDGES edges
+ * along its rim each (the centre and 31 rim points: CDL_VISIBLE_MAX_VERTICES),
+ * a 240-gon of the disk's area. The visible fraction of the polygon stands
+ * for the disk's: an occluder's edge across the disk moves by at most the
+ * polygon's distance from the circle, r (1 - cos(pi / 240)) / 2 = 4.3e-5 r
+ * (the equal-area polygon lies within that of its circle), so the
+ * fraction, and E in the penumbra, is within about 1e-4 of the round
+ * disk's. */
+#define SUN_SECTORS 8
+#define SUN_SECTOR_EDGES 30
+
+/* The sun past the occluders: E_0 times the visible fraction of its disk's
+ * projected solid angle. The disk lies on the plane at unit distance
+ * towards the sun, radius tan(alpha); nothing between p and infinity may
+ * hide it (an unbounded face, as the sky's). */
+static cdl_direct_route sun_route(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n, double near,
+                                  const cdl_occluder_triangle *occ, size_t count, double unoccluded, double *E)
+{
+    cdl_frame f = cdl_frame_from_normal(light->sun_dir);
+    cdl_vec3 c = cdl_vec3_add(p, light->sun_dir);
+    const int edges = SUN_SECTORS * SUN_SECTOR_EDGES;
+    /* the equal-area polygon: (N / 2) R^2 sin(2 pi / N) = pi r^2 */
+    double r = tan(light->sun_half_angle);
+    double R = r * sqrt(CDL_TWO_PI / (edges * sin(CDL_TWO_PI / edges)));
+    cdl_visible_face face;
+    cdl_visible_face_init(&face, p, cdl_vec3_neg(light->sun_dir), c, 0, near);
+    for (int k = 0; k < SUN_SECTORS; ++k) {
+        cdl_vec3 pts[SUN_SECTOR_EDGES + 2];
+        pts[0] = c;
+        for (int j = 0; j <= SUN_SECTOR_EDGES; ++j) {
+            double a = CDL_TWO_PI * (k * SUN_SECTOR_EDGES + j) / edges;
+            pts[j + 1] = cdl_vec3_add(c, cdl_vec3_add(cdl_vec3_scale(f.s, R * cos(a)), cdl_vec3_scale(f.t, R * sin(a))));
+        }
+        cdl_visible_face_add_polygon(&face, pts, SUN_SECTOR_EDGES + 2);
+    }
+    double whole = cdl_visible_face_projected_solid_angle(&face, n);
+    double visible = 0.0;
+    if (!face_visible(&face, occ, count, n, &visible)) return CDL_ROUTE_TOO_COMPLEX;
+    *E = whole > 0.0 && visible > 0.0 ? unoccluded * fmin(1.0, visible / whole) : 0.0;
+    return CDL_ROUTE_VISIBLE_POLYGON;
 }
 
 /* The corners of triangle t of a triangle-set shape. */
@@ -308,7 +350,7 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     cdl_vec3 opening[4];
     int is_opening = !light->is_environment && light->owner == UINT32_MAX &&
                      cdl_emitter_opening_bounding_rectangle(light->emitter, opening);
-    if (!light->is_environment && !is_opening) {
+    if (!light->is_environment && !is_opening && !light->is_sun_disk) {
         if (light->owner == UINT32_MAX || light->outline_is_sphere) return CDL_ROUTE_CURVED_EMITTER;
         piece = cdl_scene_geometry_piece(ctx->geometry, light->owner);
         if (piece->shape.kind != CDL_SHAPE_RECT &&
@@ -330,6 +372,7 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     *occluders = (uint32_t)count;
     double near = NEAR_FRACTION * cdl_ray_offsets_epsilon(&ctx->offsets, p);
     if (light->is_environment) return sky_route(light, p, n, near, occ, count, unoccluded, E, sky);
+    if (light->is_sun_disk) return sun_route(light, p, n, near, occ, count, unoccluded, E);
     if (is_opening) return opening_visible(light, opening, p, n, near, occ, count, E);
     double omega = 0.0;
     cdl_direct_route route = CDL_ROUTE_VISIBLE_POLYGON;

@@ -10,7 +10,7 @@
 
 static cdl_emitter *make_sun(cdl_vec3 dir, double E)
 {
-    cdl_directional_params p = {dir, cdl_lux(E)};
+    cdl_directional_params p = {dir, cdl_lux(E), 0.0};
     cdl_emitter *e = NULL;
     cdl_error err;
     CHECK_OK(cdl_emitter_create_directional(&p, &e, &err), &err);
@@ -90,7 +90,7 @@ static void test_bad_parameters(void)
 {
     cdl_emitter *e = NULL;
     cdl_error err;
-    cdl_directional_params p = {{0, 0, 0}, cdl_lux(100.0)};
+    cdl_directional_params p = {{0, 0, 0}, cdl_lux(100.0), 0.0};
     CHECK(cdl_emitter_create_directional(&p, &e, &err) == CDL_ERR_INPUT);
     CHECK_MSG(strstr(err.message, "direction"), "%s", err.message);
     p.direction = cdl_vec3_make(0, 0, -1);

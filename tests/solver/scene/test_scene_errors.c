@@ -241,14 +241,16 @@ static const error_case cases[] = {
     {LUMINAIRE("\"type\": \"environment\", \"luminance_cd_m2\": 1, \"up\": [0,0,0]"),
      "luminaires[1].up: expected a non-zero vector"},
     {LUMINAIRE("\"type\": \"environment\", \"sky\": \"cie_clear\", \"zenith_luminance_cd_m2\": 1"),
-     "luminaires[1].sky: expected one of the strings \"uniform\", \"cie_overcast\", found the string \"cie_clear\""},
+     "luminaires[1].sky: expected one of the strings \"uniform\", \"cie_overcast\", \"cie\", \"perez\", found the "
+     "string \"cie_clear\""},
     {LUMINAIRE("\"type\": \"environment\", \"sky\": \"cie_overcast\", \"luminance_cd_m2\": 1"),
      "luminaires[1].luminance_cd_m2: expected no \"luminance_cd_m2\", \"file\", \"scale\" or \"hemisphere\" with "
      "\"sky\": \"cie_overcast\""},
     {LUMINAIRE("\"type\": \"environment\", \"sky\": \"cie_overcast\""),
      "luminaires[1].zenith_luminance_cd_m2: expected"},
     {LUMINAIRE("\"type\": \"environment\", \"luminance_cd_m2\": 1, \"zenith_luminance_cd_m2\": 1"),
-     "luminaires[1].zenith_luminance_cd_m2: expected \"zenith_luminance_cd_m2\" only with \"sky\": \"cie_overcast\""},
+     "luminaires[1].zenith_luminance_cd_m2: expected \"zenith_luminance_cd_m2\" only with \"sky\": \"cie_overcast\" "
+     "or \"cie\""},
     {LUMINAIRE("\"type\": \"environment\", \"luminance_cd_m2\": 1, \"scale\": 2"),
      "luminaires[1].scale: expected \"scale\" only with an image \"file\""},
     {LUMINAIRE("\"type\": \"environment\", \"file\": \"sky.exr\", \"scale\": -2"), "luminaires[1].scale: expected a number >= 0"},
