@@ -195,15 +195,16 @@ static cdl_direct_route sky_route(const cdl_scene_light *light, cdl_vec3 p, cdl_
 }
 
 /* The sun's disk as SUN_SECTORS convex sectors of SUN_SECTOR_EDGES edges
- * along its rim each (the centre and 31 rim points: CDL_VISIBLE_MAX_VERTICES),
- * a 240-gon of the disk's area. The visible fraction of the polygon stands
+ * along its rim each (the centre and 21 rim points: 22 vertices, leaving
+ * room under CDL_VISIBLE_MAX_VERTICES for the corners occluders' edges
+ * cut into a piece), a 240-gon of the disk's area. The visible fraction of the polygon stands
  * for the disk's: an occluder's edge across the disk moves by at most the
  * polygon's distance from the circle, r (1 - cos(pi / 240)) / 2 = 4.3e-5 r
  * (the equal-area polygon lies within that of its circle), so the
  * fraction, and E in the penumbra, is within about 1e-4 of the round
  * disk's. */
-#define SUN_SECTORS 8
-#define SUN_SECTOR_EDGES 30
+#define SUN_SECTORS 12
+#define SUN_SECTOR_EDGES 20
 
 /* The sun past the occluders: E_0 times the visible fraction of its disk's
  * projected solid angle. The disk lies on the plane at unit distance
