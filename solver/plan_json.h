@@ -25,6 +25,10 @@ cdl_status cdl_plan_json_lights(cdl_plan_json *plan, const cdl_solve_state *stat
  * and counts, its vertical outputs. */
 void cdl_plan_json_grid(cdl_plan_json *plan, const cdl_solve_state *state, const cdl_grid_job *job);
 
+/* A grid's daylight factor, in words (daylight_factor.h), under
+ * "daylight_factor": {GRID: WORDS}. */
+void cdl_plan_json_daylight_factor(cdl_plan_json *plan, const char *grid, const char *words);
+
 /* The totals after every grid: evaluations, interreflection, the cache file. */
 void cdl_plan_json_totals(cdl_plan_json *plan, const cdl_solve_state *state);
 

@@ -27,6 +27,7 @@ cdl_status cdl_grid_solution_alloc_outputs(cdl_grid_solution *gs, const cdl_grid
     if (spec->want_luminance &&
         (!(gs->L = calloc(n, sizeof(double))) || !(gs->rho = calloc(n, sizeof(double)))))
         return cdl_error_out_of_memory(err);
+    if (spec->want_daylight_factor && !(gs->DF = calloc(n, sizeof(double)))) return cdl_error_out_of_memory(err);
     return CDL_OK;
 }
 
@@ -73,6 +74,7 @@ void cdl_solution_release(cdl_solution *s)
         free(gs->Esz_stderr);
         free(gs->L);
         free(gs->rho);
+        free(gs->DF);
     }
     free(s->grids);
     free(s->plan_json);

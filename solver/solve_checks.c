@@ -3,8 +3,9 @@
  * After a solve, every luminaire (and emitting surface) is asked whether it
  * reaches any grid point: a delta light at a point in front of the point's
  * plane whose shadow ray is clear (the same test E uses); an extended light
- * at a point where its closed form is above 0 and one of up to 16
- * stratified samples of it is in view. A light that reaches none is named
+ * at a point where its closed form is above 0 and the exact route finds
+ * part of it in view (cdl_direct_light_seen), or, where that cannot tell,
+ * one of up to 16 stratified samples of it is in view. A light that reaches none is named
  * in a warning that says why: its light meets no grid point (facing away,
  * the grids outside its beam) or surfaces hide it from every point (above
  * a ceiling, outside a closed room), and when its position lies far
@@ -47,6 +48,10 @@ static reach light_reaches(const cdl_direct_context *ctx, size_t l, cdl_light_st
     cdl_illuminance E;
     if (cdl_emitter_exact_illuminance(light->emitter, p, n, &E, NULL) != CDL_OK || !(E.lx > 0.0)) return REACH_NONE;
     if (st == CDL_STRATEGY_EXTENDED_EXACT || !ctx->geometry) return REACH_LIT;
+    /* the visible part as the exact route finds it (a window's sky that
+     * the probes below could miss), where it can tell */
+    int seen = cdl_direct_light_seen(ctx, light, st, p, n);
+    if (seen >= 0) return seen ? REACH_LIT : REACH_HIDDEN;
     for (int j = 0; j < EXTENDED_PROBES; ++j)
         for (int i = 0; i < EXTENDED_PROBES; ++i) {
             cdl_light_sample s;

@@ -102,6 +102,14 @@ typedef enum cdl_direct_route {
     CDL_ROUTE_COUNT
 } cdl_direct_route;
 
+/* Whether any part of an extended light with a closed form reaches p
+ * (normal n) past the surfaces, as the exact route sees it: 1 when it
+ * finds a visible part that gives light, 0 when it finds none, -1 when it
+ * cannot tell (too many or curved occluders: the caller probes with
+ * samples). A window's worth of sky that a few samples would miss counts. */
+int cdl_direct_light_seen(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy strategy,
+                          cdl_vec3 p, cdl_vec3 n);
+
 /* Most occluders between a point and a light for the exact route. */
 #define CDL_EXACT_ROUTE_MAX_OCCLUDERS 64
 

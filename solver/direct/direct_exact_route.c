@@ -406,6 +406,27 @@ int cdl_direct_exact_term(const cdl_direct_context *ctx, const cdl_scene_light *
     return -1;
 }
 
+int cdl_direct_light_seen(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy strategy,
+                          cdl_vec3 p, cdl_vec3 n)
+{
+    cdl_illuminance E0;
+    if (cdl_emitter_exact_illuminance(light->emitter, p, n, &E0, NULL) != CDL_OK || !(E0.lx > 0.0)) return 0;
+    if (strategy == CDL_STRATEGY_EXTENDED_EXACT) return 1;
+    if (strategy != CDL_STRATEGY_EXTENDED_TESTED) return -1;
+    cdl_direct_sample_stats stats = {0};
+    double E = 0.0;
+    cdl_sky_region *region = NULL;
+    int route = cdl_direct_exact_term(ctx, light, strategy, p, n, E0.lx, &E, &region, &stats);
+    if (route == 2) {
+        int seen = cdl_sky_region_projected_solid_angle(region) > 0.0;
+        cdl_sky_region_release(region);
+        return seen;
+    }
+    if (route == 0) return 1;
+    if (route == 1) return E > 0.0;
+    return -1;
+}
+
 void cdl_direct_stats_add(cdl_direct_sample_stats *a, const cdl_direct_sample_stats *b, size_t light_count)
 {
     a->rays += b->rays;

@@ -42,6 +42,7 @@ typedef struct cdl_grid_result {
     const double *Ez;         /* cylindrical illuminance, lux ("cylindrical") */
     const double *Esz;        /* semicylindrical illuminance, lux ("semicylindrical") */
     const double *L;          /* luminance rho E / pi, cd/m^2 ("luminance") */
+    const double *DF;         /* daylight factor, percent ("daylight_factor") */
     const double *Ez_stderr;  /* with Ez where part of it is sampled: its standard error, lux */
     const double *Esz_stderr; /* with Esz likewise */
     int map_log_scale;        /* NAME.png: 1 a logarithmic lux scale, 0 (default) linear (lux_scale.h) */
@@ -64,7 +65,7 @@ typedef struct cdl_value_stats {
 typedef struct cdl_grid_stats {
     size_t count;
     double area_m2;           /* sum of the points' area weights (0 for points grids) */
-    cdl_value_stats Ez, Esz, L; /* of the optional columns given (zeros otherwise) */
+    cdl_value_stats Ez, Esz, L, DF; /* of the optional columns given (zeros otherwise) */
     double E_avg_lx;          /* area-weighted mean (Em) */
     double E_min_lx;
     double E_max_lx;
@@ -88,7 +89,7 @@ void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats)
 
 /* NAME.csv: header CDL_GRID_CSV_COLUMNS
  * then, for those given, area_m2, AO, Ez_lx, Ez_stderr_lx, Esz_lx,
- * Esz_stderr_lx, L_cd_m2; one row per point in grid order, "\n" line
+ * Esz_stderr_lx, L_cd_m2, DF_percent; one row per point in grid order, "\n" line
  * ends. Each number is the shortest of "%.15g", "%.16g", "%.17g" that reads
  * back (strtod) as exactly the same double, so a closed-form result
  * survives the trip to text. Expects the "C" numeric locale (the library
@@ -105,6 +106,7 @@ cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *
  *   Ez          cylindrical illuminance, lux (when given)
  *   Esz         semicylindrical illuminance, lux (when given)
  *   L           luminance, cd/m^2 (when given)
+ *   DF          daylight factor, percent (when given)
  *   mask        1 inside the grid, 0 outside (outside pixels hold 0 in every channel)
  * String attributes units=lx, quantity=illuminance and each key/value given
  * (the solver's settings); a key may not repeat "units" or "quantity". A

@@ -212,6 +212,7 @@ typedef struct cdl_grid_spec {
     int want_cylindrical;                /* "cylindrical": mean vertical illuminance E_z (EN 12464-1) */
     int want_semicylindrical;            /* "semicylindrical": towards the point's normal, horizontal part */
     int want_luminance;                  /* "luminance": rho E / pi of the surface the grid lies on */
+    int want_daylight_factor;            /* "daylight_factor": 100 E / E_h under the CIE overcast sky */
     /* "requirements" (EN 12464-1 for a task area), which `candela report`
      * checks: maintained illuminance in lux and uniformity Emin / Em;
      * 0 when not given. */

@@ -469,11 +469,12 @@ static cdl_status read_grid_outputs(const cdl_scene_parse *ctx, const cJSON *nod
     if (!node) return CDL_OK;
     if (cdl_scene_json_check_array(ctx, node, path,
                                    "a list of extra outputs (\"ao\", \"cylindrical\", \"semicylindrical\", "
-                                   "\"luminance\")",
+                                   "\"luminance\", \"daylight_factor\")",
                                    0) != CDL_OK)
         return CDL_ERR_INPUT;
-    static const char *const outputs[] = {"ao", "cylindrical", "semicylindrical", "luminance", NULL};
-    int *wants[] = {&out->want_ao, &out->want_cylindrical, &out->want_semicylindrical, &out->want_luminance};
+    static const char *const outputs[] = {"ao", "cylindrical", "semicylindrical", "luminance", "daylight_factor", NULL};
+    int *wants[] = {&out->want_ao, &out->want_cylindrical, &out->want_semicylindrical, &out->want_luminance,
+                    &out->want_daylight_factor};
     size_t i = 0;
     char item[CDL_SCENE_PATH_MAX];
     for (const cJSON *e = node->child; e; e = e->next, ++i) {

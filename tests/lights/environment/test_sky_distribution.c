@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "gauss16.h"
 #include "lights/environment/sky_distribution.h"
 #include "radiometry/constants.h"
 
@@ -52,25 +53,11 @@ static double relative(const double *p, double Z, double az, double Zs, double a
     return f(p, chi) * phi(p, Z) / (f(p, Zs) * phi(p, 0.0));
 }
 
-/* The reference rule: the 16-point Gauss-Legendre rule (Abramowitz and
- * Stegun, Table 25.4) composed over 6 equal parts, 96 points on [0, 1]. */
+/* The reference rule: the 16-point Gauss-Legendre rule composed over 6
+ * equal parts, 96 points on [0, 1] (gauss16.h). */
 #define REF_PARTS 6
 #define REF_N (16 * REF_PARTS)
 static double gx[REF_N], gw[REF_N];
-
-static void legendre_nodes(void)
-{
-    static const double x[8] = {0.0950125098376374, 0.2816035507792589, 0.4580167776572274, 0.6178762444026438,
-                                0.7554044083550030, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499};
-    static const double w[8] = {0.1894506104550685, 0.1826034150449236, 0.1691565193950025, 0.1495959888165767,
-                                0.1246289712555339, 0.0951585116824928, 0.0622535239386479, 0.0271524594117541};
-    for (int part = 0; part < REF_PARTS; ++part)
-        for (int i = 0; i < 16; ++i) {
-            double t = i < 8 ? -x[7 - i] : x[i - 8], wt = i < 8 ? w[7 - i] : w[i - 8];
-            gx[16 * part + i] = (part + 0.5 * (1.0 + t)) / REF_PARTS;
-            gw[16 * part + i] = 0.5 * wt / REF_PARTS;
-        }
-}
 
 /* int over Z in [z0, z1], az in [a0, a1] of L/L_z (n.w) sin Z, n = (nz, facing azimuth an, horizontal part nh) */
 static double panel(const double *p, double z0, double z1, double a0, double a1, double Zs, double azs, double nz,
@@ -247,7 +234,7 @@ static void test_sampling(void)
 
 int main(void)
 {
-    legendre_nodes();
+    gauss16_composite(REF_PARTS, gx, gw);
     test_illuminance();
     test_luminance();
     test_bounds();
