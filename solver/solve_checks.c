@@ -42,7 +42,7 @@ static reach light_reaches(const cdl_direct_context *ctx, size_t l, cdl_light_st
         cdl_delta_light d;
         if (!cdl_emitter_eval_delta(light->emitter, p, n, &d) || !(d.E.lx > 0.0)) return REACH_NONE;
         if (st != CDL_STRATEGY_DELTA_SHADOWED || !ctx->geometry) return REACH_LIT;
-        return cdl_scene_geometry_ray_occluded(ctx->geometry, p, n, d.to_light, d.distance) ? REACH_HIDDEN : REACH_LIT;
+        return cdl_scene_geometry_transmission(ctx->geometry, p, d.to_light, d.distance) > 0.0 ? REACH_LIT : REACH_HIDDEN;
     }
     (void)stats;
     cdl_illuminance E;
@@ -59,7 +59,7 @@ static reach light_reaches(const cdl_direct_context *ctx, size_t l, cdl_light_st
             if (!cdl_emitter_sample(light->emitter, p, n, u1, u2, &s) || !(s.pdf > 0.0) ||
                 !(cdl_vec3_dot(s.to_light, n) > 0.0))
                 continue;
-            if (!cdl_scene_geometry_ray_occluded(ctx->geometry, p, n, s.to_light, s.distance)) return REACH_LIT;
+            if (cdl_scene_geometry_transmission(ctx->geometry, p, s.to_light, s.distance) > 0.0) return REACH_LIT;
         }
     return REACH_HIDDEN;
 }

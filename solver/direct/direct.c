@@ -165,7 +165,7 @@ static double delta_contribution(const cdl_direct_context *ctx, const cdl_scene_
 {
     cdl_delta_light d;
     double E = delta_unshadowed(light, p, n, &d);
-    if (E > 0.0 && st == CDL_STRATEGY_DELTA_SHADOWED && cdl_direct_shadowed(ctx, p, n, d.to_light, d.distance, stats)) return 0.0;
+    if (E > 0.0 && st == CDL_STRATEGY_DELTA_SHADOWED) E *= cdl_direct_transmission(ctx, p, n, d.to_light, d.distance, stats);
     return E;
 }
 
@@ -225,7 +225,7 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
             double e = delta_unshadowed(light, p, n, &d);
             if (!(e > 0.0)) continue;
             free_E += e;
-            if (!ctx->geometry || !cdl_direct_shadowed(ctx, p, n, d.to_light, d.distance, stats)) E += e;
+            E += e * cdl_direct_transmission(ctx, p, n, d.to_light, d.distance, stats);
             continue;
         }
         if (!cdl_scene_light_applies(light, p)) continue;
@@ -239,21 +239,20 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
         double u[2];
         cdl_rng_uniform2(key, (uint64_t)l, u);
         cdl_light_sample s;
-        double f = 0.0;
-        int visible = 1;
+        double f = 0.0, visible = 1.0; /* V: the sample's transmission, 0 or 1 but through glass */
         if (cdl_emitter_sample(light->emitter, p, n, u[0], u[1], &s) && s.pdf > 0.0) {
             double c = cdl_vec3_dot(n, s.to_light);
             if (c > 0.0) {
                 f = s.L.cd_m2 * c / s.pdf;
-                visible = !ctx->geometry || !cdl_direct_shadowed(ctx, p, n, s.to_light, s.distance, stats);
+                visible = cdl_direct_transmission(ctx, p, n, s.to_light, s.distance, stats);
             }
         }
         if (closed) {
             free_E += exact.lx;
-            E += visible ? exact.lx : exact.lx - f;
+            E += exact.lx - f * (1.0 - visible);
         } else {
             free_E += f;
-            E += visible ? f : 0.0;
+            E += f * visible;
         }
     }
     if (unoccluded) *unoccluded = free_E;
@@ -332,11 +331,16 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
             }
         }
     }
-    /* 2. The shadow rays, one after another. */
+    /* 2. The shadow rays, one after another (through glass, each carries
+     *    the panes' transmittance). */
+    int glass = ctx->geometry && cdl_scene_geometry_has_glass(ctx->geometry);
     for (size_t k = 0; k < pending; ++k) {
         const cdl_ray_record *r = &scratch->rays[k];
         if (ctx->log) cdl_direct_record_ray(ctx->log, r->origin, r->dir, r->t_near, r->t_far);
-        if (cdl_ray_scene_occluded(ctx->rays, r->origin, r->dir, r->t_near, r->t_far))
+        if (glass)
+            scratch->contribution[scratch->ray_slot[k]] *=
+                cdl_scene_geometry_transmission(ctx->geometry, r->origin, r->dir, r->t_far);
+        else if (cdl_ray_scene_occluded(ctx->rays, r->origin, r->dir, r->t_near, r->t_far))
             scratch->contribution[scratch->ray_slot[k]] = 0.0;
     }
     stats->rays += pending;

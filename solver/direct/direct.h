@@ -99,6 +99,7 @@ typedef enum cdl_direct_route {
     CDL_ROUTE_TOO_COMPLEX,            /* sampled: the visible part had too many pieces */
     CDL_ROUTE_SKY_PEAK,               /* sampled: a sky far brighter in too many pixels over the visible part */
     CDL_ROUTE_DISABLED,               /* sampled: the context asked for it (no_exact_route) */
+    CDL_ROUTE_GLASS,                  /* sampled: seen through glass, whose transmittance varies with the angle */
     CDL_ROUTE_COUNT
 } cdl_direct_route;
 

@@ -370,6 +370,9 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     for (size_t i = 0; i < count; ++i)
         if (cdl_scene_geometry_piece(ctx->geometry, occ[i].owner)->shape.kind == CDL_SHAPE_DISK)
             return CDL_ROUTE_CURVED_OCCLUDER;
+    /* a pane passes part of the light, by angle: no polygon is exact */
+    for (size_t i = 0; i < count; ++i)
+        if (cdl_scene_geometry_piece(ctx->geometry, occ[i].owner)->transmittance > 0.0) return CDL_ROUTE_GLASS;
     *occluders = (uint32_t)count;
     double near = NEAR_FRACTION * cdl_ray_offsets_epsilon(&ctx->offsets, p);
     if (light->is_environment) return sky_route(light, p, n, near, occ, count, unoccluded, E, sky);
@@ -451,6 +454,8 @@ void cdl_direct_route_describe(const cdl_direct_route_tally *t, char *out, size_
         [CDL_ROUTE_SKY_PEAK] = "the sky over the visible part far brighter in more than " STRINGIFY(
             SKY_PEAK_PIXELS) " pixels (a sun's wide aureole)",
         [CDL_ROUTE_DISABLED] = "exact route turned off",
+        [CDL_ROUTE_GLASS] = "seen through glass (its transmittance varies with the angle of incidence: shadow rays "
+                            "carry it)",
     };
     size_t used = 0;
     out[0] = '\0';

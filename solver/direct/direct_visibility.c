@@ -46,6 +46,19 @@ int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, c
     return cdl_ray_scene_occluded(ctx->rays, o, dir, t_near, t_far);
 }
 
+double cdl_direct_transmission(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                               cdl_direct_sample_stats *stats)
+{
+    if (!ctx->geometry) return 1.0;
+    if (!cdl_scene_geometry_has_glass(ctx->geometry)) return cdl_direct_shadowed(ctx, p, n, dir, distance, stats) ? 0.0 : 1.0;
+    cdl_vec3 o;
+    double t_near, t_far;
+    if (!cdl_ray_offsets_shadow_ray(&ctx->offsets, p, n, dir, distance, &o, &t_near, &t_far)) return 1.0;
+    stats->rays++;
+    if (ctx->log) cdl_direct_record_ray(ctx->log, o, dir, t_near, t_far);
+    return cdl_scene_geometry_transmission(ctx->geometry, o, dir, t_far);
+}
+
 /* Move planes first .. first + count - 1 of a region outward by tol, so
  * that the index's shrink by tol leaves them where they were. */
 static void unshrink_planes(cdl_convex_region *region, int first, int count, double tol)

@@ -75,6 +75,8 @@ typedef struct cdl_surface_spec {
     double reflectance;                  /* diffuse, [0, 1]; box: see face_reflectance */
     int two_sided;                       /* default 1 */
     double luminance_cd_m2;              /* > 0: the front side emits (Lambertian) */
+    double transmittance;                /* > 0: a thin pane of glass of this normal transmittance
+                                          * (radiometry/glass.h); its reflectance 0 */
 } cdl_surface_spec;
 
 /* ---- luminaires --------------------------------------------------------- */

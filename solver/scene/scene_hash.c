@@ -42,6 +42,7 @@ static void hash_material(cdl_content_hash *h, const cdl_surface_spec *s)
     cdl_content_hash_f64(h, s->reflectance);
     for (int f = 0; f < CDL_BOX_FACES; ++f) cdl_content_hash_f64(h, s->face_reflectance[f]);
     cdl_content_hash_u64(h, (uint64_t)s->two_sided);
+    cdl_content_hash_f64(h, s->transmittance);
 }
 
 /* The bytes of a file, with their count. */

@@ -5,7 +5,8 @@
 # CIE type out of range, the sun given twice or not at all where the sky
 # needs it, a Perez sky with the sun below the horizon or without its day
 # of the year, a Perez input outside the model, keys of one sky on
-# another); and a good scene solves, its plan naming the model.
+# another, glass clearer than clear glass or with a reflectance); and a
+# good scene solves, its plan naming the model.
 source "$(dirname "$0")/harness.sh"
 
 grid='"grids": [{"name": "g", "type": "points", "points": [{"p": [0,0,0], "n": [0,0,1]}]}], "solver": {"method": "direct"}'
@@ -49,6 +50,20 @@ refused north_up '{"type": "environment", "sky": "cie", "cie_type": 1, "zenith_l
   'luminaires[0].north: expected a direction of north not along "up"'
 refused diameter '{"type": "directional", "direction": [0,0,-1], "illuminance_lx": 1000, "angular_diameter_deg": 30}' \
   'luminaires[0].angular_diameter_deg: expected an angular diameter in [0, 10] degrees'
+
+# Glass: a transmittance beyond clear glass, or with a reflectance.
+# refused_surface NAME SURFACE FRAGMENT: the same with a surface, under a uniform sky
+refused_surface() {
+  local plain=$grid
+  grid='"surfaces": ['"$2"'], '"$plain"
+  refused "$1" '{"type": "environment", "luminance_cd_m2": 100}' "$3"
+  grid=$plain
+}
+pane='"type": "rect", "origin": [0,0,2], "u": [1,0,0], "v": [0,1,0]'
+refused_surface glass_clearer '{'"$pane"', "transmittance": 0.95}' \
+  'surfaces[0].transmittance: expected a normal transmittance in (0, 0.9183]'
+refused_surface glass_reflects '{'"$pane"', "transmittance": 0.8, "reflectance": 0.1}' \
+  'surfaces[0].reflectance: expected no "reflectance" or "luminance_cd_m2" on glass'
 
 # A good one: Perez from irradiances with the sun by the SPA.
 printf '{"version": 1, "luminaires": [{"type": "environment", "sky": "perez", "direct_normal_irradiance_w_m2": "600 W/m2", "diffuse_horizontal_irradiance_w_m2": 120, %s, "time": "2024-06-21T14:00:00+02:00"}], %s}\n' "$site" "$grid" > "$tmp/good.json"

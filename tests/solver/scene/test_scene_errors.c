@@ -289,7 +289,8 @@ static const error_case cases[] = {
     {GRID_CASE("\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1], \"w\": 1}]"),
      "grids[1].points[0].w: expected a key of a calculation point (p, n)"},
     {GRID_CASE("\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1]}], \"outputs\": [\"lux\"]"),
-     "grids[1].outputs[0]: expected one of the strings \"ao\", \"cylindrical\", \"semicylindrical\", \"luminance\", found the string \"lux\""},
+     "grids[1].outputs[0]: expected one of the strings \"ao\", \"cylindrical\", \"semicylindrical\", \"luminance\", "
+     "\"daylight_factor\", found the string \"lux\""},
     {GRID_CASE("\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1]}], \"spacing\": 1"),
      "grids[1].spacing: expected a key of a points grid (name, type, points, outputs, requirements)"},
     /* solver */
