@@ -65,6 +65,10 @@ typedef struct cdl_perez_sky {
     double coefficients[5];               /* a, b, c, d, e */
 } cdl_perez_sky;
 
+/* The Perez sky of the weather `in` (above): its clearness, brightness and
+ * category, the efficacies and both illuminances and irradiances, and the
+ * sky's coefficients a..e for CDL_SKY_PEREZ (emitter.h). CDL_ERR_INPUT, the
+ * message naming the quantity, for inputs outside the model. */
 cdl_status cdl_perez_sky_compute(const cdl_perez_input *in, cdl_perez_sky *out, cdl_error *err);
 
 #endif
