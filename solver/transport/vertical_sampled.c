@@ -126,7 +126,8 @@ static void emitter_samples(const cdl_vertical_context *ctx, const receiver *r, 
         const cdl_scene_light *light = &d->lights[l];
         if (light->is_environment || cdl_emitter_is_delta(light->emitter) || !cdl_scene_light_applies(light, p))
             continue;
-        cdl_vec3 a = cdl_vec3_sub(cdl_bounds3_centre(light->bounds), p);
+        /* towards the emitter (the sun's disk: its axis; it has no bounds) */
+        cdl_vec3 a = light->is_sun_disk ? light->sun_dir : cdl_vec3_sub(cdl_bounds3_centre(light->bounds), p);
         double len = cdl_vec3_length(a);
         a = len > 0.0 ? cdl_vec3_scale(a, 1.0 / len) : cdl_vec3_make(0, 0, 1);
         for (int h = 0; h < 2; ++h) {
