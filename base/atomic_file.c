@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "base/error_report.h"
 #include "base/strings.h"
 
 static const char temp_suffix[] = ".tmp.XXXXXX";

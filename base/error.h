@@ -37,24 +37,8 @@ typedef struct cdl_error {
     char message[CDL_ERROR_MESSAGE_SIZE];
 } cdl_error;
 
-#if defined(__GNUC__)
-#define CDL_PRINTF(fmt_index, first_arg) __attribute__((format(printf, fmt_index, first_arg)))
-#else
-#define CDL_PRINTF(fmt_index, first_arg)
-#endif
-
 /* Reset to CDL_OK with an empty message. `err` may be NULL. */
 void cdl_error_clear(cdl_error *err);
-
-/* Record a failure and return `status`, so callers can write
- * `return cdl_error_set(err, CDL_ERR_INPUT, "...", ...);`. `err` may be NULL. */
-cdl_status cdl_error_set(cdl_error *err, cdl_status status, const char *fmt, ...) CDL_PRINTF(3, 4);
-
-/* Prepend context ("scene.json: ") to an existing message; returns err->status. */
-cdl_status cdl_error_prefix(cdl_error *err, const char *fmt, ...) CDL_PRINTF(2, 3);
-
-/* Shorthand for the most common resource failure. */
-cdl_status cdl_error_out_of_memory(cdl_error *err);
 
 /* A short name for a status ("bad input", ...). */
 const char *cdl_status_name(cdl_status status);

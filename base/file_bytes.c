@@ -1,4 +1,5 @@
 /* file_bytes.c - read a whole file. */
+#include "base/error_report.h"
 #include "base/file_bytes.h"
 
 #include <errno.h>

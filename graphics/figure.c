@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "base/atomic_file.h"
+#include "base/error_report.h"
 
 typedef struct svg_buffer {
     char *data;

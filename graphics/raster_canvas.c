@@ -1,4 +1,5 @@
 /* raster_canvas.c - an RGB8 image as a cairo RGB24 surface while it is drawn on. */
+#include "base/error_report.h"
 #include "graphics/raster_canvas.h"
 
 #include <cairo.h>

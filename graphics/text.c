@@ -28,6 +28,8 @@ static PangoLayout *layout_for(cairo_t *cr, const char *text, const cdl_text_sty
     if (style->wrap_width > 0.0) {
         pango_layout_set_width(layout, (int)(style->wrap_width * PANGO_SCALE));
         pango_layout_set_wrap(layout, PANGO_WRAP_WORD_CHAR);
+        /* centred text wrapped: each line centred in the block */
+        if (style->align == CDL_TEXT_CENTRE) pango_layout_set_alignment(layout, PANGO_ALIGN_CENTER);
     }
     char *valid = valid_utf8(text);
     pango_layout_set_text(layout, valid, -1);
@@ -49,7 +51,9 @@ double cdl_text_draw(cairo_t *cr, double x, double y, const char *text, const cd
     PangoLayout *layout = layout_for(cr, text, style);
     double w = 0.0, h = 0.0;
     layout_size(layout, &w, &h);
-    double left = style->align == CDL_TEXT_CENTRE ? x - w / 2.0 : style->align == CDL_TEXT_RIGHT ? x - w : x;
+    /* a wrapped centred block is wrap_width wide, its lines centred in it */
+    double block = style->align == CDL_TEXT_CENTRE && style->wrap_width > 0.0 ? style->wrap_width : w;
+    double left = style->align == CDL_TEXT_CENTRE ? x - block / 2.0 : style->align == CDL_TEXT_RIGHT ? x - w : x;
     cairo_move_to(cr, left, y);
     pango_cairo_show_layout(cr, layout);
     cairo_new_path(cr);

@@ -3,7 +3,10 @@
  *   V(lambda)   CIE 1924 / 1931 2-degree photopic, 360-830 nm, 1 nm steps
  *   V'(lambda)  CIE 1951 scotopic, 380-780 nm, 5 nm steps (zero outside)
  * Between tabulated wavelengths the functions are linear; outside their
- * range they are zero. Sources are cited in cie_tables.c.
+ * range they are zero. Sources: V(lambda) as CIE 018:2019 and ISO/CIE
+ * 11664-1:2019 tabulate the 1931 observer's y-bar (the 1 nm values of the
+ * CVRL database); V'(lambda) the CIE 1951 defining table (Wyszecki and
+ * Stiles, Color Science, 2nd ed., table I(4.3.2)).
  *
  * Units: wavelengths in nanometres; efficiencies dimensionless.
  * Ownership: the tables are static and read-only, never freed. Thread

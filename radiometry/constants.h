@@ -20,7 +20,7 @@
  * fixes K_cd = 683 lm/W for monochromatic radiation of 540e12 Hz (BIPM, SI
  * Brochure 9th ed. 2019, 2.3.1). 540 THz is 555.016 nm in standard air, so
  * strictly Km = 683.002 lm/W at the V(lambda) peak (CIE 018:2019 / ISO 23539);
- * Candela uses 683 as the issue and most lighting programs do. */
+ * Candela uses 683, as most lighting programs do. */
 #define CDL_KM_PHOTOPIC_LM_PER_W 683.0
 /* Maximum scotopic luminous efficacy K'm = 1700 lm/W at 507 nm
  * (CIE 1951; 1700.06 lm/W by the 1979 redefinition, ISO 23539:2005). */

@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "base/error_report.h"
+
 /* r0, one face's reflectance at normal incidence */
 static double normal_reflectance(void)
 {

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 
 typedef struct unit_entry {

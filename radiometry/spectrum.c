@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 
 cdl_status cdl_spectrum_validate(const cdl_spectrum *s, cdl_error *err)

@@ -3,7 +3,7 @@
  * Each quantity is a one-field struct. A function that takes a
  * cdl_luminous_intensity cannot be handed a cdl_illuminance: C does not
  * convert between distinct struct types, so the mistake is a compile error
- * (tests/radiometry/test_units_compile_fail.sh proves it).
+ * (Candela's own tests compile such a mistake and require it to fail).
  *
  * Build a value with the constructor named after its unit, cdl_lux(500.0);
  * read it through the field named after its unit, e.lx. Arithmetic that keeps

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "solver/grid/grid.h"
 
 typedef struct segment_list {

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "graphics/text.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "report/report_html.h"
 #include "report/report_input.h"
 #include "report/report_pdf.h"

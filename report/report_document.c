@@ -9,10 +9,14 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "base/error_report.h"
 #include "base/strings.h"
 #include "lights/photometry/photometry_polar.h"
+#include "report/report_builder.h"
+#include "report/report_glare.h"
 #include "report/grid_map.h"
 #include "report/summary_table.h"
+#include "lights/photometry/photometry_metadata.h"
 
 int cdl_report_cell_verdict(const char *cell)
 {
@@ -20,92 +24,6 @@ int cdl_report_cell_verdict(const char *cell)
     if (strncmp(cell, "pass", 4) == 0) return 1;
     if (strncmp(cell, "FAIL", 4) == 0) return -1;
     return 0;
-}
-
-/* ---- building blocks ---------------------------------------------------------------- */
-
-typedef struct builder {
-    cdl_report_document *doc;
-    int failed;                  /* out of memory somewhere: checked once at the end */
-} builder;
-
-static cdl_report_block *add_block(builder *b, cdl_report_block_kind kind)
-{
-    cdl_report_document *d = b->doc;
-    if (d->count == d->capacity) {
-        size_t cap = d->capacity ? 2 * d->capacity : 32;
-        cdl_report_block *grown = realloc(d->blocks, cap * sizeof *grown);
-        if (!grown) {
-            b->failed = 1;
-            return NULL;
-        }
-        d->blocks = grown;
-        d->capacity = cap;
-    }
-    cdl_report_block *block = &d->blocks[d->count++];
-    memset(block, 0, sizeof *block);
-    block->kind = kind;
-    return block;
-}
-
-static char *vformat(builder *b, const char *fmt, va_list ap)
-{
-    va_list copy;
-    va_copy(copy, ap);
-    int n = vsnprintf(NULL, 0, fmt, copy);
-    va_end(copy);
-    char *text = n >= 0 ? malloc((size_t)n + 1) : NULL;
-    if (!text) {
-        b->failed = 1;
-        return NULL;
-    }
-    vsnprintf(text, (size_t)n + 1, fmt, ap);
-    return text;
-}
-
-static void text_block(builder *b, cdl_report_block_kind kind, int level, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-static void text_block(builder *b, cdl_report_block_kind kind, int level, const char *fmt, ...)
-{
-    cdl_report_block *block = add_block(b, kind);
-    if (!block) return;
-    block->level = level;
-    va_list ap;
-    va_start(ap, fmt);
-    block->text = vformat(b, fmt, ap);
-    va_end(ap);
-}
-
-static cdl_report_block *table(builder *b, size_t columns, size_t rows, int header)
-{
-    cdl_report_block *block = add_block(b, CDL_BLOCK_TABLE);
-    if (!block) return NULL;
-    block->columns = columns;
-    block->rows = rows;
-    block->header = header;
-    block->cells = calloc(columns * rows, sizeof *block->cells);
-    if (!block->cells) b->failed = 1;
-    return block;
-}
-
-static void cell(builder *b, cdl_report_block *t, size_t row, size_t column, const char *fmt, ...)
-    __attribute__((format(printf, 5, 6)));
-static void cell(builder *b, cdl_report_block *t, size_t row, size_t column, const char *fmt, ...)
-{
-    if (!t || !t->cells) return;
-    va_list ap;
-    va_start(ap, fmt);
-    free(t->cells[row * t->columns + column]); /* a cell may be written again */
-    t->cells[row * t->columns + column] = vformat(b, fmt, ap);
-    va_end(ap);
-}
-
-static void figure(builder *b, cdl_figure f, double scale)
-{
-    cdl_report_block *block = add_block(b, CDL_BLOCK_FIGURE);
-    if (!block) return;
-    block->figure = f;
-    block->figure_scale = scale;
 }
 
 /* ---- 1. cover ----------------------------------------------------------------------- */
@@ -117,9 +35,9 @@ static const char *scene_name(const cdl_report_input *in)
     return given ? given : in->scene->path;
 }
 
-static void cover(builder *b, const cdl_report_input *in)
+static void cover(cdl_report_builder *b, const cdl_report_input *in)
 {
-    text_block(b, CDL_BLOCK_HEADING, 1, "%s", b->doc->title);
+    cdl_report_text(b, CDL_BLOCK_HEADING, 1, "%s", b->doc->title);
     /* The date of the solve: summary.json's modification time, so that the
      * same folder always gives the same report. */
     char date[64] = "unknown";
@@ -135,61 +53,61 @@ static void cover(builder *b, const cdl_report_input *in)
         snprintf(bounce_text, sizeof bounce_text, "%g", cdl_report_summary_number(in, "settings.bounces", 0));
         bounces = bounce_text;
     }
-    cdl_report_block *t = table(b, 2, 10, 0);
+    cdl_report_block *t = cdl_report_table(b, 2, 10, 0);
     const char *method = cdl_report_summary_string(in, "method");
     const char *quality = cdl_report_summary_string(in, "quality");
     size_t r = 0;
-    cell(b, t, r, 0, "Scene");
-    cell(b, t, r++, 1, "%s", scene_name(in));
-    cell(b, t, r, 0, "Results");
-    cell(b, t, r++, 1, "%s", in->out_dir);
-    cell(b, t, r, 0, "Solved");
-    cell(b, t, r++, 1, "%s", date);
-    cell(b, t, r, 0, "Candela");
-    cell(b, t, r++, 1, "%s", cdl_report_summary_string(in, "candela_version"));
-    cell(b, t, r, 0, "Method");
-    cell(b, t, r++, 1, "%s (interreflection: bounces %s)", method ? method : "?", bounces);
-    cell(b, t, r, 0, "Quality");
-    cell(b, t, r++, 1, "%s, target standard error %.3g %% of E per point", quality ? quality : "?",
+    cdl_report_cell(b, t, r, 0, "Scene");
+    cdl_report_cell(b, t, r++, 1, "%s", scene_name(in));
+    cdl_report_cell(b, t, r, 0, "Results");
+    cdl_report_cell(b, t, r++, 1, "%s", in->out_dir);
+    cdl_report_cell(b, t, r, 0, "Solved");
+    cdl_report_cell(b, t, r++, 1, "%s", date);
+    cdl_report_cell(b, t, r, 0, "Candela");
+    cdl_report_cell(b, t, r++, 1, "%s", cdl_report_summary_string(in, "candela_version"));
+    cdl_report_cell(b, t, r, 0, "Method");
+    cdl_report_cell(b, t, r++, 1, "%s (interreflection: bounces %s)", method ? method : "?", bounces);
+    cdl_report_cell(b, t, r, 0, "Quality");
+    cdl_report_cell(b, t, r++, 1, "%s, target standard error %.3g %% of E per point", quality ? quality : "?",
          100.0 * cdl_report_summary_number(in, "target_error", 0.0));
-    cell(b, t, r, 0, "Seed");
-    cell(b, t, r++, 1, "%.0f", cdl_report_summary_number(in, "settings.seed", 0.0));
-    cell(b, t, r, 0, "Threads");
-    cell(b, t, r++, 1, "%.0f (results do not depend on it)", cdl_report_summary_number(in, "settings.threads", 0.0));
-    cell(b, t, r, 0, "Solve time");
-    cell(b, t, r++, 1, "%.1f s, %.4g rays", cdl_report_summary_number(in, "seconds", 0.0),
+    cdl_report_cell(b, t, r, 0, "Seed");
+    cdl_report_cell(b, t, r++, 1, "%.0f", cdl_report_summary_number(in, "settings.seed", 0.0));
+    cdl_report_cell(b, t, r, 0, "Threads");
+    cdl_report_cell(b, t, r++, 1, "%.0f (results do not depend on it)", cdl_report_summary_number(in, "settings.threads", 0.0));
+    cdl_report_cell(b, t, r, 0, "Solve time");
+    cdl_report_cell(b, t, r++, 1, "%.1f s, %.4g rays", cdl_report_summary_number(in, "seconds", 0.0),
          cdl_report_summary_number(in, "rays", 0.0));
-    cell(b, t, r, 0, "Grids, luminaires");
-    cell(b, t, r++, 1, "%zu grids, %zu luminaires of %zu types", in->grid_count, in->scene->luminaire_count,
+    cdl_report_cell(b, t, r, 0, "Grids, luminaires");
+    cdl_report_cell(b, t, r++, 1, "%zu grids, %zu luminaires of %zu types", in->grid_count, in->scene->luminaire_count,
          in->type_count);
-    add_block(b, CDL_BLOCK_PAGE_BREAK);
+    cdl_report_add_block(b, CDL_BLOCK_PAGE_BREAK);
 }
 
 /* ---- 2. summary --------------------------------------------------------------------- */
 
-static void summary(builder *b, const cdl_report_input *in, const char *requirements_path)
+static void summary(cdl_report_builder *b, const cdl_report_input *in, const char *requirements_path)
 {
-    text_block(b, CDL_BLOCK_HEADING, 2, "Summary");
+    cdl_report_text(b, CDL_BLOCK_HEADING, 2, "Summary");
     int any_requirements = 0;
     for (size_t g = 0; g < in->grid_count; ++g)
         any_requirements |= in->grids[g].required_Em_lx > 0.0 || in->grids[g].required_U0 > 0.0;
     size_t columns = any_requirements ? 11 : 10;
-    cdl_report_block *t = table(b, columns, in->grid_count + 1, 1);
-    cell(b, t, 0, 0, "grid");
-    for (size_t c = 0; c + 1 < columns; ++c) cell(b, t, 0, c + 1, "%s", cdl_report_row_headings[c]);
+    cdl_report_block *t = cdl_report_table(b, columns, in->grid_count + 1, 1);
+    cdl_report_cell(b, t, 0, 0, "grid");
+    for (size_t c = 0; c + 1 < columns; ++c) cdl_report_cell(b, t, 0, c + 1, "%s", cdl_report_row_headings[c]);
     for (size_t g = 0; g < in->grid_count; ++g) {
         cdl_report_row row;
         cdl_report_row_of(&in->grids[g], &row);
         const char *values[9] = {row.Em, row.Emin, row.Emax, row.U0, row.Ud,
                                  row.count, row.spacing, row.error_mean, row.error_max};
-        cell(b, t, g + 1, 0, "%s", in->grids[g].spec->name);
-        for (size_t c = 0; c < 9; ++c) cell(b, t, g + 1, c + 1, "%s", values[c]);
+        cdl_report_cell(b, t, g + 1, 0, "%s", in->grids[g].spec->name);
+        for (size_t c = 0; c < 9; ++c) cdl_report_cell(b, t, g + 1, c + 1, "%s", values[c]);
         if (any_requirements) {
-            if (row.has_requirements) cell(b, t, g + 1, 10, "%s; %s", row.verdict, row.requirements);
-            else cell(b, t, g + 1, 10, "none given");
+            if (row.has_requirements) cdl_report_cell(b, t, g + 1, 10, "%s; %s", row.verdict, row.requirements);
+            else cdl_report_cell(b, t, g + 1, 10, "none given");
         }
     }
-    text_block(b, CDL_BLOCK_PARAGRAPH, 0,
+    cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0,
                "Em is the area-weighted mean illuminance, U0 = Emin / Em the uniformity and Ud = Emin / Emax the "
                "diversity (EN 12464-1), all as summary.json gives them. The errors are the stated one-sigma "
                "relative standard errors of E per point (mean and worst over the points); every number is printed "
@@ -205,7 +123,7 @@ static void summary(builder *b, const cdl_report_input *in, const char *requirem
 
 /* ---- 3. maps ------------------------------------------------------------------------ */
 
-static cdl_status maps(builder *b, const cdl_report_input *in, cdl_error *err)
+static cdl_status maps(cdl_report_builder *b, const cdl_report_input *in, cdl_error *err)
 {
     cdl_report_document *d = b->doc;
     d->maps = calloc(in->grid_count ? in->grid_count : 1, sizeof *d->maps);
@@ -219,17 +137,17 @@ static cdl_status maps(builder *b, const cdl_report_input *in, cdl_error *err)
         if (st != CDL_OK) return cdl_error_prefix(err, "the map of grid %s: ", grid->spec->name);
         ++d->map_count;
         if (first) {
-            add_block(b, CDL_BLOCK_PAGE_BREAK);
-            text_block(b, CDL_BLOCK_HEADING, 2, "Maps");
+            cdl_report_add_block(b, CDL_BLOCK_PAGE_BREAK);
+            cdl_report_text(b, CDL_BLOCK_HEADING, 2, "Maps");
             first = 0;
         }
         cdl_report_row row;
         cdl_report_row_of(grid, &row);
-        text_block(b, CDL_BLOCK_HEADING, 3, "%s", grid->spec->name);
-        text_block(b, CDL_BLOCK_PARAGRAPH, 0, "%s grid, %zu points: Em %s lx, Emin %s lx, Emax %s lx, U0 %s.",
+        cdl_report_text(b, CDL_BLOCK_HEADING, 3, "%s", grid->spec->name);
+        cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0, "%s grid, %zu points: Em %s lx, Emin %s lx, Emax %s lx, U0 %s.",
                    grid->spec->kind == CDL_GRID_RECT ? "Rectangular" : "Polygon", grid->count, row.Em, row.Emin,
                    row.Emax, row.U0);
-        figure(b, cdl_grid_map_figure(m), 1.0);
+        cdl_report_figure(b, cdl_grid_map_figure(m), 1.0);
     }
     return CDL_OK;
 }
@@ -248,63 +166,61 @@ static void first_line(char *out, size_t size, const char *s)
     snprintf(out, size, "%.*s", s ? (int)strcspn(s, "\r\n") : 0, s ? s : "");
 }
 
-static void schedule_row(builder *b, cdl_report_block *t, size_t r, const cdl_report_luminaire_type *type)
+static void schedule_row(cdl_report_builder *b, cdl_report_block *t, size_t r, const cdl_report_luminaire_type *type)
 {
     const cdl_luminaire_spec *l = type->first;
     char mf[48];
     if (type->maintenance_min == type->maintenance_max) snprintf(mf, sizeof mf, "%.3g", type->maintenance_min);
     else snprintf(mf, sizeof mf, "%.3g to %.3g", type->maintenance_min, type->maintenance_max);
     if (!type->photometry) {
-        cell(b, t, r, 0, "%s %s%s%s", l->json_path, kind_name(l->kind), l->name ? ": " : "", l->name ? l->name : "");
-        for (int c = 1; c < 8; ++c) cell(b, t, r, (size_t)c, "-");
+        cdl_report_cell(b, t, r, 0, "%s %s%s%s", l->json_path, kind_name(l->kind), l->name ? ": " : "", l->name ? l->name : "");
+        for (int c = 1; c < 8; ++c) cdl_report_cell(b, t, r, (size_t)c, "-");
         if (l->kind == CDL_LUMINAIRE_POINT || l->kind == CDL_LUMINAIRE_SPOT || l->kind == CDL_LUMINAIRE_AREA) {
-            if (l->has_flux) cell(b, t, r, 4, "%.4g lm", l->flux_lm);
-            else if (l->has_intensity) cell(b, t, r, 4, "%.4g cd", l->intensity_cd);
-            else if (l->has_luminance) cell(b, t, r, 4, "%.4g cd/m2", l->luminance_cd_m2);
+            if (l->has_flux) cdl_report_cell(b, t, r, 4, "%.4g lm", l->flux_lm);
+            else if (l->has_intensity) cdl_report_cell(b, t, r, 4, "%.4g cd", l->intensity_cd);
+            else if (l->has_luminance) cdl_report_cell(b, t, r, 4, "%.4g cd/m2", l->luminance_cd_m2);
         }
-        cell(b, t, r, 8, "%s", mf);
-        cell(b, t, r, 9, "%zu", type->count);
+        cdl_report_cell(b, t, r, 8, "%s", mf);
+        cdl_report_cell(b, t, r, 9, "%zu", type->count);
         return;
     }
     const cdl_photometry *p = type->photometry;
     const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
     cdl_photometry_summary s;
-    cdl_photometry_summarize(p, &s);
-    int ldt = m->format == CDL_PHOTOMETRY_FORMAT_EULUMDAT;
+    cdl_photometry_summary_compute(p, &s);
     char maker[160], catalogue[160], lamp[160];
-    first_line(maker, sizeof maker, ldt ? m->ldt_company : cdl_photometry_keyword_value(p, "MANUFAC"));
-    first_line(catalogue, sizeof catalogue, ldt ? m->ldt_luminaire_number : cdl_photometry_keyword_value(p, "LUMCAT"));
-    const char *lamp_keyword = cdl_photometry_keyword_value(p, "LAMP");
-    if (!lamp_keyword) lamp_keyword = cdl_photometry_keyword_value(p, "LAMPCAT");
-    first_line(lamp, sizeof lamp, ldt ? m->lamp_sets[0].type : lamp_keyword);
+    first_line(maker, sizeof maker, cdl_photometry_get_text(p, CDL_PHOTOMETRY_MANUFACTURER));
+    first_line(catalogue, sizeof catalogue, cdl_photometry_get_text(p, CDL_PHOTOMETRY_CATALOGUE));
+    first_line(lamp, sizeof lamp, cdl_photometry_get_text(p, CDL_PHOTOMETRY_LAMP));
     const char *slash = strrchr(l->file, '/');
-    cell(b, t, r, 0, "%s", slash ? slash + 1 : l->file);
-    cell(b, t, r, 1, "%s", maker[0] ? maker : "-");
-    cell(b, t, r, 2, "%s", catalogue[0] ? catalogue : "-");
-    cell(b, t, r, 3, "%s", lamp[0] ? lamp : "-");
-    if (s.radiometric) cell(b, t, r, 4, "%.4g W (radiant)", s.radiant_flux.W);
-    else cell(b, t, r, 4, "%.4g lm", s.flux.lm);
-    if (m->input_watts > 0.0) cell(b, t, r, 5, "%.4g W", m->input_watts);
-    else cell(b, t, r, 5, "-");
-    if (s.efficacy_known) cell(b, t, r, 6, "%.4g lm/W", s.efficacy.lm_W);
-    else cell(b, t, r, 6, "-");
-    cell(b, t, r, 7, "%s", s.lamp_flux_known ? "relative" : "absolute");
-    cell(b, t, r, 8, "%s", mf);
-    cell(b, t, r, 9, "%zu", type->count);
+    cdl_report_cell(b, t, r, 0, "%s", slash ? slash + 1 : l->file);
+    cdl_report_cell(b, t, r, 1, "%s", maker[0] ? maker : "-");
+    cdl_report_cell(b, t, r, 2, "%s", catalogue[0] ? catalogue : "-");
+    cdl_report_cell(b, t, r, 3, "%s", lamp[0] ? lamp : "-");
+    /* the luminaire's flux as the solve used it: the table times its ballast (output) factor */
+    if (s.radiometric) cdl_report_cell(b, t, r, 4, "%.4g W (radiant)", s.radiant_flux.W * s.output_factor);
+    else cdl_report_cell(b, t, r, 4, "%.4g lm", s.luminaire_flux.lm);
+    if (m->input_watts > 0.0) cdl_report_cell(b, t, r, 5, "%.4g W", m->input_watts);
+    else cdl_report_cell(b, t, r, 5, "-");
+    if (s.efficacy_known) cdl_report_cell(b, t, r, 6, "%.4g lm/W", s.efficacy.lm_W);
+    else cdl_report_cell(b, t, r, 6, "-");
+    cdl_report_cell(b, t, r, 7, "%s", s.lamp_flux_known ? "relative" : "absolute");
+    cdl_report_cell(b, t, r, 8, "%s", mf);
+    cdl_report_cell(b, t, r, 9, "%zu", type->count);
 }
 
-static cdl_status schedule(builder *b, const cdl_report_input *in, cdl_error *err)
+static cdl_status schedule(cdl_report_builder *b, const cdl_report_input *in, cdl_error *err)
 {
     cdl_report_document *d = b->doc;
-    add_block(b, CDL_BLOCK_PAGE_BREAK);
-    text_block(b, CDL_BLOCK_HEADING, 2, "Luminaire schedule");
-    cdl_report_block *t = table(b, 10, in->type_count + 1, 1);
+    cdl_report_add_block(b, CDL_BLOCK_PAGE_BREAK);
+    cdl_report_text(b, CDL_BLOCK_HEADING, 2, "Luminaire schedule");
+    cdl_report_block *t = cdl_report_table(b, 10, in->type_count + 1, 1);
     static const char *const headings[10] = {"luminaire",    "manufacturer", "catalogue", "lamp",
                                              "flux",         "input power",  "efficacy",  "photometry",
                                              "maint. factor", "count"};
-    for (size_t c = 0; c < 10; ++c) cell(b, t, 0, c, "%s", headings[c]);
+    for (size_t c = 0; c < 10; ++c) cdl_report_cell(b, t, 0, c, "%s", headings[c]);
     for (size_t k = 0; k < in->type_count; ++k) schedule_row(b, t, k + 1, &in->types[k]);
-    text_block(b, CDL_BLOCK_PARAGRAPH, 0,
+    cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0,
                "Flux is the exact integral of the file's interpolated table (before the maintenance factor and any "
                "scene multiplier); input power and efficacy as the file states them. Polar diagrams: C0-C180 "
                "solid, C90-C270 dashed, in cd/klm (intensity per 1000 lm of the rated lamp flux, or of the "
@@ -317,7 +233,7 @@ static cdl_status schedule(builder *b, const cdl_report_input *in, cdl_error *er
         const char *slash = strrchr(in->types[k].first->file, '/');
         pd->photometry = in->types[k].photometry;
         pd->title = slash ? slash + 1 : in->types[k].first->file;
-        figure(b, cdl_polar_diagram_figure(pd), 0.6); /* two to an A4 page */
+        cdl_report_figure(b, cdl_polar_diagram_figure(pd), 0.6); /* two to an A4 page */
     }
     return CDL_OK;
 }
@@ -326,7 +242,7 @@ static cdl_status schedule(builder *b, const cdl_report_input *in, cdl_error *er
 
 /* The distinct direct-light routes of the plan, each with how many
  * (light, grid) pairs took it. */
-static void direct_routes(builder *b, const cdl_report_input *in)
+static void direct_routes(cdl_report_builder *b, const cdl_report_input *in)
 {
     const cJSON *plan = cJSON_GetObjectItemCaseSensitive(in->summary, "plan");
     const cJSON *direct = cJSON_GetObjectItemCaseSensitive(plan, "direct");
@@ -352,49 +268,49 @@ static void direct_routes(builder *b, const cdl_report_input *in)
         }
     }
     if (n == 0) return;
-    text_block(b, CDL_BLOCK_PARAGRAPH, 0, "Direct light, as the plan chose it for each light and grid:");
-    cdl_report_block *t = table(b, 2, n + 1 + (others ? 1 : 0), 1);
-    cell(b, t, 0, 0, "light and grid pairs");
-    cell(b, t, 0, 1, "how the direct light was computed, and why");
+    cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0, "Direct light, as the plan chose it for each light and grid:");
+    cdl_report_block *t = cdl_report_table(b, 2, n + 1 + (others ? 1 : 0), 1);
+    cdl_report_cell(b, t, 0, 0, "light and grid pairs");
+    cdl_report_cell(b, t, 0, 1, "how the direct light was computed, and why");
     for (size_t k = 0; k < n; ++k) {
-        cell(b, t, k + 1, 0, "%zu", uses[k]);
-        cell(b, t, k + 1, 1, "%s", route[k]);
+        cdl_report_cell(b, t, k + 1, 0, "%zu", uses[k]);
+        cdl_report_cell(b, t, k + 1, 1, "%s", route[k]);
     }
     if (others) {
-        cell(b, t, n + 1, 0, "%zu", others);
-        cell(b, t, n + 1, 1, "other routes (see summary.json's plan)");
+        cdl_report_cell(b, t, n + 1, 0, "%zu", others);
+        cdl_report_cell(b, t, n + 1, 1, "other routes (see summary.json's plan)");
     }
 }
 
-static void method(builder *b, const cdl_report_input *in)
+static void method(cdl_report_builder *b, const cdl_report_input *in)
 {
-    add_block(b, CDL_BLOCK_PAGE_BREAK);
-    text_block(b, CDL_BLOCK_HEADING, 2, "Method and accuracy");
+    cdl_report_add_block(b, CDL_BLOCK_PAGE_BREAK);
+    cdl_report_text(b, CDL_BLOCK_HEADING, 2, "Method and accuracy");
     const cJSON *plan = cJSON_GetObjectItemCaseSensitive(in->summary, "plan");
     const cJSON *ir = cJSON_GetObjectItemCaseSensitive(plan, "interreflection");
     const cJSON *why = cJSON_GetObjectItemCaseSensitive(ir, "why");
     const cJSON *modelled = cJSON_GetObjectItemCaseSensitive(ir, "modelled");
     const cJSON *bounces = cJSON_GetObjectItemCaseSensitive(ir, "bounces");
-    text_block(b, CDL_BLOCK_PARAGRAPH, 0, "Interreflection: %s%s%s%s%s%s",
+    cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0, "Interreflection: %s%s%s%s%s%s",
                cJSON_IsTrue(modelled) ? "modelled" : "not modelled", cJSON_IsString(why) ? ": " : "",
                cJSON_IsString(why) ? why->valuestring : "", cJSON_IsString(bounces) ? ". Bounces: " : "",
                cJSON_IsString(bounces) ? bounces->valuestring : "", ".");
     int any = 0;
     for (size_t g = 0; g < in->grid_count; ++g) any |= in->grids[g].interreflection_method != NULL;
     if (any) {
-        cdl_report_block *t = table(b, 3, in->grid_count + 1, 1);
-        cell(b, t, 0, 0, "grid");
-        cell(b, t, 0, 1, "interreflection");
-        cell(b, t, 0, 2, "why");
+        cdl_report_block *t = cdl_report_table(b, 3, in->grid_count + 1, 1);
+        cdl_report_cell(b, t, 0, 0, "grid");
+        cdl_report_cell(b, t, 0, 1, "interreflection");
+        cdl_report_cell(b, t, 0, 2, "why");
         for (size_t g = 0; g < in->grid_count; ++g) {
             const cdl_report_grid *grid = &in->grids[g];
-            cell(b, t, g + 1, 0, "%s", grid->spec->name);
-            cell(b, t, g + 1, 1, "%s", grid->interreflection_method ? grid->interreflection_method : "-");
-            cell(b, t, g + 1, 2, "%s", grid->interreflection_why ? grid->interreflection_why : "-");
+            cdl_report_cell(b, t, g + 1, 0, "%s", grid->spec->name);
+            cdl_report_cell(b, t, g + 1, 1, "%s", grid->interreflection_method ? grid->interreflection_method : "-");
+            cdl_report_cell(b, t, g + 1, 2, "%s", grid->interreflection_why ? grid->interreflection_why : "-");
         }
     }
     direct_routes(b, in);
-    text_block(b, CDL_BLOCK_PARAGRAPH, 0,
+    cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0,
                "Error statement. Every point's illuminance carries a one-sigma standard error (E_stderr_lx in the "
                "grid's CSV), zero where the light was computed exactly. The stated errors are calibrated: over "
                "points with known answers about 95 %% lie within two standard errors of the truth. The solve "
@@ -406,14 +322,14 @@ static void method(builder *b, const cdl_report_input *in)
     const cJSON *warnings = cJSON_GetObjectItemCaseSensitive(in->summary, "warnings");
     size_t w = (size_t)cJSON_GetArraySize(warnings);
     if (w == 0) {
-        text_block(b, CDL_BLOCK_PARAGRAPH, 0, "The solve gave no warnings.");
+        cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0, "The solve gave no warnings.");
         return;
     }
-    text_block(b, CDL_BLOCK_PARAGRAPH, 0, "The solve gave %zu warning%s:", w, w == 1 ? "" : "s");
-    cdl_report_block *t = table(b, 1, w, 0);
+    cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0, "The solve gave %zu warning%s:", w, w == 1 ? "" : "s");
+    cdl_report_block *t = cdl_report_table(b, 1, w, 0);
     size_t k = 0;
     for (const cJSON *item = warnings->child; item; item = item->next, ++k)
-        cell(b, t, k, 0, "%s", cJSON_IsString(item) ? item->valuestring : "?");
+        cdl_report_cell(b, t, k, 0, "%s", cJSON_IsString(item) ? item->valuestring : "?");
 }
 
 /* ---- the document --------------------------------------------------------------------- */
@@ -424,7 +340,7 @@ cdl_status cdl_report_document_build(const cdl_report_input *in, const char *tit
     *out = NULL;
     cdl_report_document *d = calloc(1, sizeof *d);
     if (!d) return cdl_error_out_of_memory(err);
-    builder b = {d, 0};
+    cdl_report_builder b = {d, 0};
     if (title) {
         d->title = cdl_string_copy(title);
     } else {
@@ -438,7 +354,9 @@ cdl_status cdl_report_document_build(const cdl_report_input *in, const char *tit
         cover(&b, in);
         summary(&b, in, in->requirements_path);
         st = maps(&b, in, err);
+        if (st == CDL_OK) st = cdl_report_glare_section(&b, in, err);
         if (st == CDL_OK) st = schedule(&b, in, err);
+        if (st == CDL_OK) st = cdl_report_glare_tables(&b, in, err);
         if (st == CDL_OK) method(&b, in);
     }
     if (st == CDL_OK && b.failed) st = cdl_error_out_of_memory(err);
@@ -463,6 +381,7 @@ void cdl_report_document_release(cdl_report_document *d)
     for (size_t k = 0; k < d->map_count; ++k) cdl_grid_map_release(&d->maps[k]);
     free(d->maps);
     free(d->diagrams);
+    cdl_report_glare_plan_release(d->glare_plan);
     free(d->blocks);
     free(d->title);
     free(d);

@@ -8,9 +8,12 @@
  *   2. summary: a row per grid (summary_table.h) with the check against
  *      the requirements;
  *   3. a map per rect and polygon grid (grid_map.h);
- *   4. the luminaire schedule and a polar diagram per photometric file
- *      (lights/photometry/photometry_polar.h);
- *   5. method and accuracy: what the plan modelled and why, bounces, the
+ *   4. glare, with observers (report_glare.h): their UGR against their
+ *      limits and the plan with them on it;
+ *   5. the luminaire schedule and a polar diagram per photometric file
+ *      (lights/photometry/photometry_polar.h), and with observers each
+ *      file's UGR table;
+ *   6. method and accuracy: what the plan modelled and why, bounces, the
  *      error statement, the solve's warnings.
  * report_html.c and report_pdf.c lay the same blocks out, so the HTML and
  * the PDF carry the same text and figures.
@@ -54,6 +57,7 @@ typedef struct cdl_report_document {
     size_t map_count;
     struct cdl_polar_diagram *diagrams;
     size_t diagram_count;
+    struct cdl_glare_plan *glare_plan; /* the observers on the plan (report_glare.c), or NULL */
 } cdl_report_document;
 
 /* Build the report of `input`; title NULL for the default ("Lighting

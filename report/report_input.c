@@ -7,8 +7,10 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "base/error_report.h"
 #include "base/file_bytes.h"
 #include "base/strings.h"
+#include "report/report_glare.h"
 
 /* summary.json and a requirements file are small; a CSV holds at most
  * CDL_GRID_MAX_POINTS rows of under 400 bytes. */
@@ -378,6 +380,7 @@ cdl_status cdl_report_input_read(const char *out_dir, const char *requirements_p
         st = in->requirements_path ? read_requirements(in, requirements_path, err) : cdl_error_out_of_memory(err);
     }
     if (st == CDL_OK) st = read_types(in, err);
+    if (st == CDL_OK) st = cdl_report_glare_read(in, err);
     if (st != CDL_OK) {
         cdl_report_input_release(in);
         return st;
@@ -397,6 +400,7 @@ void cdl_report_input_release(cdl_report_input *in)
     for (size_t k = 0; k < in->type_count; ++k) cdl_photometry_release(in->types[k].photometry);
     free(in->grids);
     free(in->types);
+    free(in->observers);
     cdl_scene_release(in->scene);
     cJSON_Delete(in->summary);
     free(in->summary_path);

@@ -13,6 +13,10 @@
  * grids ("requirements") and from a JSON file {"GRID": {"Em_lx": 500,
  * "U0": 0.6}}, which overrides the scene grid by grid.
  *
+ * Glare (when the scene has observers): summary.json's "glare", one entry
+ * per observer by name, and glare.csv holding the same numbers
+ * (report_glare.c).
+ *
  * Luminaire types: goniometric luminaires grouped by file (the photometry
  * read for the schedule and its polar diagram), other luminaires one type
  * per scene entry.
@@ -31,7 +35,7 @@
 #include "base/error.h"
 #include "solver/grid/grid.h"
 #include "solver/output/grid_result.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 typedef struct cdl_report_grid {
     const cdl_grid_spec *spec;     /* in the input's scene */
@@ -54,6 +58,16 @@ typedef struct cdl_report_luminaire_type {
     double maintenance_min, maintenance_max;
 } cdl_report_luminaire_type;
 
+/* An observer's glare, as summary.json's "glare" gives it (report_glare.c
+ * reads it and holds glare.csv to it). */
+typedef struct cdl_report_observer {
+    const cdl_observer_spec *spec;   /* in the input's scene */
+    int defined;                     /* 0: no rating (ugr null) */
+    double ugr, ugr_stderr;
+    double background_cd_m2, background_stderr_cd_m2;
+    size_t sources;                  /* luminaires in view */
+} cdl_report_observer;
+
 typedef struct cdl_report_input {
     char *out_dir;
     char *summary_path;
@@ -64,6 +78,8 @@ typedef struct cdl_report_input {
     size_t grid_count;
     cdl_report_luminaire_type *types;
     size_t type_count;
+    cdl_report_observer *observers;  /* one per scene observer (none without) */
+    size_t observer_count;
 } cdl_report_input;
 
 /* Read and check OUTDIR (above); requirements_path may be NULL. */

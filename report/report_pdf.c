@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "graphics/text.h"
 
 #define PAGE_W 595.276   /* A4, points */

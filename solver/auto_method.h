@@ -5,17 +5,9 @@
  * a product: path tracing costs points / t^2; the cache costs records / t^2
  * (each record gathered to about a point's variance), and its records,
  * spaced in proportion to sqrt t (icache.c), number about 1 / t over a
- * grid's area, so the ratio goes as points t. Measured (user CPU seconds at
- * equal RMS error against path tracing to 0.05 % or finer):
- *  - the 81-point room of the README's Radiance comparison, high (0.1 %):
- *    path tracing 0.3 s for the cache's 0.14 % RMS, the cache 1.2 s
- *    (points t = 0.08);
- *  - the office work plane, 60 points, normal (0.5 %): the cache 0.26 s for
- *    0.41 % RMS, path tracing about 0.32 s (points t = 0.3); at 240 points
- *    the cache 0.57 s, path tracing 2.3 s at its (smaller) stated error;
- *  - the closed cube's 10 000 floor and 2500 wall points at normal: the
- *    cache several times cheaper (bench_icache).
- * The crossing lies near points t = 0.3 to 0.4.
+ * grid's area, so the ratio goes as points t. Measured at equal RMS error
+ * on the downlight room, the office and the closed cube (docs/tuning.md),
+ * the crossing lies near points t = 0.3 to 0.4.
  *
  * Not public.
  */
@@ -24,7 +16,7 @@
 
 #include <stddef.h>
 
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 #define CDL_AUTO_CACHE_SCORE 0.4
 

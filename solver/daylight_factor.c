@@ -3,6 +3,8 @@
 
 #include <stdio.h>
 
+#include "base/error_report.h"
+
 cdl_status cdl_daylight_factor_reference(const cdl_scene *scene, const cdl_scene_lights *lights,
                                          const cdl_grid_spec *spec, double *E_h, char *words, size_t size,
                                          cdl_error *err)

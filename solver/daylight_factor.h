@@ -18,7 +18,7 @@
 #include <stddef.h>
 
 #include "base/error.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_lights.h"
 
 /* For grid `spec` asking for "daylight_factor": E_h (lx) and the sky in

@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
+#include "lights/emitters/near_field_bound.h"
 #include "solver/auto_method.h"
 #include "solver/solve_cache.h"
 
@@ -111,6 +113,11 @@ cdl_status cdl_plan_json_lights(cdl_plan_json *plan, const cdl_solve_state *stat
                                     "\"always\" asked, but the file gives no luminous opening that is spread "
                                     "(rectangle, circle, ellipse, box with luminous sides, vertical or horizontal "
                                     "(elliptic) cylinder, sphere or ellipsoid of non-zero size): lit as a point");
+        if (lights->lights[l].near_part) {
+            /* where the luminaire is spread, and what the point model may err by beyond */
+            cJSON_AddNumberToObject(item, "near_field_distance_m", lights->lights[l].near_radius);
+            cJSON_AddNumberToObject(item, "point_model_error_bound", lights->lights[l].near_model_error);
+        }
         plan->light_grids[l] = cJSON_AddObjectToObject(item, "grids");
         cJSON_AddItemToArray(direct, item);
     }
@@ -140,10 +147,11 @@ static void describe_near_field(const cdl_scene_light *light, const cdl_grid *gr
     size_t lit = 0;
     for (size_t i = 0; i < grid->count; ++i) lit += (size_t)cdl_scene_light_applies(light, grid->points[i]);
     snprintf(text + used, size - used,
-             "; near field \"auto\": %s at %zu of %zu points (%s %.3g m = %g x the opening's largest dimension "
-             "from its centre)",
+             "; near field \"auto\": %s at %zu of %zu points (%s %.3g m from its centre: beyond, the point model "
+             "errs by at most %.2g %%, %g of the target, and never within %g x the opening's largest dimension)",
              light->near_part > 0 ? "spread over its luminous opening" : "a point", lit, grid->count,
-             light->near_part > 0 ? "nearer than" : "at or beyond", light->near_radius, CDL_NEAR_FIELD_DISTANCES);
+             light->near_part > 0 ? "nearer than" : "at or beyond", light->near_radius,
+             100.0 * light->near_model_error, CDL_NEAR_FIELD_SHARE, CDL_NEAR_FIELD_DISTANCES);
 }
 
 /* Each light's strategy on the grid, and the routes its points took (exact
@@ -247,6 +255,24 @@ void cdl_plan_json_totals(cdl_plan_json *plan, const cdl_solve_state *state)
         cJSON_AddNumberToObject(inter, "records", (double)state->icache_stats.records);
     }
     if (state->cache.path) describe_cache(plan->root, &state->cache);
+    if (state->scene->observer_count > 0) {
+        cJSON *glare = cJSON_AddObjectToObject(plan->root, "glare");
+        cJSON_AddNumberToObject(glare, "observers", (double)state->scene->observer_count);
+        cJSON_AddStringToObject(glare, "rating", "UGR by CIE 117:1995 eq. 4.1, Guth's position index from its Table 4.1");
+        cJSON_AddStringToObject(glare, "background",
+                                state->indirect ? "E at each eye facing its line of sight from skies and emitting "
+                                                  "surfaces (direct) and all interreflected light (paths), the "
+                                                  "luminaires' direct light left out"
+                                                : "E at each eye facing its line of sight from skies and emitting "
+                                                  "surfaces; nothing reflects");
+        cJSON *w = cJSON_AddObjectToObject(glare, "solid_angles");
+        cJSON_AddNumberToObject(w, "exact", (double)state->glare_exact);
+        cJSON_AddNumberToObject(w, "sampled", (double)state->glare_sampled);
+        cJSON_AddNumberToObject(w, "rays", (double)state->glare_stats.rays);
+        cJSON_AddStringToObject(w, "why", "exact where no surface can come between an eye and a luminaire's "
+                                          "luminous parts; else the visible fraction sampled by shadow rays to the "
+                                          "target");
+    }
 }
 
 cdl_status cdl_plan_json_print(const cdl_plan_json *plan, char **out, cdl_error *err)

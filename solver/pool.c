@@ -1,4 +1,5 @@
 /* pool.c - worker threads over a range of items (see pool.h). */
+#include "base/error_report.h"
 #include "solver/pool.h"
 
 #include <pthread.h>

@@ -20,6 +20,10 @@
 #include "base/error.h"
 #include "solver/progress.h"
 
+/* Report through a sink (nothing when it has no function); returns the
+ * callback's answer (0: go on). */
+int cdl_progress_report(const cdl_progress_sink *sink, const cdl_progress *progress);
+
 /* Items begin .. end - 1 of a task, on a worker whose own scratch space is
  * `local` (NULL when the task has none). A failure stops the whole run. */
 typedef cdl_status (*cdl_pool_fn)(void *shared, void *local, size_t begin, size_t end, cdl_error *err);

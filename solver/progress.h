@@ -12,8 +12,6 @@
  * and its `stage` string live only during that call. Thread safety: the
  * function is only ever called from the thread that made the long call
  * (never from a worker), so it needs no locking of its own.
- * (Split out of pool.h so that the public solve.h does not carry the
- * thread pool.)
  */
 #ifndef CANDELA_SOLVER_PROGRESS_H
 #define CANDELA_SOLVER_PROGRESS_H
@@ -36,9 +34,5 @@ typedef struct cdl_progress_sink {
     cdl_progress_fn fn;       /* NULL: no reports, no cancelling */
     void *user;
 } cdl_progress_sink;
-
-/* Report through a sink (nothing when it has no function); returns the
- * callback's answer (0: go on). */
-int cdl_progress_report(const cdl_progress_sink *sink, const cdl_progress *progress);
 
 #endif

@@ -6,6 +6,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "base/error_report.h"
 #include "solver/icache/icache_file.h"
 #include "solver/scene/scene_hash.h"
 
@@ -38,8 +39,8 @@ static cdl_status make_key(const cdl_solve_state *state, cdl_icache_key *key, cd
     ks->bounces = scene->settings.bounces;
     ks->seed = scene->settings.seed;
     ks->direct_samples = state->out->settings.direct_samples;
-    ks->exact_route = !state->options.no_exact_route;
-    ks->gradients = !state->options.no_cache_gradients;
+    ks->exact_route = !state->debug.no_exact_route;
+    ks->gradients = !state->debug.no_cache_gradients;
     return cdl_scene_hash(scene, &state->lights, &key->scene, err);
 }
 

@@ -16,7 +16,8 @@
  * and a scene with no light at all, are named too. The warnings go to
  * summary.json; `candela solve` prints them and --strict refuses them.
  */
-#include "solver/solve.h"
+#include "solver/scene/scene_internal.h"
+#include "solver/solution_internal.h"
 #include "solver/solve_checks.h"
 
 #include <math.h>
@@ -24,8 +25,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/bounds.h"
+#include "solver/geometry/polygon.h"
 #include "solver/direct/direct.h"
+#include "lights/photometry/photometry_metadata.h"
 
 /* Samples of an extended light tried per point before calling it hidden there. */
 #define EXTENDED_PROBES 4
@@ -37,31 +41,37 @@ static reach light_reaches(const cdl_direct_context *ctx, size_t l, cdl_light_st
 {
     const cdl_scene_light *light = &ctx->lights[l];
     if (!cdl_scene_light_applies(light, p)) return REACH_NONE; /* the other part of a near-field split */
-    cdl_direct_sample_stats stats = {0};
     if (cdl_emitter_is_delta(light->emitter)) {
         cdl_delta_light d;
         if (!cdl_emitter_eval_delta(light->emitter, p, n, &d) || !(d.E.lx > 0.0)) return REACH_NONE;
         if (st != CDL_STRATEGY_DELTA_SHADOWED || !ctx->geometry) return REACH_LIT;
         return cdl_scene_geometry_transmission(ctx->geometry, p, d.to_light, d.distance) > 0.0 ? REACH_LIT : REACH_HIDDEN;
     }
-    (void)stats;
-    cdl_illuminance E;
-    if (cdl_emitter_exact_illuminance(light->emitter, p, n, &E, NULL) != CDL_OK || !(E.lx > 0.0)) return REACH_NONE;
-    if (st == CDL_STRATEGY_EXTENDED_EXACT || !ctx->geometry) return REACH_LIT;
-    /* the visible part as the exact route finds it (a window's sky that
-     * the probes below could miss), where it can tell */
-    int seen = cdl_direct_light_seen(ctx, light, st, p, n);
-    if (seen >= 0) return seen ? REACH_LIT : REACH_HIDDEN;
+    /* Extended: the closed form where the emitter has one (a luminous
+     * solid has none); then the visible part as the exact route finds it
+     * (a window's sky that the probes below could miss), where it can
+     * tell; then probes, which also say whether it is hidden. */
+    int closed_form = cdl_emitter_has_exact_illuminance(light->emitter);
+    if (closed_form) {
+        cdl_illuminance E;
+        if (cdl_emitter_exact_illuminance(light->emitter, p, n, &E, NULL) != CDL_OK || !(E.lx > 0.0)) return REACH_NONE;
+        if (st == CDL_STRATEGY_EXTENDED_EXACT || !ctx->geometry) return REACH_LIT;
+        int route = cdl_direct_light_seen(ctx, light, st, p, n);
+        if (route >= 0) return route ? REACH_LIT : REACH_HIDDEN;
+    }
+    int seen = closed_form;
     for (int j = 0; j < EXTENDED_PROBES; ++j)
         for (int i = 0; i < EXTENDED_PROBES; ++i) {
             cdl_light_sample s;
             double u1 = (i + 0.5) / EXTENDED_PROBES, u2 = (j + 0.5) / EXTENDED_PROBES;
-            if (!cdl_emitter_sample(light->emitter, p, n, u1, u2, &s) || !(s.pdf > 0.0) ||
+            if (!cdl_emitter_sample(light->emitter, p, n, u1, u2, &s) || !(s.pdf > 0.0) || !(s.L.cd_m2 > 0.0) ||
                 !(cdl_vec3_dot(s.to_light, n) > 0.0))
                 continue;
-            if (cdl_scene_geometry_transmission(ctx->geometry, p, s.to_light, s.distance) > 0.0) return REACH_LIT;
+            seen = 1;
+            if (!ctx->geometry || cdl_scene_geometry_transmission(ctx->geometry, p, s.to_light, s.distance) > 0.0)
+                return REACH_LIT;
         }
-    return REACH_HIDDEN;
+    return seen ? REACH_HIDDEN : REACH_NONE;
 }
 
 /* The box around every grid point and every surface: where the scene is. */
@@ -85,15 +95,20 @@ static int inside(cdl_bounds3 box, cdl_vec3 p, double margin)
            p.y <= box.hi.y + margin && p.z >= box.lo.z - margin && p.z <= box.hi.z + margin;
 }
 
-/* A position far outside the scene (beyond ten times its size) that a
- * thousandth of would put in or near it (within half its size and 3 m, the
- * height a luminaire may hang above a work plane): millimetres typed into a
- * scene in metres. */
+/* A position far outside the scene (beyond ten times its size, and beyond
+ * MM_FAR_M whatever its size) that a thousandth of would put in or near it
+ * (within half its size and 3 m, the height a luminaire may hang above a
+ * work plane): millimetres typed into a scene in metres. The absolute
+ * floor keeps a small scene (one probe under a luminaire 2 m up) from
+ * calling every luminaire far: a position typed in millimetres is a
+ * thousand times its metres, so any luminaire more than 0.1 m from the
+ * origin lands beyond 100 m. */
+#define MM_FAR_M 100.0
 static int looks_like_millimetres(cdl_bounds3 box, cdl_vec3 p)
 {
     double size = fmax(cdl_bounds3_diagonal(box), 1e-3);
     cdl_vec3 mm = cdl_vec3_scale(p, 1e-3);
-    return !inside(box, p, 10.0 * size) && inside(box, mm, 0.5 * size + 3.0);
+    return !inside(box, p, fmax(10.0 * size, MM_FAR_M)) && inside(box, mm, 0.5 * size + 3.0);
 }
 
 cdl_status cdl_solve_check_near_field(const cdl_scene *scene, const cdl_scene_lights *lights, cdl_solution *out,
@@ -122,6 +137,8 @@ cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_conte
                                   cdl_error *err)
 {
     cdl_status st = CDL_OK;
+    /* a scene of observers alone has no grid point for a light to reach */
+    if (out->grid_count == 0) return CDL_OK;
     if (ctx->light_count == 0) {
         return cdl_solution_add_warning(out, err,
                                         "the scene has no luminaire and no emitting surface: every grid is at 0 lx "
@@ -198,19 +215,111 @@ cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_conte
     return st;
 }
 
-void cdl_solve_sum_power(const cdl_scene *scene, const cdl_scene_lights *lights, cdl_power_summary *power)
+/* Even-odd: is (x, y) inside the ring, projected into the plane? */
+static int ring_contains(const cdl_polygon_plane *plane, const cdl_ring3 *ring, double x, double y)
 {
-    memset(power, 0, sizeof *power);
+    int in = 0;
+    double x0, y0;
+    cdl_polygon_project(plane, ring->points[ring->count - 1], &x0, &y0);
+    for (size_t i = 0; i < ring->count; ++i) {
+        double x1, y1;
+        cdl_polygon_project(plane, ring->points[i], &x1, &y1);
+        if ((y1 > y) != (y0 > y) && x < x0 + (x1 - x0) * (y - y0) / (y1 - y0)) in = !in;
+        x0 = x1;
+        y0 = y1;
+    }
+    return in;
+}
+
+/* Power density is a floor's figure (W per m^2 of the area lit from
+ * above, EN 15193 and the energy codes' LPD): only grids facing up, within
+ * 30 degrees of the vertical, count the luminaires over them; a wall grid
+ * counts none. */
+#define POWER_GRID_MIN_UP 0.8660254037844386
+
+/* Does a luminaire at q hang over the grid: the grid facing up, q,
+ * projected onto the grid's plane along its normal, within its outline
+ * (and outside its holes), on the side its points face? Points grids have
+ * no outline. */
+static int faces_up(cdl_vec3 n)
+{
+    double len = cdl_vec3_length(n);
+    return len > 0.0 && n.z >= POWER_GRID_MIN_UP * len;
+}
+
+static int over_grid(const cdl_grid_spec *spec, cdl_vec3 q)
+{
+    if (spec->kind == CDL_GRID_RECT) {
+        cdl_vec3 m = cdl_vec3_cross(spec->u, spec->v), w = cdl_vec3_sub(q, spec->origin);
+        double mm = cdl_vec3_dot(m, m);
+        cdl_vec3 facing = spec->has_normal ? spec->normal : m;
+        if (!(mm > 0.0) || !(cdl_vec3_dot(w, facing) > 0.0) || !faces_up(facing)) return 0;
+        /* q = origin + s u + t v + h m: Cramer's rule with the triple products */
+        double s = cdl_vec3_dot(cdl_vec3_cross(w, spec->v), m) / mm;
+        double t = cdl_vec3_dot(cdl_vec3_cross(spec->u, w), m) / mm;
+        return s >= 0.0 && s <= 1.0 && t >= 0.0 && t <= 1.0;
+    }
+    if (spec->kind != CDL_GRID_POLYGON) return 0;
+    cdl_polygon_plane plane;
+    if (cdl_polygon_plane_of_checked(&spec->outer, spec->holes, spec->hole_count, &plane, NULL) != CDL_OK) return 0;
+    cdl_vec3 facing = spec->has_normal ? spec->normal : plane.normal;
+    if (!(cdl_vec3_dot(cdl_vec3_sub(q, plane.origin), facing) > 0.0) || !faces_up(facing)) return 0;
+    double x, y;
+    cdl_polygon_project(&plane, q, &x, &y);
+    if (!ring_contains(&plane, &spec->outer, x, y)) return 0;
+    for (size_t h = 0; h < spec->hole_count; ++h)
+        if (ring_contains(&plane, &spec->holes[h], x, y)) return 0;
+    return 1;
+}
+
+/* The centre of an area luminaire's shape: a rect's middle, a disk's
+ * centre, the mean of a polygon's outer ring or of a mesh's vertices. */
+static cdl_vec3 shape_centre(const cdl_surface_spec *shape)
+{
+    switch (shape->kind) {
+    case CDL_SURFACE_RECT: return cdl_vec3_add(shape->origin, cdl_vec3_scale(cdl_vec3_add(shape->u, shape->v), 0.5));
+    case CDL_SURFACE_DISK:
+    case CDL_SURFACE_SPHERE: return shape->center;
+    case CDL_SURFACE_POLYGON: {
+        cdl_vec3 sum = cdl_vec3_make(0.0, 0.0, 0.0);
+        for (size_t i = 0; i < shape->outer.count; ++i) sum = cdl_vec3_add(sum, shape->outer.points[i]);
+        return shape->outer.count ? cdl_vec3_scale(sum, 1.0 / (double)shape->outer.count) : sum;
+    }
+    case CDL_SURFACE_MESH: {
+        cdl_vec3 sum = cdl_vec3_make(0.0, 0.0, 0.0);
+        for (size_t i = 0; i < shape->mesh_vertex_count; ++i)
+            sum = cdl_vec3_add(sum, cdl_vec3_make(shape->mesh_vertices[3 * i], shape->mesh_vertices[3 * i + 1],
+                                                  shape->mesh_vertices[3 * i + 2]));
+        return shape->mesh_vertex_count ? cdl_vec3_scale(sum, 1.0 / (double)shape->mesh_vertex_count) : sum;
+    }
+    case CDL_SURFACE_BOX: return cdl_vec3_scale(cdl_vec3_add(shape->box_min, shape->box_max), 0.5);
+    }
+    return shape->origin;
+}
+
+static void count_power(cdl_power_summary *power, double watts)
+{
+    if (watts > 0.0) {
+        power->installed_w += watts;
+        power->luminaires_counted++;
+    } else {
+        power->luminaires_without_watts++;
+    }
+}
+
+void cdl_solve_sum_power(const cdl_scene *scene, const cdl_scene_lights *lights, cdl_solution *out)
+{
+    memset(&out->power, 0, sizeof out->power);
+    for (size_t g = 0; g < out->grid_count; ++g) memset(&out->grids[g].power, 0, sizeof out->grids[g].power);
     for (size_t k = 0; k < scene->luminaire_count; ++k) {
-        cdl_luminaire_kind kind = scene->luminaires[k].kind;
-        if (kind == CDL_LUMINAIRE_DIRECTIONAL || kind == CDL_LUMINAIRE_ENVIRONMENT) continue; /* daylight */
+        const cdl_luminaire_spec *sp = &scene->luminaires[k];
+        if (sp->kind == CDL_LUMINAIRE_DIRECTIONAL || sp->kind == CDL_LUMINAIRE_ENVIRONMENT) continue; /* daylight */
         const cdl_photometry *ph = lights->luminaire_photometry ? lights->luminaire_photometry[k] : NULL;
         double w = ph ? cdl_photometry_get_metadata(ph)->input_watts : 0.0;
-        if (w > 0.0) {
-            power->installed_w += w;
-            power->luminaires_counted++;
-        } else {
-            power->luminaires_without_watts++;
-        }
+        count_power(&out->power, w);
+        /* An area luminaire hangs where its shape's centre is. */
+        cdl_vec3 q = sp->kind == CDL_LUMINAIRE_AREA ? shape_centre(&sp->shape) : sp->position;
+        for (size_t g = 0; g < out->grid_count && g < scene->grid_count; ++g)
+            if (over_grid(&scene->grids[g], q)) count_power(&out->grids[g].power, w);
     }
 }

@@ -4,9 +4,9 @@
 
 #include "base/error.h"
 #include "solver/direct/direct.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_lights.h"
-#include "solver/solution.h"
+#include "solver/solution_internal.h"
 
 /* Warnings (cdl_solution_add_warning) for every light that reaches no
  * grid point, saying why, every grid at 0 lx, and a scene without light.
@@ -21,7 +21,11 @@ cdl_status cdl_solve_check_near_field(const cdl_scene *scene, const cdl_scene_li
                                       cdl_error *err);
 
 /* Installed power: the input watts of every placed luminaire whose file
- * gives them; the others counted apart. */
-void cdl_solve_sum_power(const cdl_scene *scene, const cdl_scene_lights *lights, cdl_power_summary *power);
+ * gives them, the others counted apart; for the whole scene (out->power)
+ * and per rect or polygon grid facing up (within 30 degrees of the
+ * vertical), of the luminaires over it (out->grids[g].power: their
+ * position projected along the grid's normal falls within its outline, on
+ * the side its points face). */
+void cdl_solve_sum_power(const cdl_scene *scene, const cdl_scene_lights *lights, cdl_solution *out);
 
 #endif

@@ -1,10 +1,12 @@
 /* solve_finish.c - the last step of a solve: each grid's parts combined, then what the solve says besides. */
+#include "solver/solve_observers.h"
 #include "solver/solve_plan.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 #include "solver/plan_json.h"
 #include "solver/pool.h"
@@ -85,7 +87,8 @@ static cdl_status warn_edge_points(cdl_solve_state *state, cdl_error *err)
 /* Rays and records over the whole solve. */
 static void count_totals(cdl_solve_state *state)
 {
-    uint64_t rays = state->direct_stats.rays + state->vertical_stats.rays + state->vertical_stats.direct.rays;
+    uint64_t rays = state->direct_stats.rays + state->vertical_stats.rays + state->vertical_stats.direct.rays +
+                    state->glare_stats.rays;
     if (state->indirect) {
         cdl_path_stats all = state->pathtrace_stats;
         cdl_path_stats_add(&all, &state->icache_stats.paths);
@@ -105,7 +108,7 @@ cdl_status cdl_solve_finish(cdl_solve_state *state, cdl_error *err)
     if (st == CDL_OK) st = cdl_solve_check_lights(scene, &state->direct, out, err);
     if (st == CDL_OK) st = cdl_solve_check_near_field(scene, &state->lights, out, err);
     if (st != CDL_OK) return st;
-    cdl_solve_sum_power(scene, &state->lights, &out->power);
+    cdl_solve_sum_power(scene, &state->lights, out);
     if (state->cache.path) {
         if (!state->cache.reused) {
             st = cdl_solve_cache_save(state, err);
@@ -119,6 +122,7 @@ cdl_status cdl_solve_finish(cdl_solve_state *state, cdl_error *err)
 void cdl_solve_state_release(cdl_solve_state *state)
 {
     cdl_plan_json_release(state->plan);
+    cdl_solve_observers_release(state);
     if (state->records)
         for (size_t g = 0; g < state->scene->grid_count; ++g) cdl_icache_records_release(&state->records[g]);
     free(state->records);

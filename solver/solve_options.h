@@ -1,5 +1,9 @@
 /* solve_options.h - the options of a solve (cdl_solve_scene, solve.h).
  *
+ * Start from CDL_SOLVE_OPTIONS_INIT and set fields by name. The struct
+ * begins with its own size (set by the macro), so that fields added later
+ * keep their defaults for a program built before them.
+ *
  * Plain data: the caller's, copied by cdl_solve_scene at its start.
  * Thread safety: an options struct is only read; one may serve solves on
  * several threads at once (its progress callback is then called from each
@@ -8,32 +12,33 @@
 #ifndef CANDELA_SOLVER_SOLVE_OPTIONS_H
 #define CANDELA_SOLVER_SOLVE_OPTIONS_H
 
+#include <stddef.h>
+
 #include "solver/progress.h"
 
-struct cdl_ray_log;
-
-/* Options of a solve. Start from CDL_SOLVE_OPTIONS_DEFAULT and set fields by
- * name: fields added later get their defaults. */
 typedef struct cdl_solve_options {
-    int threads;                      /* < 0: as the scene says (0 there = all cores) */
+    size_t size;                      /* sizeof(cdl_solve_options) */
+    int threads;                      /* < 0 (default): as the scene says (0 there = all cores) */
     cdl_progress_sink progress;       /* stages, points done; may cancel (CDL_ERR_CANCELLED) */
-    struct cdl_ray_log *ray_log;      /* benchmarks: record every shadow ray (forces one thread) */
-    int no_exact_route;               /* 1: sample partly hidden area emitters and skies even where the
-                                       * visible polygon is exact (tests of the sampler, benchmarks);
-                                       * default 0 */
-    int no_cache_gradients;           /* 1: the irradiance cache interpolates without its records' gradients
-                                         (to measure what they buy) */
-    /* A file of irradiance-cache records (icache/icache_file.h), NULL for
-     * none (the default). When it exists it must have been made for this
-     * scene, these settings and this Candela: its records are then used and
-     * none is gathered; otherwise the solve is refused (CDL_ERR_INPUT,
-     * naming the file and what differs) before any grid is computed. When
-     * it does not exist, the records are gathered and the file written
-     * (atomically) after the solve succeeds; its folder must exist. */
+    /* A file of irradiance-cache records, NULL for none (the default). When
+     * it exists it must have been made for this scene, these settings and
+     * this Candela: its records are then used and none is gathered;
+     * otherwise the solve is refused (CDL_ERR_INPUT, naming the file and
+     * what differs) before any grid is computed. When it does not exist,
+     * the records are gathered and the file written (atomically) after the
+     * solve succeeds; its folder must exist. */
     const char *cache_path;
+    /* The scene's solver settings, overridden for this solve: a cdl_method
+     * or cdl_quality value, or -1 (the default) for the scene's own; a
+     * target relative standard error in [1e-5, 0.5], or 0 (the default) for
+     * the scene's. A quality given here replaces the scene's target_error
+     * too (unless target_error is given here as well). */
+    int method;
+    int quality;
+    double target_error;
 } cdl_solve_options;
-#define CDL_SOLVE_OPTIONS_DEFAULT                                                                                     \
-    {.threads = -1, .progress = {.fn = NULL, .user = NULL}, .ray_log = NULL, .no_exact_route = 0,                    \
-     .no_cache_gradients = 0, .cache_path = NULL}
+#define CDL_SOLVE_OPTIONS_INIT                                                                                        \
+    {.size = sizeof(cdl_solve_options), .threads = -1, .progress = {.fn = NULL, .user = NULL}, .cache_path = NULL,  \
+     .method = -1, .quality = -1, .target_error = 0.0}
 
 #endif

@@ -13,13 +13,15 @@
 #include <string.h>
 
 #include "base/content_hash.h"
+#include "base/strings.h"
+#include "base/error_report.h"
 #include "solver/auto_method.h"
 #include "solver/daylight_factor.h"
 #include "solver/plan_json.h"
 #include "solver/pool.h"
 #include "solver/scene/scene_occluders.h"
-#include "solver/solve.h"
 #include "solver/solve_cache.h"
+#include "solver/solve_observers.h"
 
 /* Ambient-occlusion samples per point implied by the quality level (an
  * explicit ao_samples overrides). Direct light samples to the target. */
@@ -80,9 +82,10 @@ static void settle_settings(cdl_solve_state *state)
     out->settings = scene->settings;
     if (out->settings.ao_samples <= 0) out->settings.ao_samples = quality_ao_samples(scene->settings.quality);
     state->target = cdl_solver_settings_target(&scene->settings);
+    out->target_error = state->target;
     int threads = state->options.threads >= 0 ? state->options.threads : scene->settings.threads;
     if (threads <= 0) threads = cdl_pool_cpu_count();
-    if (state->options.ray_log) threads = 1;
+    if (state->debug.ray_log) threads = 1;
     state->threads = out->threads_used = threads;
 }
 
@@ -121,8 +124,8 @@ static void make_contexts(cdl_solve_state *state)
     ctx->target = state->indirect ? state->target / sqrt(2.0) : state->target;
     ctx->ao_samples = state->out->settings.ao_samples;
     ctx->seed = scene->settings.seed;
-    ctx->log = state->options.ray_log;
-    ctx->no_exact_route = state->options.no_exact_route;
+    ctx->log = state->debug.ray_log;
+    ctx->no_exact_route = state->debug.no_exact_route;
 
     cdl_path_context path = {.direct = ctx,
                              .geometry = state->geometry,
@@ -130,7 +133,7 @@ static void make_contexts(cdl_solve_state *state)
                              .bounces = scene->settings.bounces};
     state->pathtrace = (cdl_pathtrace_context){.path = path, .target = state->target, .max_paths = 16777216.0};
     state->icache = (cdl_icache_context){.path = path, .target = state->target,
-                                         .gradients = !state->options.no_cache_gradients};
+                                         .gradients = !state->debug.no_cache_gradients};
     state->vertical = (cdl_vertical_context){.path = path, .indirect = state->indirect && state->pieces > 0,
                                              .target = state->target, .max_samples = 1048576.0};
     state->vertical.path.geometry = geometry;
@@ -198,6 +201,8 @@ static cdl_status plan_grid(cdl_solve_state *state, size_t g, cdl_error *err)
     const cdl_scene *scene = state->scene;
     const cdl_grid_spec *spec = &scene->grids[g];
     cdl_grid_solution *gs = &state->out->grids[g];
+    gs->kind = spec->kind;
+    if (!(gs->name = cdl_string_copy(spec->name))) return cdl_error_out_of_memory(err);
     cdl_status st = cdl_grid_build(spec, &gs->grid, err);
     if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", scene->path);
     st = cdl_grid_solution_alloc(gs, spec->want_ao, err);
@@ -247,6 +252,8 @@ cdl_status cdl_solve_plan(cdl_solve_state *state, cdl_error *err)
         st = plan_grid(state, g, err);
         if (st != CDL_OK) return st;
     }
+    st = cdl_solve_plan_observers(state, err);
+    if (st != CDL_OK) return st;
     if (state->options.cache_path) return cdl_solve_cache_open(state, err);
     return CDL_OK;
 }

@@ -7,6 +7,12 @@
 
 #include "base/error.h"
 #include "solver/integrate/integrator.h"
+#include "solver/scene/scene_internal.h"
+
+/* Does light reflect anywhere? The JSON path of the first surface (or area
+ * luminaire) with a reflectance above 0, its reflectance in *rho; NULL
+ * when nothing reflects (then only direct light is computed). */
+const char *cdl_solve_first_reflector(const cdl_scene *scene, double *rho);
 
 /* Plan a solve whose state holds the scene, the options and the (zeroed)
  * solution (solve_plan.c): the method, the settings, the scene's geometry

@@ -13,7 +13,7 @@
 #include "solver/bench/bench_report.h"
 #include "solver/output/solution_write.h"
 #include "solver/pool.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 static void print_help(FILE *out)
 {
@@ -184,7 +184,7 @@ static cdl_status solve_into(const cdl_scene *scene, cdl_method method, double t
     if (st == CDL_OK) st = cdl_bench_solve_rung(scene, method, target, threads, sol, err);
     if (st != CDL_OK) return st;
     st = cdl_solution_write(scene, sol, dir, NULL, err);
-    if (st != CDL_OK) cdl_solution_release(sol);
+    if (st != CDL_OK) cdl_solution_clear(sol);
     return st;
 }
 
@@ -208,7 +208,7 @@ static cdl_status estimate_reference(const cdl_scene *scene, const bench_args *a
         *pilot_compute = pilot.compute_seconds;
         *need = (pilot.seconds - pilot.compute_seconds) + pilot.compute_seconds * ratio * ratio;
         double next = 16.0 * pilot.seconds;
-        cdl_solution_release(&pilot);
+        cdl_solution_clear(&pilot);
         if (t / 4.0 < 4.0 * target || next > a->budget / 20.0) return CDL_OK;
         t /= 4.0;
     }
@@ -277,7 +277,7 @@ static int get_reference(const cdl_bench_sample *sample, const bench_args *a, do
         if (st == CDL_OK) {
             printf("reference: path traced to %g %% in %.2f s, %llu rays; written to %s\n", 100.0 * target,
                    sol.seconds, (unsigned long long)sol.rays, dir);
-            cdl_solution_release(&sol);
+            cdl_solution_clear(&sol);
             char text[256];
             int len = snprintf(text, sizeof text, KEY_HEADER "\nkey %016llx\ntarget %.17g\npoints %zu of %zu\n",
                                (unsigned long long)key, target, sample->count, sample->total);
@@ -343,7 +343,7 @@ static int run_ladder(const cdl_scene *scene, const bench_args *a, int m, const 
             return (int)st;
         }
         cdl_bench_rung_measure(&sol, ref, sample, &row->rung);
-        cdl_solution_release(&sol);
+        cdl_solution_clear(&sol);
         /* an exact reference (no stated error) resolves everything */
         row->below_reference = ref_rms > 0.0 && row->rung.rms <= CDL_BENCH_RESOLVABLE * ref_rms;
         prev = row;
@@ -466,7 +466,7 @@ static int bench(const bench_args *a, cdl_scene *scene)
     size_t count = 0;
     for (int m = 0; m < 3 && rc == CDL_EXIT_OK; ++m)
         if (methods[m]) rc = run_ladder(scene, a, m, &sample, &ref, ref_rms, t0, rows, &count);
-    cdl_solution_release(&ref);
+    cdl_solution_clear(&ref);
     cdl_bench_sample_release(&sample);
     if (rc != CDL_EXIT_OK) return rc;
 

@@ -6,6 +6,7 @@
 #include "cli_args.h"
 #include "command.h"
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 
 static void print_help(FILE *out)
 {
@@ -45,9 +46,24 @@ static void print_help(FILE *out)
           "A/B data is resampled onto C-planes for EULUMDAT (the flux change is\n"
           "reported). EULUMDAT has no ballast factor: an IES one is folded into the\n"
           "lamp flux (line 29), so the luminaire gives the same light (said on\n"
-          "stderr). Test-lab fields both ways: [TEST] is the report number (line 8),\n"
-          "[ISSUEDATE] the date (line 12), and [TESTLAB], which EULUMDAT lacks,\n"
-          "follows the date as \", test lab: NAME\" and comes back as [TESTLAB].\n"
+          "stderr), and `candela info` reads the same flux from both. Test-lab fields\n"
+          "both ways: [TEST] is the report number (line 8), [ISSUEDATE] the date\n"
+          "(line 12), and [TESTLAB], which EULUMDAT lacks, follows the date as\n"
+          "\", test lab: NAME\" and comes back as [TESTLAB].\n"
+          "\n"
+          "Round trips. EULUMDAT -> IES -> EULUMDAT gives back the file: the fields\n"
+          "LM-63 has no place for (Ityp, Isym and Mc, the luminaire's size, the\n"
+          "luminous heights per side, the stated DFF and LORL, the measurement tilt,\n"
+          "CCT and colour rendering, further lamp sets, the direct ratios, a gamma\n"
+          "range LM-63 cannot end at) travel as IES keywords [_EULUMDAT_...] that\n"
+          "the EULUMDAT writer reads back. IES -> EULUMDAT keeps [TEST], [TESTLAB],\n"
+          "[ISSUEDATE], [MANUFAC], [LUMCAT], [LUMINAIRE] and [LAMP] and names every\n"
+          "other keyword it cannot hold; it computes the direct ratios (lines 27-36,\n"
+          "see `candela info --help`), DFF and LORL from the table.\n"
+          "\n"
+          "Radiometric files (a table in W/sr, e.g. [_INTENSITYUNITS] mW/sr) are\n"
+          "refused as EULUMDAT, which holds cd/klm only (every program would read\n"
+          "them as light); IES to IES keeps their units.\n"
           "\n"
           "Exit status: 0 success, 1 bad input (an unreadable or invalid IN, an\n"
           "unwritable OUT), 2 usage error, 3 internal or resource failure.\n", out);
@@ -104,7 +120,7 @@ static int run(int argc, char **argv)
         fprintf(stderr, "candela convert: %s: expected an output name ending in .ies or .ldt\n", out);
         return CDL_EXIT_USAGE;
     }
-    cdl_photometry_write_options wo = CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT;
+    cdl_photometry_write_options wo = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
     const cdl_cli_option *ver = cdl_cli_find(options, count, "ies-version");
     if (ver->present) {
         if (strcmp(ver->value, "2019") == 0) wo.ies_version = 2019;
@@ -129,7 +145,7 @@ static int run(int argc, char **argv)
     }
     int quiet = cdl_cli_find(options, count, "quiet")->present;
 
-    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options ro = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     ro.strict = cdl_cli_find(options, count, "strict")->present;
     cdl_photometry *p = NULL;
     cdl_error err;
@@ -141,7 +157,8 @@ static int run(int argc, char **argv)
     }
     if (!quiet)
         for (size_t i = 0; i < cdl_photometry_warning_count(p); ++i)
-            fprintf(stderr, "candela convert: warning: %s\n", cdl_photometry_warning(p, i));
+            fprintf(stderr, "candela convert: warning: [%s] %s\n", cdl_photometry_warning_code(p, i),
+                    cdl_photometry_warning(p, i));
 
     const cdl_photometry_metadata *m = cdl_photometry_get_metadata(p);
     cdl_photometry_table t;

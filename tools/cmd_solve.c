@@ -4,11 +4,12 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "base/error_report.h"
 #include "cli_args.h"
 #include "command.h"
 #include "solver/output/grid_result.h"
 #include "solver/output/solution_write.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 static void print_help(FILE *out)
 {
@@ -29,6 +30,15 @@ static void print_help(FILE *out)
           "output; installed power and W/m2 when the luminaire files give their\n"
           "input watts; method, settings, time, rays, the plan: what was modelled\n"
           "and why; warnings: whatever lit nothing, each also on stderr).\n"
+          "With observers (scene \"observers\", or grids of \"type\": \"observers\"):\n"
+          "  glare.csv  one row per observer: name,x,y,z,view_x,view_y,view_z,ugr,\n"
+          "             ugr_stderr,background_cd_m2,background_stderr_cd_m2\n"
+          "and summary.json's \"glare\": each observer's UGR (CIE 117:1995) with its\n"
+          "standard error, background luminance, and every luminaire as a source\n"
+          "(L, solid angle less what surfaces hide, position index, term) or\n"
+          "excluded with the reason (behind the eye, beyond the table, no luminous\n"
+          "area). A scene with observers and no luminaire that can be rated, or an\n"
+          "eye on or inside a surface, is refused (exit 1).\n"
           "Every file is written to a temporary name and renamed when complete.\n"
           "\n"
           "Methods (scene \"solver\".\"method\"): direct computes direct light only,\n"
@@ -139,7 +149,7 @@ static int run(int argc, char **argv)
         fprintf(stderr, "candela solve: -o: expected a folder name, found an empty string\n(see 'candela solve --help')\n");
         return CDL_EXIT_USAGE;
     }
-    cdl_solve_options so = CDL_SOLVE_OPTIONS_DEFAULT;
+    cdl_solve_options so = CDL_SOLVE_OPTIONS_INIT;
     if (cdl_cli_parse_threads("solve", cdl_cli_find(opts, nopts, "threads"), &so.threads)) return CDL_EXIT_USAGE;
     cdl_cli_option *cache = cdl_cli_find(opts, nopts, "cache");
     if (cache->present) {
@@ -186,7 +196,7 @@ static int run(int argc, char **argv)
         return (int)st;
     }
     cdl_solution sol;
-    st = cdl_solve_scene(scene, &so, &sol, &err);
+    st = cdl_solve_scene_into(scene, &so, NULL, &sol, &err);
     int strict = cdl_cli_find(opts, nopts, "strict")->present;
     if (st == CDL_OK) {
         /* No silent zeros: every warning on stderr; --strict refuses them
@@ -200,14 +210,14 @@ static int run(int argc, char **argv)
         }
     }
     if (st == CDL_OK) {
-        cdl_solution_write_options wo = CDL_SOLUTION_WRITE_OPTIONS_DEFAULT;
+        cdl_solution_write_options wo = CDL_SOLUTION_WRITE_OPTIONS_INIT;
         wo.ocio_config = ocio;
         wo.map_log_scale = log_scale;
         st = cdl_solution_write(scene, &sol, out_opt->value, &wo, &err);
         if (st == CDL_OK) {
             for (size_t g = 0; g < sol.grid_count; ++g) {
                 cdl_grid_result r;
-                cdl_grid_solution_result(&sol.grids[g], &scene->grids[g], &r);
+                cdl_grid_solution_result(&sol.grids[g], &r);
                 cdl_grid_stats s;
                 cdl_grid_result_stats(&r, &s);
                 printf("%-16s %6zu points  Em %10.4g lx  Emin %10.4g lx  Emax %10.4g lx  U0 %.3f  Ud %.3f", r.name,
@@ -215,6 +225,18 @@ static int run(int argc, char **argv)
                 if (r.Ez) printf("  Ez %.4g lx", s.Ez.avg);
                 if (r.Esz) printf("  Esz %.4g lx", s.Esz.avg);
                 if (r.L) printf("  L %.4g cd/m2", s.L.avg);
+                printf("\n");
+            }
+            for (size_t i = 0; i < sol.observer_count; ++i) {
+                const cdl_observer_result *o = &sol.observers[i];
+                const cdl_observer_spec *os = &scene->observers[i];
+                printf("%-16s UGR ", os->name);
+                if (o->defined) printf("%5.1f +- %.2g", o->ugr, o->ugr_stderr);
+                else printf("%5s", "-");
+                printf("  Lb %.4g cd/m2  %zu source%s in view", o->background_cd_m2, o->source_count,
+                       o->source_count == 1 ? "" : "s");
+                if (os->required_ugr > 0.0 && o->defined)
+                    printf("  UGR_L %g: %s", os->required_ugr, o->ugr <= os->required_ugr ? "pass" : "FAIL");
                 printf("\n");
             }
             printf("method %s, %.3f s, %llu rays; results in %s\n", cdl_method_name(sol.method), sol.seconds,
@@ -227,9 +249,9 @@ static int run(int argc, char **argv)
                 printf("irradiance cache %s: %s\n", so.cache_path,
                        sol.cache_reused ? "records read from it, none gathered" : "records gathered and written to it");
         }
-        cdl_solution_release(&sol);
+        cdl_solution_clear(&sol);
     } else if (sol.grids || sol.warnings) {
-        cdl_solution_release(&sol);
+        cdl_solution_clear(&sol);
     }
     if (st != CDL_OK) {
         fprintf(stderr, "candela solve: %s\n", err.message);

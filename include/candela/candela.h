@@ -3,7 +3,7 @@
  * Which headers are public is decided here: CMake installs exactly the
  * headers this file includes (under include/candela/, keeping their
  * folders), and the shared library exports exactly the functions they
- * declare (a version script made from them; tests/install checks both).
+ * declare (a version script made from them; Candela's install tests check both).
  *
  *   base/error.h            status codes and the message buffer of every fallible call
  *   radiometry/units.h            quantities whose units the compiler checks (cdl_lux, cdl_candelas, ...)
@@ -19,10 +19,8 @@
  *   lights/emitters/emitter.h              point, spot, goniometric, area, directional and sky emitters
  *   lights/environment/solar_position.h    the sun's place for a site and time (NREL SPA)
  *   lights/environment/perez_sky.h         the Perez all-weather sky's parameters from weather data
- *   solver/geometry/ring3.h       a polygon's ring of points (a field of scene.h)
  *   solver/scene/scene.h          a scene from a file or a JSON string
  *   solver/progress.h             progress reports and cancelling of long calls
- *   solver/grid/grid.h            a grid's calculation points (part of the results)
  *   solver/solution.h             results in memory: E, direct, indirect, stderr per point
  *   solver/solve_options.h        the options of a solve
  *   solver/solve.h                solving a scene
@@ -31,7 +29,7 @@
  * Why these: they are what a program needs to do what the `candela`
  * command does (units and conversions, spectra, photometric files,
  * emitters, scenes, solving, results, outputs) and each is a stable
- * description of physics or of DESIGN.md's formats. Everything else is
+ * description of physics or of the scene and output formats. Everything else is
  * machinery that may change without notice and is not installed: every
  * *_internal.h, the readers' lexer and writers' helpers, sampling and the
  * random number generator, geometry (polygons and their CGAL meshing, ray
@@ -64,21 +62,30 @@
  *    names the input and what was expected; outputs are left untouched or
  *    NULL on failure. Library code never prints and never exits.
  *
- * Versions. cdl_version() is the release ("0.1.0", what `candela --version`
- * prints). cdl_abi_version() is the ABI version, the number in the shared
- * library's SONAME (libcandela.so.N): it moves whenever a public type's
- * definition changes or a public function is removed or changes its
- * signature, so a program is never loaded with a libcandela whose structs
- * differ from those it was compiled with. cmake/candela_abi.txt keeps the
- * history of the public types' fingerprint, and tests/install/test_abi.sh
- * fails when the types change under a recorded version (removed or changed
- * functions are the rule's too, but no test catches them yet).
+ * Versions. CDL_VERSION_MAJOR, _MINOR and _PATCH are the release this
+ * header belongs to, at compile time; cdl_version() is the release of the
+ * library a program runs with ("0.1.0", what `candela --version` prints).
+ * cdl_abi_version() is the ABI version, the number in the shared library's
+ * SONAME (libcandela.so.N): it moves whenever a public type's definition
+ * changes or a public function is removed or changes its signature, so a
+ * program is never loaded with a libcandela whose structs differ from
+ * those it was compiled with (Candela's build keeps the history of the
+ * public types' fingerprint and its tests fail when they change under a
+ * recorded version). Public structs that may grow begin with their own
+ * `size` (set it with the struct's INIT macro): the library reads and
+ * writes only the fields a caller's struct has.
  *
  * From C++, include this header (not the individual ones): it gives every
  * declaration C linkage.
  */
 #ifndef CANDELA_CANDELA_H
 #define CANDELA_CANDELA_H
+
+/* The release of these headers (CMakeLists.txt reads the project's version
+ * from here: this is its one source). */
+#define CDL_VERSION_MAJOR 0
+#define CDL_VERSION_MINOR 1
+#define CDL_VERSION_PATCH 0
 
 #ifdef __cplusplus
 /* The system headers the public headers use, outside the extern "C" block. */
@@ -102,10 +109,8 @@ extern "C" {
 #include "lights/emitters/emitter.h"
 #include "lights/environment/solar_position.h"
 #include "lights/environment/perez_sky.h"
-#include "solver/geometry/ring3.h"
 #include "solver/scene/scene.h"
 #include "solver/progress.h"
-#include "solver/grid/grid.h"
 #include "solver/solution.h"
 #include "solver/solve_options.h"
 #include "solver/solve.h"

@@ -1,4 +1,5 @@
 /* distribution2d.c - piecewise-constant 2D sampling by inverse cumulative sums. */
+#include "base/error_report.h"
 #include "lights/emitters/distribution2d.h"
 
 #include <math.h>

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "lights/emitters/emitter_internal.h"
 #include "radiometry/conversions.h"
 

@@ -25,15 +25,15 @@
  *  - all non-delta emitters: importance samples with their pdf, used when
  *    the emitter is partly hidden.
  *
- * Photometric amounts given as flux (DESIGN.md `flux_lm`) are converted by
+ * Photometric amounts given as flux (a scene's `flux_lm`) are converted by
  * the caller, once, with the closed-form flux, which is linear in the
  * intensity or luminance: create the emitter with 1 cd (1 cd/m^2), read
  * cdl_emitter_flux, and scale: I0 = Phi / flux_at_1cd (spot), L = Phi /
  * flux_at_1nit (area; = Phi / (pi A)), I = Phi / (4 pi) (point,
  * cdl_isotropic_intensity_from_flux). Goniometric emitters take flux_lm.
  *
- * Each kind's file (lights/emitter_<kind>.c) opens with its parameter
- * table (meaning, unit, default, range) and the physics it uses.
+ * Each kind's parameters are documented at its struct below (meaning,
+ * unit, default, range), with the physics it uses.
  * Constructors validate every parameter and fail with CDL_ERR_INPUT and
  * "<kind> emitter: <parameter>: expected ..., found ..." (the caller
  * prefixes the scene file and JSON path).
@@ -92,7 +92,7 @@ typedef struct cdl_spot_params {
  * luminaire flux first; every application factor then acts on it), else 1.
  * world_from_luminaire = Rz Ry Rx, right-handed about the fixed world axes;
  * the tilt factor is taken at the installed tilt (angle between the turned
- * nadir and world -z). See emitter_goniometric.c. */
+ * nadir and world -z). */
 typedef struct cdl_goniometric_params {
     cdl_vec3 position;
     double rotation_deg[3];                /* about world x, then y, then z (fixed axes) */
@@ -232,8 +232,7 @@ void cdl_emitter_release(cdl_emitter *emitter);
  * none for the other solids (cdl_emitter_has_exact_illuminance is 0);
  * samples uniform in the solid angle of the solid's bounding box (a box:
  * the box itself) or of its bounding sphere, whichever subtends less,
- * with their exact pdf.
- * See emitter_opening.c and emitter_solid.c. */
+ * with their exact pdf. */
 cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *p, cdl_emitter **out,
                                                   cdl_error *err);
 
@@ -297,8 +296,7 @@ int cdl_emitter_is_delta(const cdl_emitter *emitter);
  * Environment: flux incident on the face of a 1 m^2 disk facing `up` with
  * nothing around it: pi L for a uniform sky (full or upper hemisphere);
  * for a CIE overcast sky 7 pi L_z / 9; for an image, the exact sum over
- * pixels of L times their cosine-weighted solid angle above the horizon
- * (emitter_environment.c). */
+ * pixels of L times their cosine-weighted solid angle above the horizon. */
 cdl_luminous_flux cdl_emitter_flux(const cdl_emitter *emitter);
 
 /* Luminous intensity emitted toward world direction `dir` (any length > 0).
@@ -391,7 +389,7 @@ typedef struct cdl_light_sample {
  * shadowing, exactly cdl_emitter_exact_illuminance: area samples are points
  * on the emitter chosen whether or not another part of the same emitter
  * hides them, so a shadow ray to each sample gives the shadowed E.
- * Samplers (emitter_area.c, emitter_environment.c): rects uniform in
+ * Samplers: rects uniform in
  * solid angle when they subtend >= 1e-3 sr, else by area; meshes of up to
  * 64 triangles by solid angle (facing triangles only), larger ones by
  * area; disks cos-weighted about n when they fill half the receiver's

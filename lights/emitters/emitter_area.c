@@ -46,6 +46,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "lights/emitters/distribution2d.h"
 #include "lights/emitters/emitter.h"
 #include "lights/emitters/emitter_internal.h"

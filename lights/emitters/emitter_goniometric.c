@@ -25,6 +25,7 @@
  */
 #include <math.h>
 
+#include "base/error_report.h"
 #include "lights/emitters/emitter.h"
 #include "lights/emitters/emitter_internal.h"
 #include "radiometry/constants.h"
@@ -231,7 +232,13 @@ cdl_status cdl_emitter_create_goniometric(const cdl_goniometric_params *p, cdl_e
     if (!isfinite(p->flux_lm))
         return cdl_error_set(err, CDL_ERR_INPUT, "goniometric emitter: flux_lm: expected a finite number, found %g",
                              p->flux_lm);
-    double table_flux = cdl_photometry_flux(p->photometry).lm;
+    /* A radiant intensity table (W/sr) emits no light the solver could count. */
+    cdl_luminous_flux luminous;
+    if ((st = cdl_photometry_luminous_flux(p->photometry, &luminous, err)) != CDL_OK) {
+        cdl_error_prefix(err, "goniometric emitter: photometry: ");
+        return st;
+    }
+    double table_flux = luminous.lm;
     if (p->flux_lm > 0.0 && !(table_flux > 0.0))
         return cdl_error_set(err, CDL_ERR_INPUT,
                              "goniometric emitter: flux_lm: cannot rescale a distribution whose flux is %g lm to %g lm",

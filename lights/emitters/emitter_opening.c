@@ -34,9 +34,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/emitters/emitter.h"
 #include "lights/emitters/emitter_internal.h"
 #include "radiometry/constants.h"
+#include "lights/photometry/photometry_metadata.h"
 
 /* Relative tolerance of a table sample from I0 cos(gamma) for the table to
  * count as Lambertian: the closed form then differs from the sampled

@@ -67,6 +67,7 @@
 #include "lights/emitters/spherical_rectangle.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
+#include "lights/photometry/photometry_metadata.h"
 
 typedef struct solid_emitter {
     cdl_spread_emitter spread;   /* .point: the same luminaire as a point, I(w) */

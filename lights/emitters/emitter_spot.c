@@ -16,6 +16,7 @@
  */
 #include <math.h>
 
+#include "base/error_report.h"
 #include "lights/emitters/emitter.h"
 #include "lights/emitters/emitter_internal.h"
 #include "radiometry/constants.h"

@@ -57,6 +57,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/emitters/distribution2d.h"
 #include "lights/emitters/emitter.h"
 #include "lights/emitters/emitter_internal.h"

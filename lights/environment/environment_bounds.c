@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 
 /* Vertices a polygon may have; a larger one gets the whole sphere. */

@@ -29,6 +29,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 
 /* ---- one cell, by its boundary --------------------------------------------------- */

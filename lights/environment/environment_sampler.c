@@ -15,6 +15,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "lights/emitters/distribution2d.h"
 #include "lights/environment/environment_pixels.h"
 

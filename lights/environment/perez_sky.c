@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 
 /* The solar constant as gendaylit takes it, W/m^2 and lx (Radiance

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/environment/environment_bounds.h"
 #include "radiometry/constants.h"
 #include "radiometry/sampling.h"

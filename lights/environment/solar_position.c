@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/environment/solar_position_terms.h"
 #include "radiometry/constants.h"
 

@@ -19,7 +19,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/formats/photometry_io.h"
+#include "lights/photometry/photometry_metadata.h"
 
 typedef struct ies_reader {
     const char *source; /* name for messages */
@@ -119,8 +121,14 @@ static cdl_status read_header(ies_reader *r, const char *data, size_t size, char
 {
     cdl_photometry_metadata *m = &r->p->meta;
     size_t pos = 0;
-    if (size >= 3 && (unsigned char)data[0] == 0xEF && (unsigned char)data[1] == 0xBB && (unsigned char)data[2] == 0xBF)
+    if (cdl_photometry_has_bom(data, size)) {
         pos = 3;
+        if (cdl_photometry_add_warning(r->p, "byte-order-mark", 1,
+                                       "%s:1: the file starts with a UTF-8 byte-order mark (LM-63 is plain text; "
+                                       "some programs take it for part of the version tag): ignored",
+                                       r->source) != CDL_OK)
+            return oom(r);
+    }
     const char *line;
     size_t len;
     unsigned number = 0;
@@ -134,7 +142,7 @@ static cdl_status read_header(ies_reader *r, const char *data, size_t size, char
             version = version_of_tag(line, len, &standard);
             cdl_photometry_copy_text(m->version_tag, sizeof m->version_tag, line, len);
             if (!standard &&
-                cdl_photometry_add_warning(r->p,
+                cdl_photometry_add_warning(r->p, "ies-version-tag", 1,
                                            "%s:1: expected a standard version tag (IESNA91, IESNA:LM-63-1995, "
                                            "IESNA:LM-63-2002 or IES:LM-63-2019), found the non-standard version tag "
                                            "'%s': read as LM-63-%d",
@@ -181,7 +189,7 @@ static cdl_status read_tilt(ies_reader *r, const char *tilt)
                              "%s:%u: TILT=%s names a separate tilt file, and reading other files is disabled here",
                              r->source, r->s.line - 1, tilt);
     if (m->ies_version >= 2019 &&
-        cdl_photometry_add_warning(r->p, "%s:%u: LM-63-2019 no longer allows TILT=<file>; '%s' read anyway",
+        cdl_photometry_add_warning(r->p, "ies-tilt-file-2019", r->s.line - 1, "%s:%u: LM-63-2019 no longer allows TILT=<file>; '%s' read anyway",
                                    r->source, r->s.line - 1, tilt) != CDL_OK)
         return oom(r);
     cdl_error first;
@@ -193,7 +201,7 @@ static cdl_status read_tilt(ies_reader *r, const char *tilt)
         const char *rest = tilt + 5;
         while (*rest == ' ' || *rest == '\t') ++rest;
         if (*rest && cdl_tilt_read_file(r->name, rest, r->p, r->err) == CDL_OK)
-            return cdl_photometry_add_warning(r->p, "%s:%u: non-standard 'TILT=%s' read as TILT=%s", r->source,
+            return cdl_photometry_add_warning(r->p, "ies-tilt-syntax", r->s.line - 1, "%s:%u: non-standard 'TILT=%s' read as TILT=%s", r->source,
                                               r->s.line - 1, tilt, rest) == CDL_OK
                        ? CDL_OK
                        : oom(r);
@@ -392,7 +400,7 @@ static cdl_status check_trailing(ies_reader *r)
     size_t numbers = cdl_photometry_count_numbers(&r->s, 1);
     char q[40];
     cdl_photometry_quote(q, sizeof q, tok, len);
-    cdl_status st = cdl_photometry_add_warning(r->p, "%s:%u: %zu number%s and other text after the candela table "
+    cdl_status st = cdl_photometry_add_warning(r->p, "trailing-values", line, "%s:%u: %zu number%s and other text after the candela table "
                                                      "ignored (starting with %s)",
                                                r->source, line, numbers, numbers == 1 ? "" : "s", q);
     return st == CDL_OK ? CDL_OK : oom(r);
@@ -448,7 +456,7 @@ static cdl_status build_type_c(ies_reader *r, const ies_header *h, const double 
                     at = j;
                 }
             if (worst > 0.0 &&
-                cdl_photometry_add_warning(r->p,
+                cdl_photometry_add_warning(r->p, "seam-differs", r->last_row_line,
                                            "%s:%u: the H = 0 and H = 360 rows differ: expected the H = 360 row to "
                                            "repeat the H = 0 row, found a largest difference of %g cd at V = %g "
                                            "(%g vs %g); the H = 0 row is used",
@@ -459,7 +467,7 @@ static cdl_status build_type_c(ies_reader *r, const ies_header *h, const double 
             double gap = first + 360.0 - last, step = 0.0;
             for (size_t i = 1; i < n; ++i) step = fmax(step, hz[i] - hz[i - 1]);
             if (gap > step + 1e-9 &&
-                cdl_photometry_add_warning(r->p,
+                cdl_photometry_add_warning(r->p, "ies-horizontal-range", r->h_line,
                                            "%s:%u: expected horizontal angles 0, 0..90, 0..180, 90..270 or a full "
                                            "circle, found horizontal angles %g..%g: the %g degree gap to %g "
                                            "is interpolated across",
@@ -504,14 +512,16 @@ static cdl_status fill_metadata(ies_reader *r, const ies_header *h)
     m->ballast_factor = h->ballast;
     m->input_watts = h->watts > 0.0 ? h->watts : 0.0;
     if (h->watts < 0.0 &&
-        cdl_photometry_add_warning(r->p, "%s:%u: expected input watts >= 0 (0 when unknown), found %g; read as unknown",
+        cdl_photometry_add_warning(r->p, "ies-input-watts", h->line_b[2], "%s:%u: expected input watts >= 0 (0 when unknown), found %g; read as unknown",
                                    r->source, h->line_b[2], h->watts) != CDL_OK)
         return oom(r);
     r->p->lamp_flux_line = h->line_a[1];
+    r->p->ballast_line = h->line_b[0];
+    r->p->generation_line = h->line_b[1];
     if (m->ies_version <= 1995) {
         if (h->factor2 > 0.0) {
             m->ballast_lamp_factor = h->factor2;
-        } else if (cdl_photometry_add_warning(r->p, "%s:%u: ballast-lamp photometric factor %g is not positive; 1 is "
+        } else if (cdl_photometry_add_warning(r->p, "ies-ballast-lamp-factor", h->line_b[1], "%s:%u: ballast-lamp photometric factor %g is not positive; 1 is "
                                                     "used",
                                               r->source, h->line_b[1], h->factor2) != CDL_OK) {
             return oom(r);
@@ -521,12 +531,12 @@ static cdl_status fill_metadata(ies_reader *r, const ies_header *h)
     }
     int relative = h->lumens > 0.0;
     if (!relative && h->lumens != -1.0 &&
-        cdl_photometry_add_warning(r->p, "%s:%u: expected lumens per lamp > 0 or -1 (absolute photometry), found %g; "
+        cdl_photometry_add_warning(r->p, "ies-lumens-per-lamp", h->line_a[1], "%s:%u: expected lumens per lamp > 0 or -1 (absolute photometry), found %g; "
                                          "read as absolute photometry",
                                    r->source, h->line_a[1], h->lumens) != CDL_OK)
         return oom(r);
     if (relative && h->lamps == 0 &&
-        cdl_photometry_add_warning(r->p, "%s:%u: the number of lamps is 0, so the rated lamp flux is unknown",
+        cdl_photometry_add_warning(r->p, "ies-lamp-count", h->line_a[0], "%s:%u: the number of lamps is 0, so the rated lamp flux is unknown",
                                    r->source, h->line_a[0]) != CDL_OK)
         return oom(r);
     m->absolute = !(relative && h->lamps > 0);
@@ -541,7 +551,7 @@ static cdl_status fill_metadata(ies_reader *r, const ies_header *h)
     if (lamp) cdl_photometry_copy_text(set->type, sizeof set->type, lamp, strlen(lamp));
     int units = (int)h->units;
     if (units != 1 && units != 2) {
-        if (cdl_photometry_add_warning(r->p, "%s:%u: expected the units type 1 (feet) or 2 (metres), found %ld; the "
+        if (cdl_photometry_add_warning(r->p, "ies-units-type", h->line_a[6], "%s:%u: expected the units type 1 (feet) or 2 (metres), found %ld; the "
                                              "opening is read in metres",
                                        r->source, h->line_a[6], h->units) != CDL_OK)
             return oom(r);
@@ -606,7 +616,7 @@ cdl_status cdl_ies_read(const char *data, size_t size, const char *name, const c
     if (st == CDL_OK) st = fill_metadata(&r, &h);
     if (st == CDL_OK && h.type == 1) {
         if ((v[0] != 0.0 && v[0] != 90.0) || (v[nv - 1] != 90.0 && v[nv - 1] != 180.0))
-            if (cdl_photometry_add_warning(p,
+            if (cdl_photometry_add_warning(p, "ies-vertical-range", r.v_line,
                                            "%s:%u: expected vertical angles from 0 or 90 to 90 or 180 (LM-63), found "
                                            "vertical angles %g..%g; the intensity outside is taken as zero",
                                            r.source, r.v_line, v[0], v[nv - 1]) != CDL_OK)
@@ -616,7 +626,7 @@ cdl_status cdl_ies_read(const char *data, size_t size, const char *name, const c
         int ok_h = (hz[0] == -90.0 || hz[0] == 0.0) && hz[nh - 1] == 90.0;
         int ok_v = (v[0] == -90.0 || v[0] == 0.0) && v[nv - 1] == 90.0;
         if ((!ok_h || !ok_v) &&
-            cdl_photometry_add_warning(p,
+            cdl_photometry_add_warning(p, "ies-ab-range", r.h_line,
                                        "%s:%u: expected type %c angles from -90 or 0 to 90 for both H and V (LM-63), "
                                        "found H %g..%g, V %g..%g; the intensity outside is taken as zero",
                                        r.source, r.h_line, h.type == 2 ? 'B' : 'A', hz[0], hz[nh - 1], v[0],

@@ -15,8 +15,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
+#include "base/sized_struct.h"
+#include "lights/formats/ldt_keywords.h"
 #include "lights/formats/photometry_io.h"
 #include "lights/formats/photometry_writer.h"
+#include "lights/photometry/photometry_metadata.h"
 
 #define PER_LINE 10
 #define KEYWORD_CHUNK 200
@@ -140,6 +144,8 @@ static void keyword(cdl_text_buffer *out, const char *key, const char *value)
     } while (*v);
 }
 
+static void keyword_sink(void *context, const char *key, const char *value) { keyword(context, key, value); }
+
 static int is_one_of(const char *key, const char *const *set, size_t n)
 {
     for (size_t i = 0; i < n; ++i)
@@ -160,37 +166,18 @@ static void write_keywords(cdl_text_buffer *out, const cdl_photometry *p, int ve
         if (m->ldt_luminaire_number[0]) keyword(out, "LUMCAT", m->ldt_luminaire_number);
         if (m->ldt_luminaire_name[0]) keyword(out, "LUMINAIRE", m->ldt_luminaire_name);
         if (m->lamp_sets[0].type[0]) keyword(out, "LAMP", m->lamp_sets[0].type);
-        char line[512];
-        if (m->lamp_sets[0].colour[0] || m->lamp_sets[0].cri[0]) {
-            snprintf(line, sizeof line, "Lamp colour %s, colour rendering %s", m->lamp_sets[0].colour,
-                     m->lamp_sets[0].cri);
-            keyword(out, "OTHER", line);
-        }
-        if (m->ldt_file_name[0]) {
-            snprintf(line, sizeof line, "Converted from EULUMDAT file %s", m->ldt_file_name);
-            keyword(out, "OTHER", line);
-        }
-        for (size_t k = 1; k < m->lamp_set_count; ++k) {
-            const cdl_photometry_lamp_set *s = &m->lamp_sets[k];
-            snprintf(line, sizeof line, "Alternative lamp set %zu: %d x %s, %g lm, %g W", k + 1, abs(s->count),
-                     s->type, s->flux_lm, s->watts);
-            keyword(out, "OTHER", line);
-        }
-        if (m->lamp_set_count == 2)
-            cdl_photometry_note(lost, "EULUMDAT lamp set 2 (alternative equipment) kept only as [OTHER] text");
-        else if (m->lamp_set_count > 2)
-            cdl_photometry_note(lost, "EULUMDAT lamp sets 2..%zu (alternative equipment) kept only as [OTHER] text",
-                                m->lamp_set_count);
-        cdl_photometry_note(lost, "EULUMDAT direct ratios (lines 27-36) and luminaire dimensions (lines 13-15) have "
-                                  "no IES field");
-        if (m->ldt_measurement_tilt_deg != 0.0)
-            cdl_photometry_note(lost, "EULUMDAT measurement tilt %g degrees (line 25) has no IES field",
-                                m->ldt_measurement_tilt_deg);
+        /* every other field as a user keyword the EULUMDAT writer reads back (ldt_keywords.h) */
+        cdl_ldt_header_keywords(p, keyword_sink, out);
         const double *h = m->ldt_luminous_height_mm;
         if (h[0] != h[1] || h[0] != h[2] || h[0] != h[3])
             cdl_photometry_note(lost, "EULUMDAT luminous heights per side (C0 %g, C90 %g, C180 %g, C270 %g mm, lines "
-                                      "18-21) written as their mean, IES's one height",
+                                      "18-21) written as their mean, IES's one height ([_EULUMDAT_LUMINOUS_HEIGHTS] "
+                                      "keeps each for EULUMDAT)",
                                 h[0], h[1], h[2], h[3]);
+        if (m->candela_multiplier != 1.0)
+            cdl_photometry_note(lost, "the EULUMDAT conversion factor %g (line 24) is applied to the intensities "
+                                      "(LM-63 multiplier 1): the light is the same, the cd/klm values scale by it",
+                                m->candela_multiplier);
     } else {
         /* LM-63-2002 and -2019 both require these four, in this order */
         for (int r = 0; r < 4; ++r) {
@@ -242,7 +229,10 @@ cdl_status cdl_photometry_format_ies(const cdl_photometry *p, const cdl_photomet
 {
     *text = NULL;
     *length = 0;
-    int version = options && options->ies_version ? options->ies_version : 2019;
+    cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
+    cdl_sized_struct_read(&o, sizeof o, options);
+    options = &o;
+    int version = options->ies_version ? options->ies_version : 2019;
     if (version != 2019 && version != 2002)
         return cdl_error_set(err, CDL_ERR_USAGE, "IES output is LM-63-2019 or LM-63-2002, not %d", version);
     const cdl_photometry_metadata *m = &p->meta;
@@ -294,7 +284,8 @@ cdl_status cdl_photometry_format_ies(const cdl_photometry *p, const cdl_photomet
     double opening[3];
     cdl_photometry_opening_to_ies(&m->opening, opening);
     cdl_text_buffer_printf(&out, "%d ", lamps);
-    cdl_text_buffer_number(&out, lumens);
+    /* lamps x lumens is the reference flux: printed so that it comes back exactly */
+    cdl_text_buffer_exact(&out, lumens);
     cdl_text_buffer_printf(&out, " 1 %zu %zu %d 2 ", t.nv, t.nh, (int)p->type);
     for (int k = 0; k < 3; ++k) {
         cdl_text_buffer_number(&out, opening[k]);

@@ -15,7 +15,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
+#include "lights/formats/ldt_full_table.h"
 #include "lights/formats/photometry_io.h"
+#include "lights/photometry/photometry_metadata.h"
 
 typedef struct ldt_reader {
     const char *source;
@@ -183,17 +186,6 @@ static cdl_status read_header(ldt_reader *r, ldt_header *h)
     return CDL_OK;
 }
 
-/* Stored plane selection by angle: Isym 2 keeps C in [0, 180], 3 [90, 270], 4 [0, 90]. */
-static int stored(long isym, double c)
-{
-    switch (isym) {
-    case 2: return c >= 0.0 && c <= 180.0;
-    case 3: return c >= 90.0 && c <= 270.0;
-    case 4: return c >= 0.0 && c <= 90.0;
-    default: return 1;
-    }
-}
-
 static cdl_status read_angles(ldt_reader *r, cdl_photometry_scanner *s, const char *kind, long n, double hi,
                               double *x, unsigned *first_line)
 {
@@ -244,6 +236,98 @@ static void fill_opening(cdl_photometry_metadata *m)
     }
 }
 
+/* np x ng intensities in cd/klm, times `scale` to candela, into cd;
+ * *first_line: the line of the first. */
+static cdl_status read_intensities(ldt_reader *r, cdl_photometry_scanner *s, const double *planes, size_t np,
+                                   const double *g, size_t ng, double scale, double *cd, unsigned *first_line)
+{
+    char what[96];
+    for (size_t i = 0; i < np; ++i)
+        for (size_t j = 0; j < ng; ++j) {
+            double x;
+            cdl_token_kind k = cdl_photometry_take_number(s, &x);
+            unsigned line = s->tok_line;
+            if (i == 0 && j == 0) *first_line = line;
+            if (k == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * scale)) {
+                cd[i * ng + j] = x * scale;
+                continue;
+            }
+            snprintf(what, sizeof what, "the intensity at C%g, gamma %g", planes[i], g[j]);
+            if (k != CDL_TOKEN_NUMBER) return cdl_photometry_token_error(s, k, r->source, what, r->err);
+            if (x < 0.0)
+                return cdl_error_set(r->err, CDL_ERR_INPUT, "%s:%u: expected %s >= 0, found %g (negative intensity)",
+                                     r->source, line, what, x);
+            return cdl_error_set(r->err, CDL_ERR_INPUT, "%s:%u: expected %s to give a finite candela value, found %g",
+                                 r->source, line, what, x);
+        }
+    return CDL_OK;
+}
+
+/* Isym 1..4 followed by exactly the values of the planes it leaves out:
+ * the file holds all its Mc planes, in C order from C0 (ldt_full_table.c).
+ * When it does, *t becomes what to use (the planes Isym names, or the full
+ * table where the data contradict Isym) and *used is 1, with a warning. */
+static cdl_status full_table(ldt_reader *r, cdl_photometry_scanner *s, const ldt_header *h, const double *c,
+                             const double *g, double scale, cdl_ldt_table *t, int *used)
+{
+    size_t mc = (size_t)h->mc, ng = t->ng;
+    if (mc >= 2 && c[mc - 1] == 360.0) --mc; /* C360 is C0 again */
+    if (mc <= t->np || cdl_photometry_count_numbers(s, 1) != (mc - t->np) * ng) return CDL_OK;
+    cdl_ldt_table all = {malloc(mc * sizeof *all.planes), malloc(mc * ng * sizeof *all.cd), mc, ng,
+                         CDL_PHOTOMETRY_SYMMETRY_NONE};
+    if (!all.planes || !all.cd) {
+        free(all.planes);
+        free(all.cd);
+        return oom(r);
+    }
+    memcpy(all.planes, c, mc * sizeof *c);
+    memcpy(all.cd, t->cd, t->np * ng * sizeof *t->cd);
+    cdl_photometry_scanner probe = *s;
+    int numbers = 1;
+    for (size_t k = t->np * ng; k < mc * ng && numbers; ++k) {
+        double x;
+        numbers = cdl_photometry_take_number(&probe, &x) == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * scale);
+        all.cd[k] = x * scale;
+    }
+    cdl_ldt_table use;
+    double worst = 0.0;
+    size_t at_plane = 0, at_gamma = 0;
+    int agree = numbers ? cdl_ldt_check_full_table(&all, h->isym, g, &use, &worst, &at_plane, &at_gamma) : -2;
+    cdl_status st = agree == -1 ? oom(r) : CDL_OK;
+    if (agree == 1) {
+        st = cdl_photometry_add_warning(r->p, "ldt-full-table", h->mc_line,
+                                        "%s:%u: the file holds all %zu C-planes although Isym %ld stores %zu: they are "
+                                        "the mirror images Isym %ld says (within 1 %% of the peak), and its planes are "
+                                        "used",
+                                        r->source, h->mc_line, mc, h->isym, t->np, h->isym) == CDL_OK
+                 ? CDL_OK
+                 : oom(r);
+        free(all.planes);
+        free(all.cd);
+        all = use;
+    } else if (agree == 0) {
+        st = cdl_photometry_add_warning(r->p, "ldt-symmetry-indicator", h->isym_line,
+                                        "%s:%u: the symmetry indicator Isym %ld is contradicted by the data: the file "
+                                        "holds all %zu C-planes, and at C%g, gamma %g it has %.4g cd/klm where the "
+                                        "symmetry gives %.4g more or less; read as the full table (Isym 0)",
+                                        r->source, h->isym_line, h->isym, mc, all.planes[at_plane], g[at_gamma],
+                                        all.cd[at_plane * ng + at_gamma] / scale, worst / scale) == CDL_OK
+                 ? CDL_OK
+                 : oom(r);
+    }
+    if (agree < 0 || st != CDL_OK) {
+        free(all.planes);
+        free(all.cd);
+        return st;
+    }
+    free(t->planes);
+    free(t->cd);
+    *t = all;
+    *s = probe;
+    *used = 1;
+    return CDL_OK;
+}
+
 cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const cdl_photometry_read_options *options,
                         cdl_photometry *p, cdl_error *err)
 {
@@ -257,6 +341,15 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
     r.size = size;
     cdl_photometry_metadata *m = &p->meta;
     m->format = CDL_PHOTOMETRY_FORMAT_EULUMDAT;
+    /* A UTF-8 byte-order mark is not part of the company name (line 1). */
+    if (cdl_photometry_has_bom(data, size)) {
+        r.pos = 3;
+        if (cdl_photometry_add_warning(p, "byte-order-mark", 1,
+                                       "%s:1: the file starts with a UTF-8 byte-order mark (EULUMDAT is plain "
+                                       "text; some programs take it for part of the company name): ignored",
+                                       r.source) != CDL_OK)
+            return oom(&r);
+    }
     ldt_header h;
     cdl_status st = read_header(&r, &h);
     if (st != CDL_OK) return st;
@@ -266,7 +359,7 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
     m->file_horizontal_count = (size_t)h.mc;
     m->file_vertical_count = (size_t)h.ng;
     if ((h.ityp < 0 || h.ityp > 3) &&
-        cdl_photometry_add_warning(p, "%s:2: expected the type indicator Ityp 0..3, found %ld", r.source, h.ityp) != CDL_OK)
+        cdl_photometry_add_warning(p, "ldt-ityp", 2, "%s:2: expected the type indicator Ityp 0..3, found %ld", r.source, h.ityp) != CDL_OK)
         return oom(&r);
 
     const cdl_photometry_lamp_set *set1 = &m->lamp_sets[0];
@@ -306,7 +399,7 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
     if (st == CDL_OK) st = read_angles(&r, &s, "C", h.mc, 360.0, c, &c_line);
     if (st == CDL_OK) st = read_angles(&r, &s, "gamma", h.ng, 180.0, g, &g_line);
     if (st == CDL_OK && c[0] != 0.0 &&
-        cdl_photometry_add_warning(p, "%s:%u: expected the C-plane list to start at 0, found %g", r.source, c_line,
+        cdl_photometry_add_warning(p, "ldt-c-start", c_line, "%s:%u: expected the C-plane list to start at 0, found %g", r.source, c_line,
                                    c[0]) != CDL_OK)
         st = oom(&r);
     if (st == CDL_OK) {
@@ -314,7 +407,7 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
             planes[np++] = 0.0;
         } else {
             for (size_t i = 0; i < mc; ++i)
-                if (stored(h.isym, c[i])) planes[np++] = c[i];
+                if (cdl_ldt_stored_plane(h.isym, c[i])) planes[np++] = c[i];
         }
         if (h.isym == 0 && np >= 2 && c[mc - 1] == 360.0) --np; /* C360 is C0 again */
         static const double lo[5] = {0, 0, 0, 90, 0}, hi[5] = {0, 0, 180, 270, 90};
@@ -342,50 +435,31 @@ cdl_status cdl_ldt_read(const char *data, size_t size, const char *name, const c
                            r.source, s.line, np * ng, np, ng, h.isym);
     if (st == CDL_OK && !(cd = malloc(np * ng * sizeof *cd))) st = oom(&r);
     double scale = h.cfli * set1->flux_lm / 1000.0;
-    char what[96];
     unsigned values_line = s.line; /* line of the first intensity: where table-wide errors point */
-    for (size_t i = 0; i < np && st == CDL_OK; ++i)
-        for (size_t j = 0; j < ng && st == CDL_OK; ++j) {
-            double x;
-            cdl_token_kind k = cdl_photometry_take_number(&s, &x);
-            unsigned line = s.tok_line;
-            if (i == 0 && j == 0) values_line = line;
-            if (k == CDL_TOKEN_NUMBER && x >= 0.0 && isfinite(x * scale)) {
-                cd[i * ng + j] = x * scale;
-                continue;
-            }
-            snprintf(what, sizeof what, "the intensity at C%g, gamma %g", planes[i], g[j]);
-            if (k != CDL_TOKEN_NUMBER) st = cdl_photometry_token_error(&s, k, r.source, what, err);
-            if (st == CDL_OK && x < 0.0)
-                st = cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected %s >= 0, found %g (negative intensity)",
-                                   r.source, line, what, x);
-            if (st == CDL_OK && !isfinite(x * scale))
-                st = cdl_error_set(err, CDL_ERR_INPUT, "%s:%u: expected %s to give a finite candela value, found %g",
-                                   r.source, line, what, x);
-            if (st == CDL_OK) cd[i * ng + j] = x * scale;
-        }
-    if (st == CDL_OK) {
+    if (st == CDL_OK) st = read_intensities(&r, &s, planes, np, g, ng, scale, cd, &values_line);
+    cdl_ldt_table table = {planes, cd, np, ng, CDL_PHOTOMETRY_SYMMETRY_INFER};
+    int full = 0;
+    if (st == CDL_OK && h.isym != 0) st = full_table(&r, &s, &h, c, g, scale, &table, &full);
+    planes = table.planes;
+    cd = table.cd;
+    np = table.np;
+    if (st == CDL_OK && !full) {
         size_t extra = cdl_photometry_count_numbers(&s, 1);
         const char *tok;
         size_t len;
         unsigned line;
         cdl_photometry_scanner probe = s;
         if (cdl_photometry_scan(&probe, &tok, &len, &line) &&
-            cdl_photometry_add_warning(p, "%s:%u: %zu value%s after the intensity table ignored", r.source, line,
+            cdl_photometry_add_warning(p, "trailing-values", line, "%s:%u: %zu value%s after the intensity table ignored", r.source, line,
                                        extra, extra == 1 ? "" : "s") != CDL_OK)
             st = oom(&r);
     }
     if (st == CDL_OK) {
-        cdl_photometry_symmetry sym;
-        switch (h.isym) {
-        case 1: sym = CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL; break;
-        case 2: sym = CDL_PHOTOMETRY_SYMMETRY_BILATERAL_C0_C180; break;
-        case 3: sym = CDL_PHOTOMETRY_SYMMETRY_BILATERAL_C90_C270; break;
-        case 4: sym = CDL_PHOTOMETRY_SYMMETRY_QUADRANT; break;
-        default: sym = np == 1 ? CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL : CDL_PHOTOMETRY_SYMMETRY_NONE; break;
-        }
-        if (h.isym == 0 && np == 1 &&
-            cdl_photometry_add_warning(p, "%s:%u: Isym 0 with a single C-plane, read as rotationally symmetric",
+        cdl_photometry_symmetry sym = cdl_ldt_symmetry(h.isym);
+        if (h.isym == 0 && np == 1) sym = CDL_PHOTOMETRY_SYMMETRY_ROTATIONAL;
+        if (full) sym = table.symmetry; /* what the full table it holds showed */
+        if (h.isym == 0 && np == 1 && !full &&
+            cdl_photometry_add_warning(p, "ldt-isym0-one-plane", h.mc_line, "%s:%u: Isym 0 with a single C-plane, read as rotationally symmetric",
                                        r.source, h.mc_line) != CDL_OK)
             st = oom(&r);
         if (st == CDL_OK) {

@@ -1,4 +1,5 @@
 /* photometry_lexer.c - lines, tokens and locale-independent numbers. */
+#include "base/error_report.h"
 #include "lights/formats/photometry_lexer.h"
 
 #include <math.h>
@@ -11,6 +12,12 @@ size_t cdl_photometry_text_length(const char *data, size_t size)
 {
     const char *z = memchr(data, CTRL_Z, size);
     return z ? (size_t)(z - data) : size;
+}
+
+int cdl_photometry_has_bom(const char *data, size_t size)
+{
+    return size >= 3 && (unsigned char)data[0] == 0xEF && (unsigned char)data[1] == 0xBB &&
+           (unsigned char)data[2] == 0xBF;
 }
 
 int cdl_photometry_next_line(const char *data, size_t size, size_t *pos, const char **line, size_t *len)

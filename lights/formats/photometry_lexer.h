@@ -18,6 +18,9 @@
 /* The data up to (not including) the first Ctrl-Z. */
 size_t cdl_photometry_text_length(const char *data, size_t size);
 
+/* 1 when the data start with a UTF-8 byte-order mark (EF BB BF). */
+int cdl_photometry_has_bom(const char *data, size_t size);
+
 /* Next line starting at *pos (< size): sets its span (without the line
  * end) and advances *pos past the line end. Returns 0 at the end of data. */
 int cdl_photometry_next_line(const char *data, size_t size, size_t *pos, const char **line, size_t *len);

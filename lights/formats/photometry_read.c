@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
+#include "base/sized_struct.h"
 #include "lights/formats/photometry_io.h"
 
 static int starts_with_nocase(const char *s, size_t len, const char *prefix)
@@ -29,8 +31,7 @@ static detected_format detect(const char *data, size_t size)
     size_t len;
     int ldt_lines = 0, tilt = 0, tag = 0;
     /* skip a UTF-8 byte-order mark */
-    if (size >= 3 && (unsigned char)data[0] == 0xEF && (unsigned char)data[1] == 0xBB && (unsigned char)data[2] == 0xBF)
-        pos = 3;
+    if (cdl_photometry_has_bom(data, size)) pos = 3;
     for (unsigned n = 1; n <= 2000 && cdl_photometry_next_line(data, size, &pos, &line, &len); ++n) {
         cdl_photometry_trim(&line, &len);
         if (n == 1) tag = starts_with_nocase(line, len, "IESNA") || starts_with_nocase(line, len, "IES:");
@@ -66,8 +67,9 @@ cdl_status cdl_photometry_read_memory(const void *bytes, size_t size, const char
                                       cdl_error *err)
 {
     *out = NULL;
-    cdl_photometry_read_options defaults = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
-    if (!options) options = &defaults;
+    cdl_photometry_read_options given = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
+    cdl_sized_struct_read(&given, sizeof given, options);
+    options = &given;
     const char *source = name ? name : "<memory>";
     const char *data = bytes;
     size = cdl_photometry_text_length(data, size);
@@ -87,7 +89,8 @@ cdl_status cdl_photometry_read_memory(const void *bytes, size_t size, const char
     if (st == CDL_OK) cdl_photometry_detect_units(p);
     if (st == CDL_OK && cdl_photometry_check_consistency(p, source) != CDL_OK) st = cdl_error_out_of_memory(err);
     if (st == CDL_OK && options->strict && p->warning_count > 0)
-        st = cdl_error_set(err, CDL_ERR_INPUT, "%s (an error with --strict)", p->warnings[0]);
+        st = cdl_error_set(err, CDL_ERR_INPUT, "%s [%s] (an error with --strict)", p->warnings[0].message,
+                           p->warnings[0].code);
     if (st != CDL_OK) {
         cdl_photometry_release(p);
         return st;

@@ -3,14 +3,16 @@
 #include <string.h>
 
 #include "base/atomic_file.h"
+#include "base/error_report.h"
+#include "base/sized_struct.h"
 #include "lights/photometry/photometry_internal.h"
 
 cdl_status cdl_photometry_write_file(const cdl_photometry *p, const char *path, cdl_photometry_format format,
                                      const cdl_photometry_write_options *options, cdl_photometry_notes *lost,
                                      cdl_error *err)
 {
-    cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT;
-    if (options) o = *options;
+    cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
+    cdl_sized_struct_read(&o, sizeof o, options);
     if (!o.file_name) {
         const char *slash = strrchr(path, '/');
         o.file_name = slash ? slash + 1 : path;

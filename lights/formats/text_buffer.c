@@ -44,6 +44,17 @@ void cdl_text_buffer_number(cdl_text_buffer *t, double x)
     cdl_text_buffer_printf(t, "%.10g", x);
 }
 
+void cdl_text_buffer_exact(cdl_text_buffer *t, double x)
+{
+    if (x == 0.0) x = 0.0;
+    char buf[40];
+    for (int digits = 10; digits <= 17; ++digits) {
+        snprintf(buf, sizeof buf, "%.*g", digits, x);
+        if (strtod(buf, NULL) == x) break;
+    }
+    cdl_text_buffer_printf(t, "%s", buf);
+}
+
 void cdl_text_buffer_free(cdl_text_buffer *t)
 {
     free(t->data);

@@ -19,6 +19,9 @@ void cdl_text_buffer_printf(cdl_text_buffer *t, const char *fmt, ...)
     ;
 /* A number with up to 10 significant digits, no trailing zeros. */
 void cdl_text_buffer_number(cdl_text_buffer *t, double x);
+/* The shortest form, of 10 to 17 significant digits, that reads back as x
+ * exactly (for a value another is derived from: lumens per lamp). */
+void cdl_text_buffer_exact(cdl_text_buffer *t, double x);
 void cdl_text_buffer_free(cdl_text_buffer *t);
 
 #endif

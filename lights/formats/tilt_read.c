@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/formats/photometry_io.h"
 
 /* Tilt tables are short (a handful of angles); this bounds a hostile count. */

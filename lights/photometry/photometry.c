@@ -1,6 +1,7 @@
 /* photometry.c - the photometric model: construction, validation, accessors,
  * metadata, warnings, tilt and output factors. Interpolation lives in
  * photometry_intensity.c, integration in photometry_flux.c. */
+#include "base/error_report.h"
 #include "lights/photometry/photometry_internal.h"
 
 #include <ctype.h>
@@ -78,7 +79,7 @@ void cdl_photometry_release(cdl_photometry *p)
         free(p->meta.keywords[i].value);
     }
     free(p->meta.keywords);
-    for (size_t i = 0; i < p->warning_count; ++i) free(p->warnings[i]);
+    for (size_t i = 0; i < p->warning_count; ++i) free(p->warnings[i].message);
     free(p->warnings);
     free(p);
 }
@@ -176,7 +177,7 @@ cdl_status cdl_photometry_set_table(cdl_photometry *p, cdl_photometric_type type
             const double *r0 = cd, *r1 = cd + (nh - 1) * nv;
             for (size_t j = 0; j < nv; ++j)
                 if (r0[j] != r1[j]) {
-                    if (cdl_photometry_add_warning(p, "the C = 0 and C = 360 planes differ (%g and %g cd at gamma "
+                    if (cdl_photometry_add_warning(p, "seam-differs", 0, "the C = 0 and C = 360 planes differ (%g and %g cd at gamma "
                                                       "%g); the C = 0 plane is used",
                                                    r0[j], r1[j], v[j]) != CDL_OK)
                         return cdl_error_out_of_memory(err);
@@ -311,7 +312,33 @@ cdl_status cdl_photometry_set_tilt(cdl_photometry *p, int geometry, const double
 
 /* ---- accessors --------------------------------------------------------------- */
 
-cdl_luminous_flux cdl_photometry_flux(const cdl_photometry *p) { return cdl_lumens(p->flux_lm); }
+cdl_luminous_flux cdl_photometry_flux(const cdl_photometry *p)
+{
+    /* A radiant intensity table integrates to watts, never lumens (photometry_units.c). */
+    return cdl_lumens(p->meta.radiometric ? NAN : p->flux_lm);
+}
+
+cdl_status cdl_photometry_luminous_flux(const cdl_photometry *p, cdl_luminous_flux *flux, cdl_error *err)
+{
+    if (p->meta.radiometric)
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "expected photometric data (candela), found radiant intensity in %s ([%s]): a "
+                             "radiometric file has no lumens without a spectrum",
+                             cdl_photometry_intensity_unit(p), p->meta.units_keyword);
+    *flux = cdl_lumens(p->flux_lm);
+    return CDL_OK;
+}
+
+cdl_status cdl_photometry_radiant_flux(const cdl_photometry *p, cdl_radiant_flux *flux, cdl_error *err)
+{
+    if (!p->meta.radiometric)
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "expected radiometric data (W/sr), found a table in candela: its radiant flux needs "
+                             "the light's spectrum");
+    /* the table's integral is in its own unit times sr: W/sr x scale x sr = W */
+    *flux = cdl_watts(p->flux_lm * p->meta.radiometric_scale);
+    return CDL_OK;
+}
 
 cdl_luminous_intensity cdl_photometry_max_intensity(const cdl_photometry *p) { return cdl_candelas(p->max_cd); }
 
@@ -357,12 +384,22 @@ size_t cdl_photometry_warning_count(const cdl_photometry *p) { return p->warning
 
 const char *cdl_photometry_warning(const cdl_photometry *p, size_t i)
 {
-    return i < p->warning_count ? p->warnings[i] : NULL;
+    return i < p->warning_count ? p->warnings[i].message : NULL;
+}
+
+const char *cdl_photometry_warning_code(const cdl_photometry *p, size_t i)
+{
+    return i < p->warning_count ? p->warnings[i].code : NULL;
+}
+
+unsigned cdl_photometry_warning_line(const cdl_photometry *p, size_t i)
+{
+    return i < p->warning_count ? p->warnings[i].line : 0;
 }
 
 /* ---- warnings and keywords --------------------------------------------------- */
 
-cdl_status cdl_photometry_add_warning(cdl_photometry *p, const char *fmt, ...)
+cdl_status cdl_photometry_add_warning(cdl_photometry *p, const char *code, unsigned line, const char *fmt, ...)
 {
     char buf[CDL_ERROR_MESSAGE_SIZE];
     va_list ap;
@@ -371,7 +408,7 @@ cdl_status cdl_photometry_add_warning(cdl_photometry *p, const char *fmt, ...)
     va_end(ap);
     if (p->warning_count == p->warning_capacity) {
         size_t cap = p->warning_capacity ? 2 * p->warning_capacity : 8;
-        char **w = realloc(p->warnings, cap * sizeof *w);
+        cdl_photometry_warning_item *w = realloc(p->warnings, cap * sizeof *w);
         if (!w) return CDL_ERR_INTERNAL;
         p->warnings = w;
         p->warning_capacity = cap;
@@ -380,7 +417,7 @@ cdl_status cdl_photometry_add_warning(cdl_photometry *p, const char *fmt, ...)
     char *copy = malloc(len + 1);
     if (!copy) return CDL_ERR_INTERNAL;
     memcpy(copy, buf, len + 1);
-    p->warnings[p->warning_count++] = copy;
+    p->warnings[p->warning_count++] = (cdl_photometry_warning_item){code, line, copy};
     return CDL_OK;
 }
 
@@ -457,7 +494,9 @@ cdl_status cdl_photometry_copy_metadata(cdl_photometry *dst, const cdl_photometr
                                 src->meta.tilt_count, NULL) != CDL_OK)
         return CDL_ERR_INTERNAL;
     for (size_t i = 0; i < src->warning_count; ++i)
-        if (cdl_photometry_add_warning(dst, "%s", src->warnings[i]) != CDL_OK) return CDL_ERR_INTERNAL;
+        if (cdl_photometry_add_warning(dst, src->warnings[i].code, src->warnings[i].line, "%s",
+                                       src->warnings[i].message) != CDL_OK)
+            return CDL_ERR_INTERNAL;
     return CDL_OK;
 }
 

@@ -96,11 +96,15 @@ const char *cdl_photometry_symmetry_name(cdl_photometry_symmetry symmetry);
 
 typedef struct cdl_photometry cdl_photometry;
 
+/* How a file is read. Start from CDL_PHOTOMETRY_READ_OPTIONS_INIT (it sets
+ * `size`, so that fields added later keep their defaults for a program
+ * built before them). */
 typedef struct cdl_photometry_read_options {
+    size_t size;             /* sizeof(cdl_photometry_read_options) */
     int strict;              /* 1: warnings become errors */
     int no_external_files;   /* 1: refuse TILT=<file> instead of opening it (fuzzing, sandboxes) */
 } cdl_photometry_read_options;
-#define CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT {0, 0}
+#define CDL_PHOTOMETRY_READ_OPTIONS_INIT {.size = sizeof(cdl_photometry_read_options), .strict = 0, .no_external_files = 0}
 
 /* Read an IES (any LM-63 version) or EULUMDAT file; the format is detected
  * from the content, not the extension. Errors: CDL_ERR_INPUT with
@@ -150,13 +154,29 @@ cdl_luminous_intensity cdl_photometry_intensity_c_gamma(const cdl_photometry *ph
  * hot path; the caller checks the table's type and symmetry. */
 double cdl_photometry_intensity_one_plane(const cdl_photometry *photometry, double gamma_deg);
 
-/* Total flux: the exact integral of the interpolated distribution over the sphere. */
+/* Total flux: the exact integral of the interpolated distribution over the
+ * sphere. A radiometric file (metadata.radiometric: its table is radiant
+ * intensity, W/sr) has no lumens: NaN, never its watts as lumens; ask
+ * cdl_photometry_radiant_flux, or cdl_photometry_luminous_flux for a status.
+ * Application factors (the ballast factor) are not in it: times
+ * cdl_photometry_output_factor, it is the luminaire's flux in a scene. */
 cdl_luminous_flux cdl_photometry_flux(const cdl_photometry *photometry);
+
+/* The same with a status: CDL_ERR_INPUT (naming the file's unit and the
+ * keyword that says so) for a radiometric file; *flux untouched then. */
+cdl_status cdl_photometry_luminous_flux(const cdl_photometry *photometry, cdl_luminous_flux *flux, cdl_error *err);
+
+/* Radiant flux in W of a radiometric file: the table's exact integral
+ * times its unit (1e-3 for mW/sr). CDL_ERR_INPUT for a photometric file,
+ * whose radiant flux needs a spectrum (radiometry/spectrum.h). */
+cdl_status cdl_photometry_radiant_flux(const cdl_photometry *photometry, cdl_radiant_flux *flux, cdl_error *err);
 
 /* Flux into the directions whose frame gamma (angle from -z) lies in
  * [gamma_lo_deg, gamma_hi_deg]. Exact for type C tables and for the two
  * hemispheres of every type; for 10-degree zones of type A/B tables it is a
- * quadrature accurate to about 1e-4 of the total. */
+ * quadrature accurate to about 1e-4 of the total. In the table's unit times
+ * sr (the lumens of a photometric file; for a radiometric one the same
+ * integral of its W/sr values, which cdl_photometry_summary gives in W). */
 cdl_luminous_flux cdl_photometry_zone_flux(const cdl_photometry *photometry, double gamma_lo_deg,
                                            double gamma_hi_deg);
 
@@ -284,6 +304,8 @@ double cdl_luminous_opening_projected_area(const cdl_luminous_opening *opening, 
 void cdl_photometry_opening_luminance(const cdl_photometry *photometry, double c_deg, double gamma_deg,
                                       cdl_luminance *average, cdl_luminance *maximum);
 
+/* ---- the file's header ------------------------------------------------------ */
+
 /* One lamp set. An IES file has one (lamp count x lumens per lamp); an
  * EULUMDAT file has 1..20, the first being the measured equipment and the
  * others alternatives. */
@@ -296,76 +318,63 @@ typedef struct cdl_photometry_lamp_set {
     char cri[64];       /* colour rendering group / index as written */
 } cdl_photometry_lamp_set;
 
-typedef struct cdl_photometry_keyword {
-    char *key;          /* without brackets, e.g. "MANUFAC", "_ABSOLUTELUMENS"; "" for free text */
-    char *value;        /* [MORE] continuations joined with '\n' */
-    unsigned line;      /* line of the file where the keyword starts; 0 when not read from a file */
-} cdl_photometry_keyword;
+/* Which format the photometry was read from (CDL_PHOTOMETRY_FORMAT_TABLE
+ * when built in memory), and the LM-63 version of an IES file (1986, 1991,
+ * 1995, 2002 or 2019; 0 when not IES). */
+cdl_photometry_format cdl_photometry_get_format(const cdl_photometry *photometry);
+int cdl_photometry_ies_version(const cdl_photometry *photometry);
 
-typedef enum cdl_tilt_kind { CDL_TILT_NONE = 0, CDL_TILT_INCLUDE, CDL_TILT_FILE } cdl_tilt_kind;
+/* The input power the file states, in watts (0 when unknown); its ballast
+ * (output) factor (1 when the format has none); 1 for absolute photometry
+ * (no lamp reference); 1 when the table is radiant intensity (W/sr, its
+ * figures never lumens: cdl_photometry_radiant_flux). */
+double cdl_photometry_input_watts(const cdl_photometry *photometry);
+double cdl_photometry_ballast_factor(const cdl_photometry *photometry);
+int cdl_photometry_is_absolute(const cdl_photometry *photometry);
+int cdl_photometry_is_radiometric(const cdl_photometry *photometry);
 
-#define CDL_PHOTOMETRY_MAX_LAMP_SETS 20
+/* The luminous opening the file gives (a point when it gives none). */
+const cdl_luminous_opening *cdl_photometry_opening(const cdl_photometry *photometry);
 
-typedef struct cdl_photometry_metadata {
-    cdl_photometry_format format;
-    int ies_version;              /* 1986, 1991, 1995, 2002 or 2019; 0 when not IES */
-    char version_tag[64];         /* IES line 1 as found (trimmed); "" for 1986 */
-    size_t file_horizontal_count; /* as written: IES horizontal angles (with a closing 360) or EULUMDAT Mc */
-    size_t file_vertical_count;   /* as written: IES vertical angles or EULUMDAT Ng */
-    int absolute;                 /* 1: absolute photometry, no lamp reference */
-    double rated_lamp_flux_lm;    /* lamps x lumens (IES) or lamp set 1 (EULUMDAT); 0 if absolute */
-    double candela_multiplier;    /* IES multiplier or EULUMDAT conversion factor, as found (applied) */
-    double ballast_factor;        /* 1 when the format has none */
-    double ballast_lamp_factor;   /* LM-63-1995 and older record B field 2; 1 otherwise */
-    double file_generation_type;  /* LM-63-2019 record B field 2 (a code, not a factor); 0 otherwise */
-    double input_watts;           /* 0 when unknown */
-    size_t lamp_set_count;
-    cdl_photometry_lamp_set lamp_sets[CDL_PHOTOMETRY_MAX_LAMP_SETS];
-    cdl_luminous_opening opening;
-    size_t keyword_count;
-    cdl_photometry_keyword *keywords;
-    /* tilt */
-    cdl_tilt_kind tilt_kind;
-    char tilt_file[256];          /* TILT=<file> as written */
-    int tilt_geometry;            /* 1, 2 or 3 (LM-63 lamp-to-luminaire geometry); 0 without tilt */
-    size_t tilt_count;
-    const double *tilt_angles_deg;
-    const double *tilt_factors;
-    /* EULUMDAT fields (0 / "" when not from EULUMDAT) */
-    int ldt_ityp;                  /* type indicator 0..3 */
-    int ldt_isym;                  /* symmetry indicator 0..4 as found */
-    char ldt_company[128];
-    char ldt_report[128];          /* measurement report number */
-    char ldt_luminaire_name[128];
-    char ldt_luminaire_number[128];
-    char ldt_file_name[128];
-    char ldt_date_user[128];
-    double ldt_luminaire_mm[3];    /* length/diameter, width (0 = round), height */
-    double ldt_luminous_mm[2];     /* luminous length/diameter, width (0 = round) */
-    double ldt_luminous_height_mm[4]; /* in the C0, C90, C180, C270 planes */
-    double ldt_dff_percent;        /* downward flux fraction as stated */
-    double ldt_lorl_percent;       /* light output ratio as stated */
-    double ldt_measurement_tilt_deg;
-    double ldt_direct_ratios[10];  /* for room indices 0.60 ... 5.00 */
-    /* Radiometric files (photometry_units.c): the table is radiant
-     * intensity, radiometric_scale W/sr per unit (1 for W/sr, 1e-3 for
-     * mW/sr), as a keyword named units_keyword says; its "flux" is then
-     * radiant flux in W / radiometric_scale, not lumens. */
-    int radiometric;
-    double radiometric_scale;
-    char units_keyword[64];
-} cdl_photometry_metadata;
+/* The lamp sets: their number, and a copy of set `index` into *out
+ * (returns 0 and leaves *out untouched past the end). */
+size_t cdl_photometry_lamp_set_count(const cdl_photometry *photometry);
+int cdl_photometry_get_lamp_set(const cdl_photometry *photometry, size_t index, cdl_photometry_lamp_set *out);
 
-/* The file data. Never NULL for a valid photometry. */
-const cdl_photometry_metadata *cdl_photometry_get_metadata(const cdl_photometry *photometry);
+/* The texts a file names in either format (cdl_photometry_get_text). */
+typedef enum cdl_photometry_text {
+    CDL_PHOTOMETRY_MANUFACTURER,            /* IES [MANUFAC], EULUMDAT line 1 */
+    CDL_PHOTOMETRY_LUMINAIRE,               /* [LUMINAIRE], line 9 */
+    CDL_PHOTOMETRY_CATALOGUE,               /* [LUMCAT], line 10 */
+    CDL_PHOTOMETRY_LAMP                     /* [LAMP] or [LAMPCAT], the first lamp set's type */
+} cdl_photometry_text;
+
+/* What the file names: the maker, the luminaire, its catalogue number, the
+ * lamp; "" when the file does not say. */
+const char *cdl_photometry_get_text(const cdl_photometry *photometry, cdl_photometry_text which);
+
+/* The file's keywords in order: their number, and each one's name (without
+ * brackets: "MANUFAC", "_ABSOLUTELUMENS"; "" for free text) and value
+ * ([MORE] continuations joined with '\n'); NULL past the end. An IES
+ * file's keywords as written; an EULUMDAT file has few (its fields have
+ * fixed lines). */
+size_t cdl_photometry_keyword_count(const cdl_photometry *photometry);
+const char *cdl_photometry_keyword_name(const cdl_photometry *photometry, size_t index);
+const char *cdl_photometry_keyword_text(const cdl_photometry *photometry, size_t index);
 
 /* The value of the first keyword named `key` (case-insensitive), or NULL. */
 const char *cdl_photometry_keyword_value(const cdl_photometry *photometry, const char *key);
 
 /* Warnings found while reading (inconsistent header values, non-standard
- * but readable constructs). Each is one line naming the file. */
+ * but readable constructs). Each is one line naming the file (and the line
+ * when it points at one), a stable code that names the check
+ * ("lor-above-1", "ldt-lorl-mismatch", ...: docs/photometry-warnings.md
+ * lists every code and what fires it), and the line of the file it points
+ * at (0 when it is about the file as a whole). NULL / 0 past the end. */
 size_t cdl_photometry_warning_count(const cdl_photometry *photometry);
 const char *cdl_photometry_warning(const cdl_photometry *photometry, size_t index);
+const char *cdl_photometry_warning_code(const cdl_photometry *photometry, size_t index);
+unsigned cdl_photometry_warning_line(const cdl_photometry *photometry, size_t index);
 
 /* ---- summary ------------------------------------------------------------- */
 
@@ -380,7 +389,16 @@ typedef enum cdl_photometry_plane { CDL_PLANE_C0_C180 = 0, CDL_PLANE_C90_C270 = 
  * -1 when undefined: no light in the plane, or it never falls that low. */
 double cdl_photometry_spread_angle(const cdl_photometry *photometry, cdl_photometry_plane plane, double fraction);
 
+/* The figures below are the table's, as written. The luminaire in a scene
+ * gives them times output_factor (the ballast factor, cdl_photometry_output_factor):
+ * luminaire_flux and luminaire_max_intensity are those products, what an
+ * IES file and its EULUMDAT conversion (which folds the factor into the
+ * lamp flux) both read as. For a radiometric file (radiometric = 1) the
+ * luminous fields are NaN and the radiant ones hold the table's figures in
+ * W and W/sr. */
 typedef struct cdl_photometry_summary {
+    size_t size;                             /* sizeof(cdl_photometry_summary): set by the caller
+                                                (CDL_PHOTOMETRY_SUMMARY_INIT); only the fields it covers are filled */
     cdl_luminous_flux flux;                  /* exact integral of the table */
     cdl_luminous_flux downward_flux;         /* frame gamma in [0, 90] (below the horizontal) */
     cdl_luminous_flux upward_flux;           /* frame gamma in [90, 180] */
@@ -398,26 +416,78 @@ typedef struct cdl_photometry_summary {
     int efficacy_known;
     cdl_luminous_efficacy efficacy;          /* flux x output factor / input watts */
     /* Where the beam and field angles are measured: spread_about_peak 0,
-     * in the C0-C180 and C90-C270 planes through nadir; 1 (a maximum off
-     * nadir: batwing, asymmetric, wall-pack and flood distributions), in
+     * in the C0-C180 and C90-C270 planes through nadir (also for a
+     * rotationally symmetric batwing, which reads the same in both); 1 (a
+     * maximum off nadir of a distribution that is not rotationally
+     * symmetric: batwing, asymmetric, wall-pack and flood ones), in
      * the vertical plane through the peak ([0]) and the plane across it
      * through the peak ([1]). Either way about the peak of that plane and
      * undefined (-1) when the half (tenth) level does not close within
      * 180 degrees. */
     int spread_about_peak;
     double spread_axis_c_deg, spread_axis_gamma_deg; /* the peak, when about it */
-    /* Radiometric files (metadata.radiometric): the table's integral and
-     * maximum as what they are; flux and max_intensity then hold the same
-     * numbers in the table's unit and are not luminous. */
+    /* Radiometric files (metadata.radiometric): the table's integral,
+     * zones and maximum as what they are, in W and W/sr; the luminous
+     * fields above are then NaN. */
     int radiometric;
     cdl_radiant_flux radiant_flux;
     cdl_radiant_intensity max_radiant_intensity;
+    cdl_radiant_flux radiant_zone_flux[18];  /* zone k: gamma in [10k, 10k + 10] */
+    /* The luminaire as it lights a scene: the figures above times the output factor. */
+    double output_factor;
+    cdl_luminous_flux luminaire_flux;
+    cdl_luminous_intensity luminaire_max_intensity;
+    double upward_fraction;                  /* upward / total, 0 without light */
 } cdl_photometry_summary;
 
-/* Fill *summary (caller's) with the figures above, all from the table
- * (flux: the exact integral; efficacy from the stated input watts).
- * Never fails. */
+#define CDL_PHOTOMETRY_SUMMARY_INIT {.size = sizeof(cdl_photometry_summary)}
+
+/* Fill *summary (caller's, its size set) with the figures above, all from
+ * the table (flux: the exact integral; efficacy from the stated input
+ * watts). Never fails. */
 void cdl_photometry_summarize(const cdl_photometry *photometry, cdl_photometry_summary *summary);
+
+/* ---- figures for lighting design ------------------------------------------ */
+
+#define CDL_DIRECT_RATIO_COUNT 10
+
+/* EULUMDAT's direct ratios (lines 27-36) are given for these ten room
+ * indices k = a b / (h (a + b)): 0.60, 0.80, 1.00, 1.25, 1.50, 2.00, 2.50,
+ * 3.00, 4.00 and 5.00 (index 0..9; 0 outside). */
+double cdl_direct_ratio_room_index(int k);
+
+/* The direct ratios (CIE 52, LiTG): for each room index, the share of the
+ * luminaire's total flux that reaches the work plane directly, in a square
+ * room whose luminaires are spread evenly over the ceiling at a spacing
+ * equal to their height above the work plane, each in the middle of its
+ * cell (direct_ratios.c states the model and its formula). Fractions 0..1,
+ * growing with k; all 0 for a table without flux. Unitless, so also for
+ * radiometric tables. Errors: CDL_ERR_INTERNAL (memory). */
+cdl_status cdl_photometry_direct_ratios(const cdl_photometry *photometry, double ratio[CDL_DIRECT_RATIO_COUNT],
+                                        cdl_error *err);
+
+/* The CIE flux code (CIE 52): n[0..2] the percent of the downward flux
+ * within 41.4, 60 and 75.5 degrees of nadir, n[3] the downward flux and
+ * n[4] the whole flux in percent of the lamp flux (the luminaire's own for
+ * absolute photometry). Unrounded; printed as whole numbers. */
+void cdl_photometry_cie_flux_code(const cdl_photometry *photometry, double n[5]);
+
+/* IES TM-15-11 zones and BUG rating (bug_rating.c: zone edges, the front
+ * direction and the limits' source). zone_lm in the order FL, FM, FH, FVH,
+ * BL, BM, BH, BVH, UL, UH (cdl_bug_zone_name), lumens of the luminaire as
+ * it operates (times the output factor); b, u, g from 0 to 5. */
+#define CDL_BUG_ZONES 10
+typedef struct cdl_bug_rating {
+    int b, u, g;
+    double zone_lm[CDL_BUG_ZONES];
+} cdl_bug_rating;
+
+/* A zone's short name ("FL", ..., "UH"); "" outside 0..9. */
+const char *cdl_bug_zone_name(int zone);
+
+/* Errors: CDL_ERR_INPUT for a radiometric file (the rating counts lumens),
+ * CDL_ERR_INTERNAL (memory). */
+cdl_status cdl_photometry_bug_rating(const cdl_photometry *photometry, cdl_bug_rating *rating, cdl_error *err);
 
 /* ---- transforming -------------------------------------------------------- */
 
@@ -447,11 +517,14 @@ typedef struct cdl_photometry_notes {
 /* Free the notes' lines and leave them empty (NULL and empty notes are fine). */
 void cdl_photometry_notes_free(cdl_photometry_notes *notes);
 
+/* How a file is written. Start from CDL_PHOTOMETRY_WRITE_OPTIONS_INIT (it
+ * sets `size`, as for the read options). */
 typedef struct cdl_photometry_write_options {
+    size_t size;            /* sizeof(cdl_photometry_write_options) */
     int ies_version;        /* IES output: 2019 (also when 0) or 2002 */
     const char *file_name;  /* EULUMDAT line 11; NULL: the output file's name */
 } cdl_photometry_write_options;
-#define CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT {2019, NULL}
+#define CDL_PHOTOMETRY_WRITE_OPTIONS_INIT {.size = sizeof(cdl_photometry_write_options), .ies_version = 2019, .file_name = NULL}
 
 /* The file text in a malloc'd buffer (*text, NUL-terminated, *length
  * bytes). IES: LM-63-2019 or -2002, lines end in CR LF as the standard
@@ -468,14 +541,18 @@ cdl_status cdl_photometry_format_ldt(const cdl_photometry *photometry, const cdl
 /* ---- plotting (photometry_plot.c) ---------------------------------------- */
 
 /* The polar intensity diagram as SVG at `path` (atomically), drawn by
- * cairo: the C0-C180 (solid) and C90-C270 (dashed) planes in cd/klm, nadir
- * down, `title` on top and in the SVG's <title>. */
+ * cairo: the C0-C180 (solid) and C90-C270 (dashed) planes in cd/klm, and
+ * the plane through the peak (dotted) when it is neither; type A/B tables
+ * in their V and H planes; nadir down, `title` on top (wrapped or cut to
+ * fit) and in the SVG's <title>; the peak and the beam angles below. */
 cdl_status cdl_photometry_write_polar_svg(const cdl_photometry *photometry, const char *title, const char *path,
                                           cdl_error *err);
-/* The diagram's scale: its outer ring's value (a 1-2-5 value at or above
- * the largest cd/klm), and in *per_klm the factor from cd to cd/klm
- * (1000 / the rated lamp flux, or the table's flux for absolute photometry). */
-double cdl_photometry_plot_scale(const cdl_photometry *photometry, double *per_klm);
+/* The diagram's scale: its outer ring's value, the smallest n x step at
+ * or above the largest cd/klm with a step of 1, 2, 2.5 or 5 x 10^k and 3
+ * to 6 rings (their count in *rings, which may be NULL), and in *per_klm
+ * the factor from cd to cd/klm (1000 / the rated lamp flux, or the table's
+ * flux for absolute photometry). */
+double cdl_photometry_plot_scale(const cdl_photometry *photometry, double *per_klm, int *rings);
 
 /* Write a file atomically (temporary name, then rename). */
 cdl_status cdl_photometry_write_file(const cdl_photometry *photometry, const char *path, cdl_photometry_format format,

@@ -8,12 +8,20 @@
 #include <stddef.h>
 
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 
 /* Symmetry value meaning "infer it from the horizontal range". */
 #define CDL_PHOTOMETRY_SYMMETRY_INFER ((cdl_photometry_symmetry)-1)
 
 /* Number of 10-degree zones from nadir to zenith. */
 #define CDL_PHOTOMETRY_ZONES 18
+
+/* One warning: code (static), line, message (owned). */
+typedef struct cdl_photometry_warning_item {
+    const char *code;
+    unsigned line;
+    char *message;
+} cdl_photometry_warning_item;
 
 struct cdl_photometry {
     cdl_photometric_type type;
@@ -30,11 +38,13 @@ struct cdl_photometry {
     double flux_lm;                  /* cached exact total */
     cdl_photometry_metadata meta;
     double *tilt_angles, *tilt_factors; /* owned; meta.tilt_* point here */
-    char **warnings;
+    cdl_photometry_warning_item *warnings;
     size_t warning_count, warning_capacity;
     /* Lines of the file the header-versus-table warnings point at (0: not read from a file). */
     unsigned lamp_flux_line;      /* IES record A field 2 (lumens per lamp); EULUMDAT line 29 (set 1 flux) */
     unsigned lorl_line, dff_line; /* EULUMDAT lines 23 and 22 */
+    unsigned ballast_line;        /* IES record B field 1 (field 2 follows on the same line in real files) */
+    unsigned generation_line;     /* IES record B field 2 */
 };
 
 /* A zeroed object with neutral metadata (factors 1). NULL when out of memory. */
@@ -51,10 +61,13 @@ cdl_status cdl_photometry_set_table(cdl_photometry *p, cdl_photometric_type type
 cdl_status cdl_photometry_set_tilt(cdl_photometry *p, int geometry, const double *angles, const double *factors,
                                    size_t count, cdl_error *err);
 
-/* Append a warning (printf-style). Returns CDL_OK or an out-of-memory status. */
-cdl_status cdl_photometry_add_warning(cdl_photometry *p, const char *fmt, ...)
+/* Append a warning: its stable code (a string literal from the list in
+ * docs/photometry-warnings.md), the line of the file it points at (0: the
+ * file as a whole) and its message (printf-style, naming the file).
+ * Returns CDL_OK or an out-of-memory status. */
+cdl_status cdl_photometry_add_warning(cdl_photometry *p, const char *code, unsigned line, const char *fmt, ...)
 #if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
+    __attribute__((format(printf, 4, 5)))
 #endif
     ;
 
@@ -106,8 +119,24 @@ void cdl_photometry_detect_units(cdl_photometry *p);
 /* Case-insensitive ASCII comparison of NUL-terminated strings. */
 int cdl_photometry_strcaseeq(const char *a, const char *b);
 
-/* Checks across header and table (LOR, stated flux, DFF) that become warnings. */
+/* Checks across header and table (LOR, stated flux, DFF) that become
+ * warnings, then the header's own fields (cdl_photometry_check_fields). */
 cdl_status cdl_photometry_check_consistency(cdl_photometry *p, const char *name);
+
+/* Checks of header fields against the standards and each other
+ * (photometry_check_fields.c): LM-63-2019's required keywords and
+ * file-generation codes, the ballast factor's range, EULUMDAT's text
+ * lengths, dimensions, measurement tilt, direct ratios and indicators. */
+cdl_status cdl_photometry_check_fields(cdl_photometry *p, const char *name);
+
+/* "FILE:LINE" (or "FILE" when line is 0) into buf; returns buf. */
+const char *cdl_photometry_where(char *buf, size_t size, const char *name, unsigned line);
+
+/* The unit of the table's values and of its integral, as printed: "cd" and
+ * "lm", or for a radiometric file "W/sr" and "W" with the file's prefix
+ * ("mW/sr" and "mW"). Static strings. */
+const char *cdl_photometry_intensity_unit(const cdl_photometry *p);
+const char *cdl_photometry_flux_unit(const cdl_photometry *p);
 
 /* Relative flux differences above this are reported (3 %: real files
  * reproduce their stated LORL within 0.35 points, the worst real one by 2.1 %). */

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/photometry/photometry_internal.h"
 
 /* Angles closer than this (degrees) are the same plane. */

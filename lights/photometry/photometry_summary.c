@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/sized_struct.h"
 #include "lights/photometry/photometry_internal.h"
 #include "radiometry/constants.h"
 
@@ -90,13 +91,28 @@ double cdl_photometry_spread_angle(const cdl_photometry *p, cdl_photometry_plane
 
 /* A distribution is measured about its peak when its maximum lies more
  * than PEAK_OFF_NADIR_DEG from nadir and nadir has less than
- * PEAK_NADIR_SHARE of it: a batwing, an asymmetric or wall-pack
+ * PEAK_NADIR_SHARE of it, and it is not rotationally symmetric (a
+ * rotationally symmetric batwing keeps the planes through nadir, where its
+ * beam reads the same in both): an asymmetric batwing, an asymmetric or wall-pack
  * distribution, a floodlight (IES LM-35 and CIE 43 measure a flood's
  * spreads in the planes through its beam axis, the direction of maximum
  * intensity). A downlight whose maximum sits a step off nadir by noise
  * keeps the planes through nadir. */
 #define PEAK_OFF_NADIR_DEG 10.0
 #define PEAK_NADIR_SHARE 0.9
+
+/* A table whose every plane is the same (a single plane, or an EULUMDAT
+ * file of Isym 0 with equal planes): its beam is a cone about nadir, and
+ * the planes through nadir show it the same in every direction. */
+static int is_rotational(const cdl_photometry *p)
+{
+    if (p->type != CDL_PHOTOMETRIC_TYPE_C) return 0;
+    double tol = 1e-9 * p->max_cd;
+    for (size_t i = 1; i < p->nh; ++i)
+        for (size_t j = 0; j < p->nv; ++j)
+            if (fabs(p->cd[i * p->nv + j] - p->cd[j]) > tol) return 0;
+    return 1;
+}
 
 static void spreads(const cdl_photometry *p, cdl_photometry_summary *s)
 {
@@ -108,7 +124,7 @@ static void spreads(const cdl_photometry *p, cdl_photometry_summary *s)
     cdl_vec3 up = cdl_vec3_make(0.0, 0.0, 1.0);
     cdl_vec3 vertical = cdl_vec3_sub(up, cdl_vec3_scale(peak, cdl_vec3_dot(up, peak)));
     if (s->max_gamma_deg > PEAK_OFF_NADIR_DEG && nadir < PEAK_NADIR_SHARE * s->max_intensity.cd &&
-        cdl_vec3_length(vertical) > 1e-9) {
+        cdl_vec3_length(vertical) > 1e-9 && !is_rotational(p)) {
         s->spread_about_peak = 1;
         s->spread_axis_c_deg = s->max_c_deg;
         s->spread_axis_gamma_deg = s->max_gamma_deg;
@@ -126,25 +142,52 @@ static void spreads(const cdl_photometry *p, cdl_photometry_summary *s)
     }
 }
 
-void cdl_photometry_summarize(const cdl_photometry *p, cdl_photometry_summary *s)
+/* A radiometric table's figures as what they are: W and W/sr, and NaN for
+ * every luminous field (photometry_units.c). */
+static void radiometric_figures(const cdl_photometry *p, cdl_photometry_summary *s)
+{
+    double k = p->meta.radiometric_scale;
+    s->radiometric = 1;
+    s->radiant_flux = cdl_watts(p->flux_lm * k);
+    s->max_radiant_intensity = cdl_watts_per_sr(p->max_cd * k);
+    for (int z = 0; z < CDL_PHOTOMETRY_ZONES; ++z) {
+        s->radiant_zone_flux[z] = cdl_watts(s->zone_flux[z].lm * k);
+        s->zone_flux[z] = cdl_lumens(NAN);
+    }
+    s->flux = s->downward_flux = s->upward_flux = s->luminaire_flux = cdl_lumens(NAN);
+    if (s->lamp_flux_known) s->lamp_flux = cdl_lumens(NAN);
+    s->max_intensity = s->luminaire_max_intensity = cdl_candelas(NAN);
+}
+
+void cdl_photometry_summarize(const cdl_photometry *p, cdl_photometry_summary *summary)
+{
+    cdl_photometry_summary all;
+    cdl_photometry_summary_compute(p, &all);
+    cdl_sized_struct_fill(summary, &all, sizeof all);
+}
+
+void cdl_photometry_summary_compute(const cdl_photometry *p, cdl_photometry_summary *s)
 {
     memset(s, 0, sizeof *s);
-    s->flux = cdl_photometry_flux(p);
+    s->size = sizeof *s;
+    const cdl_photometry_metadata *m = &p->meta;
+    double flux = p->flux_lm; /* the table's integral in its own unit (lm, or W/sr x sr) */
+    s->flux = cdl_lumens(flux);
     s->downward_flux = cdl_photometry_zone_flux(p, 0.0, 90.0);
-    s->upward_flux = cdl_lumens(fmax(0.0, s->flux.lm - s->downward_flux.lm));
+    s->upward_flux = cdl_lumens(fmax(0.0, flux - s->downward_flux.lm));
     double zones[CDL_PHOTOMETRY_ZONES];
     cdl_photometry_zones(p, zones);
     for (int k = 0; k < CDL_PHOTOMETRY_ZONES; ++k) s->zone_flux[k] = cdl_lumens(zones[k]);
-    s->downward_fraction = s->flux.lm > 0.0 ? s->downward_flux.lm / s->flux.lm : 0.0;
-    const cdl_photometry_metadata *m = &p->meta;
+    s->downward_fraction = flux > 0.0 ? s->downward_flux.lm / flux : 0.0;
+    s->upward_fraction = flux > 0.0 ? s->upward_flux.lm / flux : 0.0;
     if (!m->absolute && m->rated_lamp_flux_lm > 0.0) {
         s->lamp_flux_known = 1;
         s->lamp_flux = cdl_lumens(m->rated_lamp_flux_lm);
         s->lor_known = 1;
         /* light output ratio = luminaire flux / lamp flux (CIE 121) */
-        s->lor = s->flux.lm / m->rated_lamp_flux_lm;
+        s->lor = flux / m->rated_lamp_flux_lm;
     }
-    s->max_intensity = cdl_photometry_max_intensity(p);
+    s->max_intensity = cdl_candelas(p->max_cd);
     s->max_h_deg = p->h[p->max_i];
     s->max_v_deg = p->v[p->max_j];
     if (p->type == CDL_PHOTOMETRIC_TYPE_C) {
@@ -158,16 +201,20 @@ void cdl_photometry_summarize(const cdl_photometry *p, cdl_photometry_summary *s
         s->max_gamma_deg = g;
     }
     spreads(p, s);
+    /* The luminaire in a scene: the table times the ballast (output) factor,
+     * as the goniometric emitter applies it and as EULUMDAT, which has no
+     * field for it, carries it folded into the lamp flux (ldt_write.c). */
+    s->output_factor = cdl_photometry_output_factor(p);
+    s->luminaire_flux = cdl_lumens(flux * s->output_factor);
+    s->luminaire_max_intensity = cdl_candelas(p->max_cd * s->output_factor);
     if (m->radiometric) {
-        /* The table is radiant intensity: its integral is radiant flux (photometry_units.c). */
-        s->radiometric = 1;
-        s->radiant_flux = cdl_watts(s->flux.lm * m->radiometric_scale);
-        s->max_radiant_intensity = cdl_watts_per_sr(s->max_intensity.cd * m->radiometric_scale);
+        radiometric_figures(p, s);
+        return;
     }
-    if (m->input_watts > 0.0 && !m->radiometric) {
+    if (m->input_watts > 0.0) {
         s->efficacy_known = 1;
         /* luminaire efficacy = luminaire flux / input power; the table is for
          * the reference ballast, the input power for the real one */
-        s->efficacy = cdl_lumens_per_watt(s->flux.lm * cdl_photometry_output_factor(p) / m->input_watts);
+        s->efficacy = cdl_lumens_per_watt(flux * s->output_factor / m->input_watts);
     }
 }

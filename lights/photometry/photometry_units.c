@@ -73,3 +73,17 @@ void cdl_photometry_detect_units(cdl_photometry *p)
             return;
         }
 }
+
+const char *cdl_photometry_intensity_unit(const cdl_photometry *p)
+{
+    if (!p->meta.radiometric) return "cd";
+    double k = p->meta.radiometric_scale;
+    return k == 1e-3 ? "mW/sr" : k == 1e-6 ? "uW/sr" : "W/sr";
+}
+
+const char *cdl_photometry_flux_unit(const cdl_photometry *p)
+{
+    if (!p->meta.radiometric) return "lm";
+    double k = p->meta.radiometric_scale;
+    return k == 1e-3 ? "mW" : k == 1e-6 ? "uW" : "W";
+}

@@ -7,12 +7,13 @@
 #include <string.h>
 
 #include "base/content_hash.h"
+#include "base/error_report.h"
 #include "base/rng.h"
 #include "solver/grid/grid.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_hash.h"
 #include "solver/scene/scene_lights.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 cdl_status cdl_bench_solve_rung(const cdl_scene *scene, cdl_method method, double target, int threads,
                                 cdl_solution *out, cdl_error *err)
@@ -20,9 +21,9 @@ cdl_status cdl_bench_solve_rung(const cdl_scene *scene, cdl_method method, doubl
     cdl_scene copy = *scene; /* shallow: the solve only reads it */
     copy.settings.method = method;
     copy.settings.target_error = target;
-    cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+    cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
     o.threads = threads;
-    return cdl_solve_scene(&copy, &o, out, err);
+    return cdl_solve_scene_into(&copy, &o, NULL, out, err);
 }
 
 double cdl_bench_stated_rms(const cdl_solution *sol)
@@ -294,7 +295,7 @@ cdl_status cdl_bench_reference_read(const char *dir, const cdl_scene *scene, cdl
         snprintf(path, sizeof path, "%s/%s.csv", dir, scene->grids[g].name);
         if (st == CDL_OK) st = read_grid_csv(path, r, err);
     }
-    if (st != CDL_OK) cdl_solution_release(out);
+    if (st != CDL_OK) cdl_solution_clear(out);
     return st;
 }
 

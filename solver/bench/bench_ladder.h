@@ -30,8 +30,8 @@
 #include <stdint.h>
 
 #include "base/error.h"
-#include "solver/scene/scene.h"
-#include "solver/solution.h"
+#include "solver/scene/scene_internal.h"
+#include "solver/solution_internal.h"
 
 typedef struct cdl_bench_rung {
     cdl_method method;

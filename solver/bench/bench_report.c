@@ -7,10 +7,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "graphics/raster_canvas.h"
 #include "base/atomic_file.h"
 #include "solver/output/png_write.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 cdl_status cdl_bench_report_write_csv(const char *path, const cdl_bench_row *rows, size_t count, cdl_error *err)
 {

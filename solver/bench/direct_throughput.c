@@ -9,12 +9,13 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 #include "solver/direct/direct.h"
 #include "solver/geometry/ray_scene.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_geometry.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 static double now_seconds(void)
 {
@@ -118,15 +119,16 @@ cdl_status cdl_bench_direct_run(const cdl_bench_direct_config *cfg, cdl_bench_di
     if (st != CDL_OK) goto done;
 
     /* 1. Record the rays (untimed, one thread). */
-    cdl_solve_options rec = CDL_SOLVE_OPTIONS_DEFAULT;
-    rec.ray_log = &log;
-    st = cdl_solve_scene(scene, &rec, &sol, err);
+    cdl_solve_options rec = CDL_SOLVE_OPTIONS_INIT;
+    cdl_solve_debug debug = CDL_SOLVE_DEBUG_NONE;
+    debug.ray_log = &log;
+    st = cdl_solve_scene_into(scene, &rec, &debug, &sol, err);
     if (st != CDL_OK) goto done;
     if (log.overflow) {
         st = cdl_error_out_of_memory(err);
         goto done;
     }
-    cdl_solution_release(&sol);
+    cdl_solution_clear(&sol);
 
     /* 2. and 3., interleaved seven times, keeping the fastest of each so
      *    that other load on the machine disturbs both alike: the solver,
@@ -135,16 +137,16 @@ cdl_status cdl_bench_direct_run(const cdl_bench_direct_config *cfg, cdl_bench_di
     st = cdl_scene_geometry_build(scene, &geometry, err);
     if (st != CDL_OK) goto done;
     const cdl_ray_scene *rays = cdl_scene_geometry_rays(geometry);
-    cdl_solve_options timed = CDL_SOLVE_OPTIONS_DEFAULT;
+    cdl_solve_options timed = CDL_SOLVE_OPTIONS_INIT;
     timed.threads = cfg->threads;
     r->solver_seconds = r->embree_seconds = INFINITY;
     for (int round = 0; round < 7; ++round) {
-        st = cdl_solve_scene(scene, &timed, &sol, err);
+        st = cdl_solve_scene_into(scene, &timed, NULL, &sol, err);
         if (st != CDL_OK) goto done;
         r->points = sol.grids[0].grid.count;
         r->solver_seconds = fmin(r->solver_seconds, sol.compute_seconds);
         r->solver_rays = sol.rays;
-        cdl_solution_release(&sol);
+        cdl_solution_clear(&sol);
 
         size_t occluded = 0;
         double t0 = now_seconds();
@@ -158,7 +160,7 @@ cdl_status cdl_bench_direct_run(const cdl_bench_direct_config *cfg, cdl_bench_di
     }
 
 done:
-    cdl_solution_release(&sol);
+    cdl_solution_clear(&sol);
     cdl_scene_geometry_release(geometry);
     cdl_scene_release(scene);
     free(log.rays);

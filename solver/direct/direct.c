@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "base/rng.h"
@@ -373,9 +374,10 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
 }
 
 double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
-                                    cdl_direct_sample_stats *stats)
+                                    double *stderr_out, cdl_direct_sample_stats *stats)
 {
-    if (!ctx->geometry) return 1.0;
+    if (stderr_out) *stderr_out = 0.0;
+    if (!ctx->geometry) return 1.0; /* nothing can hide the sky: certain */
     int64_t k = (int64_t)ceil(sqrt((double)(ctx->ao_samples > 0 ? ctx->ao_samples : 1)));
     cdl_rng_key key = {ctx->seed, cdl_rng_stream_id(stream, 0x616f /* "ao" */, 0)};
     cdl_frame frame = cdl_frame_from_normal(n);
@@ -387,5 +389,16 @@ double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stre
             cdl_vec3 w = cdl_frame_to_world(&frame, cdl_sample_cosine_hemisphere_stratified((int)j, (int)i, (int)k, (int)k, u[0], u[1]));
             if (!cdl_direct_shadowed(ctx, p, n, w, INFINITY, stats)) open++;
         }
-    return (double)open / (double)(k * k);
+    double N = (double)(k * k);
+    /* The stated error: the spread of the open fraction given `open` of N
+     * rays left, under a uniform prior, Beta(open + 1, N - open + 1), whose
+     * variance a b / ((a + b)^2 (a + b + 1)) is never 0 (all rays open, or
+     * none, could still have missed a sliver) and is the binomial
+     * p (1 - p) / N in between; stratifying the rays only lowers the true
+     * error below it. */
+    if (stderr_out) {
+        double a = (double)open + 1.0, b = N - (double)open + 1.0;
+        *stderr_out = sqrt(a * b / ((a + b) * (a + b) * (a + b + 1.0)));
+    }
+    return (double)open / N;
 }

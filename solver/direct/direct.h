@@ -132,6 +132,23 @@ typedef struct cdl_direct_sample_stats {
  * both have them) to a. */
 void cdl_direct_stats_add(cdl_direct_sample_stats *a, const cdl_direct_sample_stats *b, size_t light_count);
 
+/* For integrators beyond direct light (glare at an eye), the two visibility
+ * questions the direct solver asks, with its tolerances: is the region
+ * between p and the sphere (center, radius) - the cone from p around it,
+ * cut by p's plane of normal n - clear of every surface but those of
+ * geometry piece `owner` (UINT32_MAX: none excluded)? 1 when it is, or when
+ * the scene has no geometry. And is the segment from p along unit `dir`
+ * over `distance` blocked (the shadow ray direct light casts)? Both
+ * thread-safe. */
+int cdl_direct_sphere_in_view(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 center, double radius,
+                              uint32_t owner);
+/* The same for the pyramid from p to a convex planar polygon of up to
+ * CDL_SCENE_LIGHT_OUTLINE_MAX corners (the region a flat emitter's light
+ * crosses). */
+int cdl_direct_polygon_in_view(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, const cdl_vec3 *polygon,
+                               int count, uint32_t owner);
+int cdl_direct_ray_blocked(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance);
+
 /* What a light's tally says, for the plan: "exact: visible polygon past up
  * to 3 occluders at 192 points", "sampled at 40 points: more than 64
  * occluders", ...; empty when the light took no per-point route. */
@@ -220,8 +237,11 @@ void cdl_direct_vertical_point(const cdl_direct_context *ctx, const cdl_light_st
                                const uint32_t *active, size_t active_count, cdl_vec3 p, cdl_vec3 n, cdl_vec3 facing,
                                int on_surface, double *Ez, double *Esz, cdl_direct_sample_stats *stats);
 
-/* Cosine-weighted unoccluded fraction of the hemisphere about n at p. */
+/* Cosine-weighted unoccluded fraction of the hemisphere about n at p, and
+ * in *stderr_out (may be NULL) its standard error: the spread of a
+ * fraction seen in `open` of N rays under a uniform prior (0 only where
+ * the scene has no geometry). */
 double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n,
-                                    cdl_direct_sample_stats *stats);
+                                    double *stderr_out, cdl_direct_sample_stats *stats);
 
 #endif

@@ -74,11 +74,9 @@
  * PLAN_REACH_SMALL times beyond it. Why: the stated sigma scatters about
  * its plan by the pilot's error and the stage's own (each a count of
  * differing pairs, a few dozen at these sizes), and a 16-fold reach from a
- * small pilot adds the error in alpha on top. Measured on the four scenes
- * of test_direct_calibration at "draft": sigma within a factor 1.5 of the
- * target at 374 of 404 points with 16 (0.53 .. 2.53), 389 with 4 (0.53 ..
- * 1.98), for 4.5 % more samples at "draft", 7.6 % at "normal" and 0.3 %
- * at "high" (whose plans mostly come from pilots of 18432). */
+ * small pilot adds the error in alpha on top. 4 keeps the stated sigma of
+ * far more points within 1.5 of the target than 16, for a few per cent
+ * more samples (docs/tuning.md). */
 #define PLAN_REACH_SMALL 4.0
 #define PLAN_SMALL_PILOT 18432.0
 
@@ -86,13 +84,9 @@
  * at least PLAN_PAIRS differing pairs in effect (term.pairs), unless the
  * next pilot round would be larger than the stage. The variance of a step
  * is a count of differing pairs (estimate.h), Poisson, so known to
- * 1 / sqrt(D) relative: 35 % at 8, its sigma to 18 %. Measured on the
- * partition scene of test_direct_calibration (a luminous wall partly
- * hidden, few strata along the edge): without the rule sigma / target
- * spread over 0.62-1.45 at "normal" and 0.62-1.33 at "high"; with 8 pairs
- * over 0.65-1.28 and 0.76-1.22, for 22 % more rays at "high" (1 % more
- * over the four scenes at "normal"); 16 pairs gained little more (0.78 at
- * "high") for 36 %. */
+ * 1 / sqrt(D) relative: 35 % at 8, its sigma to 18 %. With 8 the spread of
+ * sigma / target narrows where few strata cross an edge; 16 gains little
+ * more for far more rays (docs/tuning.md). */
 #define PLAN_PAIRS 8.0
 
 /* How fast a light's stage variance falls with its samples, Var ~ N^-alpha,
@@ -104,11 +98,8 @@
  * sampler.h) turns u1 into a run of pixels along rows, u1's fraction
  * placing the direction within each pixel: a stratum is a comb of slivers
  * over many pixels that an edge crosses nearly all of, until strata are
- * narrower than a pixel in u1; measured from 72 to 73728 samples at 8
- * points of the image wells of test_environment_direct (16 seeds each) the
- * variance fell as N^-1.06 to N^-1.43, N^-1.22 on average. Planned with
- * 1.5 the image wells' sigma reached 1.8 times the target, with 1 it
- * stayed at 0.2-0.5 of it; with 1.2 it lies within 0.72-1.34.
+ * narrower than a pixel in u1: measured, the variance falls as about
+ * N^-1.2 (docs/tuning.md, with what 1 and 1.5 gave).
  *
  * Why by sampler and not measured point by point: the exponent can be
  * measured from one round (the variance of its 2 x 2 blocks of strata
@@ -117,10 +108,8 @@
  * it crosses carry the measurement, and it scattered by 0.1-0.3 between
  * seeds however large the round; on image skies it was tight but followed
  * the scale of the pilot's strata (1.0-1.7 by round size), not the slope
- * out to the stage. An earlier revision of this planner that used the
- * measured exponent (weighed against these by their spreads) left an
- * image well's sigma at up to 1.86 times the target at "high"; these
- * alone keep the image wells within 0.72-1.34. */
+ * out to the stage; a planner that used the measured exponent did worse
+ * (docs/tuning.md). */
 #define ALPHA_STEP 1.5
 #define ALPHA_IMAGE 1.2
 

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "radiometry/bounds.h"
 #include "base/rng.h"
 #include "solver/scene/scene_geometry.h"
@@ -20,8 +21,8 @@ typedef struct grid_job {
     const cdl_light_strategy *strategies;
     const cdl_grid *grid;
     size_t grid_index;
-    double *E, *variance, *ao;
-    const cdl_direct_vertical_out *vertical;
+    double *E, *variance;
+    const cdl_direct_outputs *outputs;
 } grid_job;
 
 typedef struct grid_worker {
@@ -61,11 +62,11 @@ static cdl_status solve_chunk(void *shared, void *local, size_t start, size_t en
                                                  at, grid->normals + start, end - start,
                                                  job->E + start, job->variance + start, &w->stats, &w->scratch, err);
     if (st != CDL_OK) return st;
-    if (job->ao)
+    const cdl_direct_outputs *v = job->outputs;
+    if (v && v->ao)
         for (size_t i = start; i < end; ++i)
-            job->ao[i] = cdl_direct_ambient_occlusion(job->ctx, streams[i - start], at[i - start], grid->normals[i],
-                                                      &w->stats);
-    const cdl_direct_vertical_out *v = job->vertical;
+            v->ao[i] = cdl_direct_ambient_occlusion(job->ctx, streams[i - start], at[i - start], grid->normals[i],
+                                                    v->ao_stderr ? &v->ao_stderr[i] : NULL, &w->stats);
     if (v && (v->Ez || v->Esz))
         for (size_t i = start; i < end; ++i) {
             cdl_vec3 facing = cdl_vec3_make(1, 0, 0);
@@ -78,8 +79,8 @@ static cdl_status solve_chunk(void *shared, void *local, size_t start, size_t en
 }
 
 cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
-                                 const cdl_grid *grid, size_t grid_index, double *E, double *variance, double *ao,
-                                 int threads, const cdl_progress_sink *progress, const cdl_direct_vertical_out *vertical,
+                                 const cdl_grid *grid, size_t grid_index, double *E, double *variance,
+                                 int threads, const cdl_progress_sink *progress, const cdl_direct_outputs *outputs,
                                  const char *stage, cdl_direct_sample_stats *stats, cdl_error *err)
 {
     if (threads < 1) threads = 1;
@@ -102,7 +103,7 @@ cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_
         workers[i].active = active + (size_t)i * (ctx->light_count + 1);
         workers[i].stats.routes = routes ? routes + (size_t)i * (ctx->light_count + 1) : NULL;
     }
-    grid_job job = {ctx, strategies, grid, grid_index, E, variance, ao, vertical};
+    grid_job job = {ctx, strategies, grid, grid_index, E, variance, outputs};
     cdl_pool_task task = {.count = grid->count,
                           .chunk = CHUNK,
                           .run = solve_chunk,

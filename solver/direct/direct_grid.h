@@ -19,21 +19,23 @@
  * per-point random number derives from). */
 uint64_t cdl_direct_point_stream(size_t grid_index, size_t index);
 
-/* Where cylindrical and semicylindrical illuminance go (each NULL when not
- * asked for); NULL for none. Semicylinders face each point's normal's
- * horizontal part (cdl_direct_facing_direction; the caller checks there is one). */
-typedef struct cdl_direct_vertical_out {
+/* Where the outputs beyond E go (each NULL when not asked for): ambient
+ * occlusion and its standard error; cylindrical and semicylindrical
+ * illuminance (their exact part). Semicylinders face each point's normal's
+ * horizontal part (cdl_direct_facing_direction; the caller checks there is
+ * one). */
+typedef struct cdl_direct_outputs {
+    double *ao, *ao_stderr;
     double *Ez, *Esz;
     const unsigned char *on_surface;  /* per point, 1 where it lies on a surface (NULL: none does) */
-} cdl_direct_vertical_out;
+} cdl_direct_outputs;
 
 /* Direct illuminance (lux) at every point of `grid`, the variance of each
- * value (0 where exact), when `ao` is not NULL the ambient occlusion, and
- * the vertical illuminances `vertical` asks for.
+ * value (0 where exact), and the outputs `outputs` asks for (NULL: none).
  * Sample counts are added to *stats. */
 cdl_status cdl_direct_solve_grid(const cdl_direct_context *ctx, const cdl_light_strategy *strategies,
-                                 const cdl_grid *grid, size_t grid_index, double *E, double *variance, double *ao,
-                                 int threads, const cdl_progress_sink *progress, const cdl_direct_vertical_out *vertical,
+                                 const cdl_grid *grid, size_t grid_index, double *E, double *variance,
+                                 int threads, const cdl_progress_sink *progress, const cdl_direct_outputs *outputs,
                                  const char *stage, cdl_direct_sample_stats *stats, cdl_error *err);
 
 /* Where p (receiving normal n) is evaluated: itself, or, where a surface

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "lights/environment/environment_peaks.h"
 #include "lights/emitters/projected_solid_angle.h"
 

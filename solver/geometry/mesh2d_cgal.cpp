@@ -1,5 +1,6 @@
 // mesh2d_cgal.cpp - the only file that includes CGAL. It exposes the C API of
 // mesh2d.h and never lets an exception cross it.
+#include "base/error_report.h"
 #include "solver/geometry/mesh2d.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>

@@ -13,6 +13,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "radiometry/bounds.h"
 #include "radiometry/frame.h"
 

@@ -24,6 +24,7 @@
 #include "solver/geometry/ray_scene.h"
 
 #include <embree3/rtcore.h>
+#include "base/error_report.h"
 #include "radiometry/bounds.h"
 #include <float.h>
 #include <math.h>

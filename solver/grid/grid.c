@@ -17,15 +17,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "solver/geometry/polygon.h"
 
 /* A polygon grid's raster has at most this many pixels along a side; the
  * pixel grows beyond p/4 when needed. */
 #define RASTER_MAX_SIDE 4096
-/* Points per p^2 of area that CGAL's refinement produces with edges <= p
- * (measured: 4.9 to 5.0 on squares from 4 m to 20 m), to refuse a spacing
- * that would take minutes before meshing. */
-#define POINTS_PER_SQUARE_SPACING 5.0
+/* Points per p^2 of area the mesh makes (grid.h: CDL_GRID_MESH_EDGE), to
+ * refuse a spacing that would take minutes before meshing. */
+#define POINTS_PER_SQUARE_SPACING 1.0
 
 /* EN 12464-1:2021, 4.3.3 (from EN 12464-1:2011, 4.4): maximum grid cell
  * size p = 0.2 x 5^log10(d), d the longer dimension of the calculation
@@ -138,8 +138,8 @@ static cdl_status build_polygon(const cdl_grid_spec *spec, cdl_grid *g, cdl_erro
      * (a vertex a hair's breadth from an edge would otherwise take minutes). */
     double vertex_cap = fmin((double)CDL_GRID_MAX_POINTS, 2.0 * estimate + 10000.0);
     cdl_mesh2d mesh;
-    cdl_status st = cdl_polygon_triangulate(&plane, &spec->outer, spec->holes, spec->hole_count, p, (size_t)vertex_cap,
-                                       &mesh, err);
+    cdl_status st = cdl_polygon_triangulate(&plane, &spec->outer, spec->holes, spec->hole_count,
+                                            CDL_GRID_MESH_EDGE * p, (size_t)vertex_cap, &mesh, err);
     if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", spec->json_path);
     if (mesh.triangle_count > CDL_GRID_MAX_POINTS) {
         size_t n = mesh.triangle_count;

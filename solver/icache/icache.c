@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/bounds.h"
 #include "radiometry/estimate.h"
 #include "solver/icache/record_octree.h"
@@ -30,21 +31,11 @@
 #define MAX_PASSES 16
 
 /* A record's gather is held to RECORD_SHARE times a point's variance
- * target (t R)^2. Measured on a closed 4 m cube (rho 0.5, 10 000 lm at its
- * centre, 50 x 50 floor points, quality normal, against path tracing to
- * 0.1 %; path tracing at normal: 29 M rays for 0.29 % RMS error):
- *   share 1/4: 4.8 s for 0.21 % RMS error;
- *   share 1:   6.7 M rays, 0.26 % RMS, 89 % of points within 2 stated sigma;
- *   share 2:   3.9 M rays, 0.33 %, 93 %;
- *   share 4:   2.5 M rays, 0.38 %, 97 % (74 % within 1 sigma);
- *   share 8:   1.8 M rays, 0.48 %, 98 %.
- * Against path tracing at equal RMS error (whose rays go as RMS^-2) the
- * larger shares cost less (share 1: 5.4 times fewer rays, 2: 5.9, 4: 6.8),
- * but where all light is interreflected (a furnace) a point served by one
- * or two records then states up to twice the target. Share 2 keeps every
- * stated error within 1.5 times the target there. Gathering again, larger,
- * the records of points above the target (tried: an independent gather
- * replacing the first, share 4) cost 2.5 times the rays for 0.32 % RMS. */
+ * target (t R)^2. Larger shares cost fewer rays at equal RMS error, but
+ * where all light is interreflected (a furnace) a point served by one or
+ * two records then states up to twice the target; share 2 keeps every
+ * stated error within 1.5 times the target there (the measurements on the
+ * closed cube: docs/tuning.md). */
 #define RECORD_SHARE 2.0
 
 /* sqrt(1 - cos 10 deg): normals further apart than 10 degrees share no record. */
@@ -233,11 +224,9 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
      * gradient: each record adds 1/2 (g(p) - g_i) . (p - p_i) to the
      * extrapolation of Ward and Heckbert. Records all round a minimum of E
      * (the middle of a room under a downlight) otherwise err the same way,
-     * agree with each other, and their spread cannot show it. Measured, the
-     * Radiance peer's room at high (81 points, against path tracing to
-     * 0.02 %): 0.132 % RMS error, all the worst points low, mean error -1.1
-     * stated sigma; with the term 0.051 %, mean -0.34 sigma, 96 % within 2.
-     * The closed cube (2500 floor points, normal): 0.33 % -> 0.28 %. */
+     * agree with each other, and their spread cannot show it (on the
+     * downlight room the term takes the RMS error from 0.13 % to 0.05 % and
+     * the bias from -1.1 stated sigma to -0.3: docs/tuning.md). */
     if (ctx->gradients) {
         gbar = cdl_vec3_scale(gbar, 1.0 / W);
         double second = 0.0;

@@ -3,7 +3,9 @@
  * Records (icache_record.h) are gathered at some grid points and
  * interpolated at all of them, with the weights of Tabellion and Lamorlette
  * ("An approximate global illumination system for computer generated
- * films", SIGGRAPH 2004) as the seed lecture writes them:
+ * films", SIGGRAPH 2004) as Krivanek and Gautron write them ("Practical
+ * Global Illumination with Irradiance Caching", Synthesis Lectures on
+ * Computer Graphics and Animation, 2009):
  *     w_i(p) = 1 - kappa max( |p - p_i| / clamp(2 R_i, Rmin, Rmax),
  *                             sqrt(1 - n . n_i) / sqrt(1 - cos 10 deg) ),
  *     E(p)   = sum_{w_i > 0} w_i (E_i + (n_i x n) . g_r,i + (p - p_i) . g_t,i) / sum w_i,

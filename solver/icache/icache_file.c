@@ -12,6 +12,7 @@
 
 #include "base/atomic_file.h"
 #include "base/content_hash.h"
+#include "base/error_report.h"
 #include "base/file_bytes.h"
 
 static const unsigned char magic[8] = {'C', 'D', 'L', 'I', 'C', 'A', 'C', 'H'};

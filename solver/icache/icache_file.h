@@ -59,7 +59,7 @@
 #include "base/error.h"
 #include "solver/grid/grid.h"
 #include "solver/icache/icache.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_hash.h"
 
 #define CDL_ICACHE_FILE_FORMAT 1

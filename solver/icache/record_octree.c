@@ -1,4 +1,5 @@
 /* record_octree.c - records in the cells their spheres overlap, larger higher up. */
+#include "base/error_report.h"
 #include "solver/icache/record_octree.h"
 
 #include <stdlib.h>

@@ -2,8 +2,8 @@
  *
  * Records are gathered at some of the grid's points and interpolated at
  * all of them (icache/icache.h), or, when the solve's cache file was made
- * for this scene, read from it and only interpolated. The grid's ambient
- * occlusion, when asked, comes from the same gathers.
+ * for this scene, read from it and only interpolated. (Ambient occlusion
+ * is each point's own: integrate_direct.c.)
  */
 #include "solver/integrate/integrator.h"
 #include "solver/pool.h"
@@ -23,7 +23,7 @@ static cdl_status run_icache(cdl_solve_state *state, cdl_grid_job *job, cdl_erro
     size_t preloaded = records->count;
     double t0 = cdl_pool_now_seconds();
     cdl_status st = cdl_icache_solve_grid(&state->icache, &gs->grid, (size_t)job->plan->key, gs->E_direct,
-                                          job->var_direct, gs->E_indirect, job->var_indirect, gs->ao, records,
+                                          job->var_direct, gs->E_indirect, job->var_indirect, NULL, records,
                                           state->threads, &state->options.progress, stage, &state->icache_stats, err);
     state->out->compute_seconds += cdl_pool_now_seconds() - t0;
     state->out->records_gathered += records->count - preloaded;

@@ -18,7 +18,9 @@
  * var_indirect), never in a result array. Integrators do not write the
  * plan's JSON: they leave counts and routes in the job, and plan_json.c
  * narrates them. A new method (glare at observers, surface maps, daylight
- * coefficients) is a new entry of the table, not code in solve.c.
+ * coefficients) is a new entry of the table, not code in solve.c. Glare
+ * rates observers, not grid points: the observers are one more job
+ * (`observers`), whose direct part is the background's.
  *
  * Not public. Thread safety: one state per solve; integrators run their
  * own worker threads (pool.h) and return when those are done.
@@ -34,9 +36,10 @@
 #include "solver/icache/icache.h"
 #include "solver/icache/icache_file.h"
 #include "solver/pathtrace/pathtrace.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_lights.h"
-#include "solver/solution.h"
+#include "solver/solution_internal.h"
+#include "solver/solve_debug.h"
 #include "solver/solve_options.h"
 #include "solver/transport/vertical_sampled.h"
 
@@ -63,6 +66,7 @@ typedef struct cdl_grid_plan {
 typedef struct cdl_solve_state {
     const cdl_scene *scene;           /* borrowed */
     cdl_solve_options options;
+    cdl_solve_debug debug;
     cdl_solution *out;                /* borrowed: the results being filled */
     double target;                    /* relative standard error asked of E per point (computed once) */
     int indirect;                     /* 1: interreflection is modelled */
@@ -95,11 +99,27 @@ typedef struct cdl_solve_state {
     cdl_direct_route_tally *routes;
 
     struct cdl_plan_json *plan;       /* owned: the plan's JSON as it is narrated (plan_json.h) */
+
+    /* Glare (solve_observers.c, integrate_glare.c): the scene's observers
+     * go through the table as one job of their own, their eyes its points
+     * and their lines of sight its normals; its direct light is the
+     * background's (every light but the luminaires), its interreflection
+     * traced by paths. */
+    cdl_grid_spec observer_spec;      /* a points grid: the eyes and lines of sight (arrays owned) */
+    cdl_grid_solution observer_points;/* E at the eyes from the background (owned) */
+    cdl_grid_plan observer_plan;
+    cdl_direct_context background;    /* direct light from everything but the luminaires */
+    cdl_scene_light *background_lights; /* copies of those lights (their emitters stay the state's) */
+    struct cdl_glare_rated *rated;    /* per scene luminaire: how it is rated (solve_observers.h) */
+    cdl_direct_sample_stats glare_stats; /* shadow rays the glare integrator cast */
+    uint64_t glare_exact, glare_sampled; /* (observer, luminaire) pairs whose solid angle was exact, sampled */
 } cdl_solve_state;
 
 /* One grid going through the integrators. */
 typedef struct cdl_grid_job {
-    size_t index;                     /* in the scene's grids */
+    size_t index;                     /* in the scene's grids (the observers' job: grid_count) */
+    int observers;                    /* 1: the observers' job (glare) */
+    const cdl_direct_context *direct; /* the direct light it takes: the state's, or the background's */
     const cdl_grid_spec *spec;
     cdl_grid_solution *gs;            /* its results (borrowed from the solution) */
     const cdl_grid_plan *plan;
@@ -124,6 +144,7 @@ extern const cdl_integrator cdl_integrator_direct;      /* integrate_direct.c */
 extern const cdl_integrator cdl_integrator_icache;      /* integrate_icache.c */
 extern const cdl_integrator cdl_integrator_pathtrace;   /* integrate_pathtrace.c */
 extern const cdl_integrator cdl_integrator_vertical;    /* integrate_vertical.c */
+extern const cdl_integrator cdl_integrator_glare;       /* integrate_glare.c */
 
 /* "grid NAME" or "grid NAME: WHAT", the stage a progress report names. */
 void cdl_grid_job_stage(const cdl_grid_job *job, const char *what, char *out, size_t size);

@@ -4,24 +4,30 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Enough for "%.17g" of any double: sign, 17 digits, point, "e-308". */
-#define NUMBER_SIZE 32
-
 /* The shortest of 15, 16 and 17 significant digits that strtod reads back
  * as exactly `v` (0.1 stays "0.1", not "0.10000000000000001"). 17 digits
  * always suffice for binary64 (IEEE 754-2008, 5.12.2: Pmin = 17), and glibc
  * converts correctly rounded both ways, so every number round-trips. */
-static void format_number(double v, char buf[NUMBER_SIZE])
+static void format_number(double v, char buf[CDL_CSV_NUMBER_SIZE])
 {
     for (int digits = 15; digits <= 17; ++digits) {
-        snprintf(buf, NUMBER_SIZE, "%.*g", digits, v);
+        snprintf(buf, CDL_CSV_NUMBER_SIZE, "%.*g", digits, v);
         if (strtod(buf, NULL) == v) return;
     }
 }
 
+void cdl_csv_format_number(double v, char buf[CDL_CSV_NUMBER_SIZE])
+{
+    /* through a buffer of its own: GCC's sanitizer build cannot see that a
+     * caller's is never NULL, and warns */
+    char own[CDL_CSV_NUMBER_SIZE];
+    format_number(v, own);
+    memcpy(buf, own, sizeof own);
+}
+
 static void write_row(FILE *fp, const double *values, size_t n)
 {
-    char buf[NUMBER_SIZE];
+    char buf[CDL_CSV_NUMBER_SIZE];
     for (size_t k = 0; k < n; ++k) {
         format_number(values[k], buf);
         if (k > 0) fputc(',', fp);
@@ -44,7 +50,8 @@ cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *
     const struct {
         const char *name;
         const double *values;
-    } extra[] = {{"area_m2", result->area_m2},       {"AO", result->ao},   {"Ez_lx", result->Ez},
+    } extra[] = {{"area_m2", result->area_m2},       {"AO", result->ao},   {"AO_stderr", result->ao_stderr},
+                 {"Ez_lx", result->Ez},
                  {"Ez_stderr_lx", result->Ez_stderr}, {"Esz_lx", result->Esz}, {"Esz_stderr_lx", result->Esz_stderr},
                  {"L_cd_m2", result->L},           {"DF_percent", result->DF}};
     enum { EXTRA = sizeof extra / sizeof extra[0] };

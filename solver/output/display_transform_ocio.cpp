@@ -1,5 +1,6 @@
 // display_transform_ocio.cpp - the only file that includes OpenColorIO. It
 // exposes the C API of display_transform.h; no exception crosses it.
+#include "base/error_report.h"
 #include "solver/output/display_transform.h"
 
 #include <OpenColorIO/OpenColorIO.h>

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "solver/scene/exr_image.h"
 
 /* The channels a result may have; the optional ones (Ez, Esz, L, DF) are

@@ -1,4 +1,5 @@
 /* false_colour.c - lux-scale positions through the false-colour view (false_colour.h). */
+#include "base/error_report.h"
 #include "solver/output/false_colour.h"
 
 #include <stdlib.h>

@@ -25,6 +25,7 @@
 #include "base/atomic_file.h"
 #include "solver/grid/grid.h"
 #include "solver/output/lux_scale.h"
+#include "solver/solution_internal.h"
 
 /* The arrays hold grid->count values each, in grid order. E, E_direct,
  * E_indirect and E_stderr are required (a direct-only solve passes zeros for
@@ -37,6 +38,7 @@ typedef struct cdl_grid_result {
     const double *E_indirect; /* lux */
     const double *E_stderr;   /* standard error of E, lux (0 where exact) */
     const double *ao;         /* NULL unless the grid asked for "ao"; [0, 1] */
+    const double *ao_stderr;  /* with ao: its standard error */
     /* Optional columns after the fixed ten, in this order when present: */
     const double *area_m2;    /* the area each point stands for (polygon grids), m^2 */
     const double *Ez;         /* cylindrical illuminance, lux ("cylindrical") */
@@ -47,6 +49,11 @@ typedef struct cdl_grid_result {
     const double *Esz_stderr; /* with Esz likewise */
     int map_log_scale;        /* NAME.png: 1 a logarithmic lux scale, 0 (default) linear (lux_scale.h) */
 } cdl_grid_result;
+
+/* A solved grid's results as the writers take them: E and its parts, ao,
+ * area_m2 (polygon grids' weights, else NULL), Ez, Esz, L; *out borrows the
+ * grid solution's arrays. Thread-safe; no errors. */
+void cdl_grid_solution_result(const cdl_grid_solution *gs, cdl_grid_result *out);
 
 /* Check a result before it is written to `path` (used in messages): grid and
  * the four required arrays present; every coordinate, normal component and
@@ -88,13 +95,19 @@ void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats)
 #define CDL_GRID_CSV_COLUMNS "x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx"
 
 /* NAME.csv: header CDL_GRID_CSV_COLUMNS
- * then, for those given, area_m2, AO, Ez_lx, Ez_stderr_lx, Esz_lx,
+ * then, for those given, area_m2, AO, AO_stderr, Ez_lx, Ez_stderr_lx, Esz_lx,
  * Esz_stderr_lx, L_cd_m2, DF_percent; one row per point in grid order, "\n" line
  * ends. Each number is the shortest of "%.15g", "%.16g", "%.17g" that reads
  * back (strtod) as exactly the same double, so a closed-form result
  * survives the trip to text. Expects the "C" numeric locale (the library
  * never changes it). */
 cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *path, cdl_error *err);
+
+/* Enough for "%.17g" of any double: sign, 17 digits, point, "e-308". */
+#define CDL_CSV_NUMBER_SIZE 32
+/* A number as the CSV files write it: the shortest of 15 to 17 significant
+ * digits that reads back as exactly v (csv_output.c). */
+void cdl_csv_format_number(double v, char buf[CDL_CSV_NUMBER_SIZE]);
 
 /* NAME.exr (rect and polygon grids; a grid without a raster is refused):
  * 32-bit float channels, one pixel per raster pixel, top row first:

@@ -1,4 +1,5 @@
 /* grid_result_check.c - refuse a result that would write a non-number or a broken raster. */
+#include "base/error_report.h"
 #include "solver/output/grid_result.h"
 
 #include <math.h>
@@ -32,7 +33,7 @@ cdl_status cdl_grid_result_check(const cdl_grid_result *result, const char *path
         int required;
     } columns[] = {
         {"E_lx", result->E, 1},          {"E_direct_lx", result->E_direct, 1}, {"E_indirect_lx", result->E_indirect, 1},
-        {"E_stderr_lx", result->E_stderr, 1}, {"AO", result->ao, 0}, {"area_m2", result->area_m2, 0},
+        {"E_stderr_lx", result->E_stderr, 1}, {"AO", result->ao, 0}, {"AO_stderr", result->ao_stderr, 0}, {"area_m2", result->area_m2, 0},
         {"Ez_lx", result->Ez, 0}, {"Esz_lx", result->Esz, 0}, {"L_cd_m2", result->L, 0},
         {"Ez_stderr_lx", result->Ez_stderr, 0}, {"Esz_stderr_lx", result->Esz_stderr, 0},
         {"DF_percent", result->DF, 0},

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "graphics/raster_canvas.h"
 #include "solver/output/display_transform.h"
 #include "solver/output/false_colour.h"

@@ -12,8 +12,13 @@
 #include <unistd.h>
 
 #include "base/atomic_file.h"
+#include "base/error_report.h"
+#include "base/sized_struct.h"
 #include "base/strings.h"
+#include "solver/output/glare_output.h"
 #include "solver/output/grid_result.h"
+#include "solver/scene/scene_internal.h"
+#include "solver/solution_internal.h"
 
 /* Errors of the file system that are the machine's, not the path's. */
 static cdl_status folder_failure_status(int code)
@@ -66,19 +71,20 @@ cdl_status cdl_solution_prepare_folder(const char *out_dir, cdl_error *err)
     return CDL_OK;
 }
 
-void cdl_grid_solution_result(const cdl_grid_solution *gs, const cdl_grid_spec *spec, cdl_grid_result *out)
+void cdl_grid_solution_result(const cdl_grid_solution *gs, cdl_grid_result *out)
 {
     memset(out, 0, sizeof *out);
-    out->name = spec->name;
+    out->name = gs->name;
     out->grid = &gs->grid;
     out->E = gs->E;
     out->E_direct = gs->E_direct;
     out->E_indirect = gs->E_indirect;
     out->E_stderr = gs->E_stderr;
     out->ao = gs->ao;
+    out->ao_stderr = gs->ao_stderr;
     /* The area each point stands for, for the CSV: polygon grids' points
      * differ (rect grids' are equal, points grids' have none). */
-    out->area_m2 = spec->kind == CDL_GRID_POLYGON ? gs->grid.weights : NULL;
+    out->area_m2 = gs->kind == CDL_GRID_POLYGON ? gs->grid.weights : NULL;
     out->Ez = gs->Ez;
     out->Esz = gs->Esz;
     out->L = gs->L;
@@ -144,12 +150,17 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
                 cJSON_AddNumberToObject(o, key, worst);
             }
         }
-        /* Power density: the installed power over the grid's area, when
-         * every luminaire's file gives its input watts. */
+        /* Power density: the power of the luminaires over the grid (their
+         * positions projected along its normal fall within it) over its
+         * area, when each of their files gives its input watts. */
         if (stats[g].area_m2 > 0.0) {
+            const cdl_power_summary *pw = &sol->grids[g].power;
             cJSON_AddNumberToObject(o, "area_m2", stats[g].area_m2);
-            if (sol->power.luminaires_counted > 0 && sol->power.luminaires_without_watts == 0)
-                cJSON_AddNumberToObject(o, "power_density_w_m2", sol->power.installed_w / stats[g].area_m2);
+            cJSON_AddNumberToObject(o, "luminaires_over", (double)(pw->luminaires_counted + pw->luminaires_without_watts));
+            if (pw->luminaires_counted > 0 && pw->luminaires_without_watts == 0) {
+                cJSON_AddNumberToObject(o, "power_w", pw->installed_w);
+                cJSON_AddNumberToObject(o, "power_density_w_m2", pw->installed_w / stats[g].area_m2);
+            }
         }
     }
     cJSON *power = cJSON_AddObjectToObject(root, "power");
@@ -170,11 +181,11 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
     cJSON_AddNumberToObject(power, "luminaires_without_watts", (double)sol->power.luminaires_without_watts);
     cJSON_AddStringToObject(root, "method", cdl_method_name(sol->method));
     cJSON_AddStringToObject(root, "quality", cdl_quality_name(sol->settings.quality));
-    cJSON_AddNumberToObject(root, "target_error", cdl_solver_settings_target(&sol->settings));
+    cJSON_AddNumberToObject(root, "target_error", sol->target_error);
     cJSON *set = cJSON_AddObjectToObject(root, "settings");
     cJSON_AddStringToObject(set, "method", cdl_method_name(sol->settings.method));
     cJSON_AddStringToObject(set, "quality", cdl_quality_name(sol->settings.quality));
-    cJSON_AddNumberToObject(set, "target_error", cdl_solver_settings_target(&sol->settings));
+    cJSON_AddNumberToObject(set, "target_error", sol->target_error);
     if (sol->settings.bounces == CDL_BOUNCES_AUTO)
         cJSON_AddStringToObject(set, "bounces", "auto");
     else
@@ -187,6 +198,14 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
     cJSON_AddNumberToObject(root, "rays", (double)sol->rays);
     cJSON *plan = cJSON_Parse(sol->plan_json ? sol->plan_json : "{}");
     if (plan) cJSON_AddItemToObject(root, "plan", plan);
+    if (scene->observer_count > 0) {
+        cJSON *glare = cdl_glare_summary_json(scene, sol);
+        if (!glare) {
+            cJSON_Delete(root);
+            return cdl_error_out_of_memory(err);
+        }
+        cJSON_AddItemToObject(root, "glare", glare);
+    }
     cJSON *warnings = cJSON_AddArrayToObject(root, "warnings");
     for (size_t w = 0; w < sol->warning_count; ++w) cJSON_AddItemToArray(warnings, cJSON_CreateString(sol->warnings[w]));
     char *text = cJSON_Print(root);
@@ -207,8 +226,8 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
 cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, const char *out_dir,
                               const cdl_solution_write_options *options, cdl_error *err)
 {
-    cdl_solution_write_options opts = CDL_SOLUTION_WRITE_OPTIONS_DEFAULT;
-    if (options) opts = *options;
+    cdl_solution_write_options opts = CDL_SOLUTION_WRITE_OPTIONS_INIT;
+    cdl_sized_struct_read(&opts, sizeof opts, options);
     const char *ocio_config = opts.ocio_config ? opts.ocio_config : cdl_default_ocio_config();
     cdl_status st = cdl_solution_prepare_folder(out_dir, err);
     if (st != CDL_OK) return st;
@@ -223,7 +242,7 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
         snprintf(bounces, sizeof bounces, "auto");
     else
         snprintf(bounces, sizeof bounces, "%d", sol->settings.bounces);
-    snprintf(target, sizeof target, "%.17g", cdl_solver_settings_target(&sol->settings));
+    snprintf(target, sizeof target, "%.17g", sol->target_error);
     snprintf(ds, sizeof ds, "%d", sol->settings.direct_samples);
     snprintf(as, sizeof as, "%d", sol->settings.ao_samples);
     const cdl_key_value attrs[] = {
@@ -236,7 +255,7 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
     for (size_t g = 0; g < sol->grid_count && st == CDL_OK; ++g) {
         const cdl_grid_solution *gs = &sol->grids[g];
         cdl_grid_result r;
-        cdl_grid_solution_result(gs, &scene->grids[g], &r);
+        cdl_grid_solution_result(gs, &r);
         r.map_log_scale = opts.map_log_scale;
         cdl_grid_result_stats(&r, &stats[g]);
         char *csv = cdl_path_join(out_dir, r.name, ".csv");
@@ -255,6 +274,11 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
         free(exr);
         free(png);
     }
+    if (st == CDL_OK && scene->observer_count > 0) {
+        char *glare = cdl_path_join(out_dir, "glare", ".csv");
+        st = glare ? cdl_glare_write_csv(scene, sol, glare, err) : cdl_error_out_of_memory(err);
+        free(glare);
+    }
     if (st == CDL_OK) {
         char *summary = cdl_path_join(out_dir, "summary", ".json");
         st = summary ? write_summary(scene, sol, stats, summary, err) : cdl_error_out_of_memory(err);
@@ -262,4 +286,25 @@ cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *sol, c
     }
     free(stats);
     return st;
+}
+
+void cdl_solution_grid_summary(const cdl_solution *solution, size_t grid, cdl_grid_summary *summary)
+{
+    cdl_grid_summary all = {.size = sizeof all};
+    if (grid < solution->grid_count) {
+        cdl_grid_result r;
+        cdl_grid_solution_result(&solution->grids[grid], &r);
+        cdl_grid_stats stats;
+        cdl_grid_result_stats(&r, &stats);
+        all.count = stats.count;
+        all.area_m2 = stats.area_m2;
+        all.E_avg_lx = stats.E_avg_lx;
+        all.E_min_lx = stats.E_min_lx;
+        all.E_max_lx = stats.E_max_lx;
+        all.U0 = stats.U0;
+        all.Ud = stats.Ud;
+        all.stderr_mean_rel = stats.stderr_mean_rel;
+        all.stderr_max_rel = stats.stderr_max_rel;
+    }
+    cdl_sized_struct_fill(summary, &all, sizeof all);
 }

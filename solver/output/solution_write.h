@@ -1,4 +1,4 @@
-/* solution_write.h - a solve's files (DESIGN.md, "Outputs of solve").
+/* solution_write.h - a solve's files: CSV, EXR and PNG per grid, summary.json.
  *
  * Per grid NAME.csv, NAME.exr and NAME.png (EXR and PNG for rect and
  * polygon grids), and summary.json; each written atomically (to a
@@ -23,27 +23,24 @@
  * machine's failures (no space, I/O errors). */
 cdl_status cdl_solution_prepare_folder(const char *out_dir, cdl_error *err);
 
-/* How the files are written. Start from CDL_SOLUTION_WRITE_OPTIONS_DEFAULT. */
+/* How the files are written. Start from CDL_SOLUTION_WRITE_OPTIONS_INIT
+ * (it sets `size`, so that fields added later keep their defaults for a
+ * program built before them). */
 typedef struct cdl_solution_write_options {
+    size_t size;                      /* sizeof(cdl_solution_write_options) */
     const char *ocio_config;          /* the OpenColorIO config for the PNG maps (default: Candela's) */
     int map_log_scale;                /* 1: the maps on a logarithmic lux scale; 0 (default) linear */
 } cdl_solution_write_options;
-#define CDL_SOLUTION_WRITE_OPTIONS_DEFAULT {.ocio_config = NULL, .map_log_scale = 0}
+#define CDL_SOLUTION_WRITE_OPTIONS_INIT {.size = sizeof(cdl_solution_write_options), .ocio_config = NULL, .map_log_scale = 0}
 
 /* Write the files into out_dir (prepared as by cdl_solution_prepare_folder);
  * options may be NULL for the defaults. */
 cdl_status cdl_solution_write(const cdl_scene *scene, const cdl_solution *solution, const char *out_dir,
                               const cdl_solution_write_options *options, cdl_error *err);
 
-struct cdl_grid_result;
-/* The grid's results as the writers take them (grid_result.h): E and its
- * parts, ao, area_m2 (polygon grids' weights, else NULL), Ez, Esz, L;
- * *out borrows the solution's arrays. Thread-safe; no errors. */
-void cdl_grid_solution_result(const cdl_grid_solution *gs, const cdl_grid_spec *spec, struct cdl_grid_result *out);
-
 /* The OCIO config shipped with Candela (data/ocio/config.ocio), installed
  * as DATADIR/candela/ocio/config.ocio and found relative to libcandela.so
- * or to the program linking libcandela.a (output/ocio_config_path.c).
+ * or to the program linking libcandela.a.
  * Static storage, found once; thread-safe; never NULL. When the
  * installation lacks it, the path where it was expected is returned and
  * writing the PNG maps fails with a message naming it. */

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/estimate.h"
 #include "radiometry/frame.h"
 #include "base/rng.h"

@@ -1,4 +1,5 @@
 /* exr_image.c - OpenEXR Core reading and writing of float images. */
+#include "base/error_report.h"
 #include "solver/scene/exr_image.h"
 
 #include <errno.h>

@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "base/file_bytes.h"
 #include "solver/scene/scene_file.h"
 

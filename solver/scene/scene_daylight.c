@@ -31,6 +31,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/emitters/emitter.h"
 #include "lights/environment/solar_position.h"
 #include "radiometry/constants.h"

@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/bounds.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"

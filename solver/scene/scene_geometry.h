@@ -19,7 +19,7 @@
 #include "base/error.h"
 #include "radiometry/glass.h"
 #include "solver/geometry/ray_scene.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 typedef struct cdl_scene_geometry cdl_scene_geometry;
 

@@ -6,6 +6,8 @@
 #include <string.h>
 
 #include "base/content_hash.h"
+#include "base/error_report.h"
+#include "lights/photometry/photometry_metadata.h"
 
 static void hash_ring(cdl_content_hash *h, const cdl_ring3 *ring)
 {

@@ -26,7 +26,7 @@
 #include <stdint.h>
 
 #include "base/error.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_lights.h"
 
 typedef struct cdl_scene_hashes {

@@ -5,6 +5,7 @@
  */
 #include "solver/scene/scene_parse.h"
 
+#include <ctype.h>
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
@@ -12,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "base/strings.h"
 
 /* out = parent + separator + text, truncated to CDL_SCENE_PATH_MAX - 1 characters. */
@@ -327,4 +329,13 @@ cdl_status cdl_scene_json_read_path(const cdl_scene_parse *ctx, const cJSON *nod
     free(*out);
     *out = full;
     return CDL_OK;
+}
+
+int cdl_scene_name_ok(const char *name)
+{
+    size_t n = strlen(name);
+    if (n == 0 || n > 64 || name[0] == '.' || name[0] == '-') return 0;
+    for (size_t i = 0; i < n; ++i)
+        if (!isalnum((unsigned char)name[i]) && name[i] != '.' && name[i] != '_' && name[i] != '-') return 0;
+    return 1;
 }

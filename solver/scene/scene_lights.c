@@ -7,7 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "base/strings.h"
+#include "lights/emitters/near_field_bound.h"
+#include "lights/photometry/photometry_metadata.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "solver/scene/exr_image.h"
@@ -299,19 +302,36 @@ static cdl_status add_near_field(const cdl_scene *scene, const cdl_luminaire_spe
                                  cdl_emitter *point, const cdl_scene_light *point_proto, cdl_scene_lights *L,
                                  cdl_error *err)
 {
-    double size = cdl_luminous_opening_largest_m(&cdl_photometry_get_metadata(p->photometry)->opening);
     cdl_scene_light proto = *point_proto;
     cdl_status st;
     if (sp->near_field == CDL_NEAR_FIELD_AUTO) {
+        /* The point model beyond where its error stays below a share of
+         * the target (near_field_bound.h): a property of the file, measured
+         * once in the luminaire's frame for all its copies (the scale,
+         * rotation and position of a copy change no relative error). */
+        size_t index = L->photometry_count - 1;
+        if (!L->near_bound_known[index]) {
+            cdl_goniometric_params own = CDL_GONIOMETRIC_PARAMS_DEFAULT;
+            own.photometry = p->photometry;
+            st = cdl_near_field_bound_measure(&own, &L->near_bounds[index], err);
+            if (st != CDL_OK) {
+                cdl_emitter_release(point);
+                return fail_at(err, scene, sp->json_path, st);
+            }
+            L->near_bound_known[index] = 1;
+        }
+        const cdl_near_field_bound bound = L->near_bounds[index];
         cdl_scene_light far = *point_proto;
         far.near_part = -1;
         far.near_center = sp->position;
-        far.near_radius = CDL_NEAR_FIELD_DISTANCES * size;
+        far.near_radius = cdl_near_field_switch_distance(&bound, cdl_solver_settings_target(&scene->settings));
+        far.near_model_error = cdl_near_field_bound_error(&bound, far.near_radius);
         st = add_light(L, point, "goniometric", &far, err);
         if (st != CDL_OK) return fail_at(err, scene, sp->json_path, st);
         proto.near_part = 1;
         proto.near_center = sp->position;
         proto.near_radius = far.near_radius;
+        proto.near_model_error = far.near_model_error;
     } else {
         cdl_emitter_release(point);
     }
@@ -384,6 +404,7 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
     memset(&proto, 0, sizeof proto);
     cdl_luminaire_spec_label(sp, proto.label, sizeof proto.label);
     proto.owner = UINT32_MAX;
+    proto.luminaire = k;
     double mf = sp->maintenance_factor;
     cdl_emitter *e = NULL;
     cdl_status st = CDL_OK;
@@ -439,7 +460,7 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
             /* Copies of one entry ("array", "positions") share its file, read once. */
             ph = L->photometries[L->photometry_count - 1];
         } else {
-            cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+            cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
             st = cdl_photometry_read_file(sp->file, &opt, &ph, err);
             if (st != CDL_OK) {
                 cdl_error_prefix(err, "%s.file: ", sp->json_path);
@@ -550,7 +571,9 @@ cdl_status cdl_scene_lights_build(const cdl_scene *scene, const cdl_scene_geomet
     memset(out, 0, sizeof *out);
     out->photometries = calloc(scene->luminaire_count + 1, sizeof *out->photometries);
     out->luminaire_photometry = calloc(scene->luminaire_count + 1, sizeof *out->luminaire_photometry);
-    if (!out->photometries || !out->luminaire_photometry) {
+    out->near_bounds = calloc(scene->luminaire_count + 1, sizeof *out->near_bounds);
+    out->near_bound_known = calloc(scene->luminaire_count + 1, sizeof *out->near_bound_known);
+    if (!out->photometries || !out->luminaire_photometry || !out->near_bounds || !out->near_bound_known) {
         cdl_scene_lights_release(out);
         return cdl_error_out_of_memory(err);
     }
@@ -569,6 +592,7 @@ cdl_status cdl_scene_lights_build(const cdl_scene *scene, const cdl_scene_geomet
         const cdl_surface_spec *ss = &scene->surfaces[gp->source_index];
         cdl_scene_light proto;
         memset(&proto, 0, sizeof proto);
+        proto.luminaire = SIZE_MAX;
         if (gp->box_face >= 0 && ss->name)
             snprintf(proto.label, sizeof proto.label, "%s (%s, face %s)", ss->json_path, ss->name,
                      box_face_name(gp->box_face));
@@ -613,5 +637,7 @@ void cdl_scene_lights_release(cdl_scene_lights *L)
     free(L->kinds);
     free(L->photometries);
     free(L->luminaire_photometry);
+    free(L->near_bounds);
+    free(L->near_bound_known);
     memset(L, 0, sizeof *L);
 }

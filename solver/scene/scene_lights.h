@@ -19,7 +19,7 @@
 #include "lights/photometry/photometry.h"
 #include "radiometry/bounds.h"
 #include "solver/geometry/occluder_index.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_geometry.h"
 
 #define CDL_SCENE_LIGHT_OUTLINE_MAX (CDL_REGION_MAX_PLANES - 2)
@@ -29,6 +29,7 @@
 typedef struct cdl_scene_light {
     const cdl_emitter *emitter;
     char label[160];                  /* "luminaires[3]" or "surfaces[2]" (+ face) for the plan */
+    size_t luminaire;                 /* its index in scene->luminaires; SIZE_MAX for an emitting surface */
     uint32_t owner;                   /* geometry piece id of its own surface, UINT32_MAX if none */
     int has_closed_form;              /* area or environment (uniform, overcast or image) */
     int is_environment;
@@ -64,7 +65,9 @@ typedef struct cdl_scene_light {
      * the others; near_part 0 lights every point. */
     int near_part;
     cdl_vec3 near_center;
-    double near_radius;               /* CDL_NEAR_FIELD_DISTANCES x the opening's largest dimension */
+    double near_radius;               /* where the point model's error bound falls to CDL_NEAR_FIELD_SHARE of the
+                                       * target, at least CDL_NEAR_FIELD_DISTANCES x the opening's largest dimension */
+    double near_model_error;          /* that bound at near_radius (relative) */
     int costly_exact;                 /* its exact E is a cubature (an opening of a non-Lambertian table, a
                                        * CIE general or Perez sky) */
     char *model;                      /* NULL, or what the light was made from in words (a daylight sky and
@@ -88,6 +91,10 @@ typedef struct cdl_scene_lights {
     size_t count;
     cdl_photometry **photometries;  /* owned, one per goniometric entry (its copies share it) */
     size_t photometry_count;
+    /* Per photometry, its opening's near-field bound (near_field_bound.h),
+     * measured once in the luminaire's own frame when a copy first needs it. */
+    struct cdl_near_field_bound *near_bounds;
+    unsigned char *near_bound_known;
     /* Per luminaire of the scene (scene->luminaires[k]): its photometry, borrowed; NULL unless goniometric. */
     const cdl_photometry **luminaire_photometry;
     int has_environment;

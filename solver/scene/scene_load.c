@@ -1,7 +1,8 @@
 /* scene_load.c - the JSON scene file of DESIGN.md into a cdl_scene.
  *
- * Top level: version (required, 1), surfaces, luminaires, grids (required,
- * at least one), solver. Luminaire keys by type (all take
+ * Top level: version (required, 1), surfaces, luminaires, observers
+ * (scene_observers.c), grids (at least one unless there are observers; a
+ * grid of "type": "observers" places observers), solver. Luminaire keys by type (all take
  * maintenance_factor in (0, 1], default 1):
  *   point        position; exactly one of intensity_cd, flux_lm (>= 0)
  *   spot         position, direction; exactly one of intensity_cd, flux_lm;
@@ -33,7 +34,7 @@
  * unit of the same dimension, as people type it: "46.45 fc", "2 kcd",
  * "3 klm", "1200 cd/m2" (radiometry/quantity.h).
  */
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -42,16 +43,17 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "base/file_bytes.h"
 #include "base/strings.h"
 #include "solver/scene/scene_file.h"
 #include "solver/scene/scene_parse.h"
 
-#define GRID_NAME_MAX 64
 /* Room in the key tables of luminaires and grids, NULL included. */
 #define LUMINAIRE_KEYS_MAX 24
 
-static const char *const document_keys[] = {"$schema", "version", "surfaces", "luminaires", "grids", "solver", NULL};
+static const char *const document_keys[] = {"$schema", "version", "surfaces", "luminaires", "grids", "observers",
+                                            "solver", NULL};
 static const char *const settings_keys[] = {"method", "quality", "target_error", "bounces", "seed", "threads",
                                             "direct_samples", "ao_samples", NULL};
 static const char *const point_keys[] = {"p", "n", NULL};
@@ -387,6 +389,7 @@ static cdl_status read_luminaire_entry(const cdl_scene_parse *ctx, const cJSON *
         c->array_index[0] = copies.index ? copies.index[k][0] : 0;
         c->array_index[1] = copies.index ? copies.index[k][1] : 0;
         if (copies.positions) c->position = copies.positions[k];
+        if (copies.aims) c->aim = copies.aims[k];
         if (k == copies.count - 1) {
             /* The last copy takes the entry's strings and shape. */
             memset(&proto, 0, sizeof proto);
@@ -419,15 +422,6 @@ static const char *const grid_keys[][LUMINAIRE_KEYS_MAX] = {
     {"name", "type", "vertices", "holes", "spacing", "normal", "outputs", "requirements", NULL},
     {"name", "type", "points", "outputs", "requirements", NULL},
 };
-
-static int grid_name_ok(const char *name)
-{
-    size_t n = strlen(name);
-    if (n == 0 || n > GRID_NAME_MAX || name[0] == '.' || name[0] == '-') return 0;
-    for (size_t i = 0; i < n; ++i)
-        if (!isalnum((unsigned char)name[i]) && name[i] != '.' && name[i] != '_' && name[i] != '-') return 0;
-    return 1;
-}
 
 static int names_equal_ignoring_case(const char *a, const char *b)
 {
@@ -513,7 +507,7 @@ static cdl_status read_grid(const cdl_scene_parse *ctx, const cJSON *node, const
     if (read_kind(ctx, node, path, "grid", grid_types, grid_keys, &kind) != CDL_OK) return CDL_ERR_INPUT;
     out->kind = (cdl_grid_kind)kind;
     const cJSON *name = field(node, path, "name", p);
-    if (!cJSON_IsString(name) || !grid_name_ok(name->valuestring))
+    if (!cJSON_IsString(name) || !cdl_scene_name_ok(name->valuestring))
         return cdl_scene_json_fail(ctx, p,
                                    "a grid name usable as a file name (1 to 64 letters, digits, '.', '_', '-', not "
                                    "starting with '.' or '-')",
@@ -628,7 +622,7 @@ static cdl_status array_items(const cdl_scene_parse *ctx, const cJSON *node, con
 
 static cdl_status read_document(const cdl_scene_parse *ctx, const cJSON *root, cdl_scene *scene)
 {
-    char p[CDL_SCENE_PATH_MAX], item[CDL_SCENE_PATH_MAX];
+    char p[CDL_SCENE_PATH_MAX], item[CDL_SCENE_PATH_MAX], named[CDL_SCENE_PATH_MAX];
     if (cdl_scene_json_check_object(ctx, root, "", "a scene", document_keys) != CDL_OK) return CDL_ERR_INPUT;
     /* "$schema" names the JSON Schema editors check the file against
      * (data/scene.schema.json); the loader needs nothing from it. */
@@ -658,21 +652,65 @@ static cdl_status read_document(const cdl_scene_parse *ctx, const cJSON *root, c
         if (read_luminaire_entry(ctx, e, item, i, scene) != CDL_OK) return CDL_ERR_INPUT;
     }
 
-    list = field(root, "", "grids", p);
-    if (array_items(ctx, list, p, "a list of at least one calculation grid", 1, sizeof *scene->grids,
-                    (void **)&scene->grids, &scene->grid_count) != CDL_OK)
-        return CDL_ERR_INPUT;
+    list = field(root, "", "observers", p);
+    if (list && cdl_scene_json_check_array(ctx, list, p, "a list of observers", 0) != CDL_OK) return CDL_ERR_INPUT;
     i = 0;
-    for (const cJSON *e = list->child; e; e = e->next, ++i) {
+    for (const cJSON *e = list ? list->child : NULL; e; e = e->next, ++i) {
         cdl_scene_json_path_index(item, p, i);
-        if (read_grid(ctx, e, item, &scene->grids[i]) != CDL_OK) return CDL_ERR_INPUT;
-        for (size_t k = 0; k < i; ++k)
-            if (names_equal_ignoring_case(scene->grids[k].name, scene->grids[i].name)) {
-                cdl_scene_json_path_key(p, item, "name");
-                return cdl_scene_json_failf(ctx, p, "a grid name not used before (ignoring case)",
-                                            "\"%s\", already the name of grids[%zu]", scene->grids[i].name, k);
+        if (cdl_scene_json_read_observer_entry(ctx, e, item, i, scene) != CDL_OK) return CDL_ERR_INPUT;
+        const char *name = cJSON_GetStringValue(cdl_scene_json_member(e, "name"));
+        size_t k = 0;
+        for (const cJSON *f = list->child; f != e; f = f->next, ++k)
+            if (names_equal_ignoring_case(cJSON_GetStringValue(cdl_scene_json_member(f, "name")), name)) {
+                cdl_scene_json_path_key(named, item, "name");
+                return cdl_scene_json_failf(ctx, named, "an observer name not used before (ignoring case)",
+                                            "\"%s\", already the name of observers[%zu]", name, k);
             }
     }
+    size_t observer_entries = i;
+    const cJSON *observer_list = list;
+
+    /* Grids: at least one, unless there are observers to rate. A grid of
+     * "type": "observers" places observers, not calculation points. */
+    list = field(root, "", "grids", p);
+    size_t entries = 0;
+    if (array_items(ctx, list, p,
+                    observer_entries ? "a list of calculation grids" : "a list of at least one calculation grid",
+                    observer_entries ? 0 : 1, sizeof *scene->grids, (void **)&scene->grids, &entries) != CDL_OK)
+        return CDL_ERR_INPUT;
+    const char **names = calloc(entries ? entries : 1, sizeof *names);
+    if (!names) return cdl_error_out_of_memory(ctx->err);
+    cdl_status st = CDL_OK;
+    i = 0;
+    for (const cJSON *e = list ? list->child : NULL; st == CDL_OK && e; e = e->next, ++i) {
+        cdl_scene_json_path_index(item, p, i);
+        const cJSON *type = cJSON_IsObject(e) ? cdl_scene_json_member(e, "type") : NULL;
+        if (cJSON_IsString(type) && strcmp(type->valuestring, "observers") == 0) {
+            st = cdl_scene_json_read_observer_grid(ctx, e, item, i, scene);
+            /* its name, in the document (which outlives this loop) */
+            if (st == CDL_OK) names[i] = cJSON_GetStringValue(cdl_scene_json_member(e, "name"));
+            size_t k = 0;
+            for (const cJSON *f = observer_list ? observer_list->child : NULL; st == CDL_OK && f; f = f->next, ++k)
+                if (names_equal_ignoring_case(cJSON_GetStringValue(cdl_scene_json_member(f, "name")), names[i])) {
+                    cdl_scene_json_path_key(named, item, "name");
+                    st = cdl_scene_json_failf(ctx, named, "a name not used by an observer (ignoring case)",
+                                              "\"%s\", already the name of observers[%zu]", names[i], k);
+                }
+        } else {
+            st = read_grid(ctx, e, item, &scene->grids[scene->grid_count]);
+            if (st == CDL_OK) names[i] = scene->grids[scene->grid_count++].name;
+        }
+        for (size_t k = 0; st == CDL_OK && k < i; ++k)
+            if (names[k] && names_equal_ignoring_case(names[k], names[i])) {
+                cdl_scene_json_path_key(named, item, "name");
+                st = cdl_scene_json_failf(ctx, named, "a grid name not used before (ignoring case)",
+                                          "\"%s\", already the name of grids[%zu]", names[i], k);
+            }
+    }
+    free(names);
+    if (st != CDL_OK) return st;
+    if (scene->grid_count + scene->observer_count == 0)
+        return cdl_scene_json_fail(ctx, p, "at least one calculation grid or observer", list);
     return read_settings(ctx, field(root, "", "solver", p), p, &scene->settings);
 }
 
@@ -788,6 +826,8 @@ void cdl_scene_release(cdl_scene *scene)
         free(g->normals);
     }
     free(scene->grids);
+    for (size_t i = 0; i < scene->observer_count; ++i) free(scene->observers[i].name);
+    free(scene->observers);
     free(scene->path);
     free(scene->base_dir);
     free(scene);
@@ -806,6 +846,9 @@ void cdl_scene_keys_collect(cdl_scene_keys *out)
     out->sets[n++] = (cdl_scene_key_set){"requirements", requirements_keys};
     out->sets[n++] = (cdl_scene_key_set){"sun", cdl_scene_sun_keys};
     out->sets[n++] = (cdl_scene_key_set){"site", cdl_scene_site_keys};
+    out->sets[n++] = (cdl_scene_key_set){"observer", cdl_scene_observer_keys};
+    out->sets[n++] = (cdl_scene_key_set){"grid observers", cdl_scene_observer_grid_keys};
+    out->sets[n++] = (cdl_scene_key_set){"observer requirements", cdl_scene_observer_requirements_keys};
     for (int t = 0; luminaire_types[t]; ++t, ++n) {
         snprintf(out->names[n], sizeof out->names[n], "luminaire %s", luminaire_types[t]);
         out->sets[n] = (cdl_scene_key_set){out->names[n], luminaire_keys[t]};

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 

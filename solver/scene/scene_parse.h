@@ -13,10 +13,10 @@
 #include <cjson/cJSON.h>
 #include <stddef.h>
 
-#include "base/error.h"
+#include "base/error_report.h"
 #include "radiometry/quantity.h"
 #include "radiometry/vec3.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 /* Longer than CDL_JSON_PATH_SIZE: messages keep the whole path even where a
  * spec's json_path field is truncated. */
@@ -141,6 +141,27 @@ extern const char *const cdl_scene_site_keys[];
 cdl_status cdl_scene_json_read_daylight(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
                                         cdl_luminaire_spec *out);
 
+/* ---- names (scene_json.c) ---------------------------------------------------------- */
+
+/* A name usable as a file name: 1 to 64 letters, digits, '.', '_', '-', not
+ * starting with '.' or '-' (grids, observers). */
+int cdl_scene_name_ok(const char *name);
+
+/* ---- observers (scene_observers.c) --------------------------------------------------- */
+
+extern const char *const cdl_scene_observer_keys[];
+extern const char *const cdl_scene_observer_grid_keys[];
+extern const char *const cdl_scene_observer_requirements_keys[];
+
+/* One entry of "observers" (index `entry`), appended to scene->observers,
+ * one spec per placement. */
+cdl_status cdl_scene_json_read_observer_entry(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                              size_t entry, cdl_scene *scene);
+/* A grid of "type": "observers" (index `entry` in "grids"), its points
+ * appended to scene->observers. */
+cdl_status cdl_scene_json_read_observer_grid(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                             size_t entry, cdl_scene *scene);
+
 /* ---- placing luminaires (scene_placement.c) ------------------------------------ */
 
 /* The keys of an "array" object. */
@@ -156,6 +177,7 @@ cdl_status cdl_scene_json_read_aim(const cdl_scene_parse *ctx, const cJSON *node
 typedef struct cdl_luminaire_copies {
     cdl_vec3 *positions;
     int (*index)[2];              /* [i, j] in the array, or [k, 0] */
+    cdl_vec3 *aims;               /* with "positions" and a list of aim points: each copy's; else NULL */
     size_t count;
 } cdl_luminaire_copies;
 cdl_status cdl_scene_json_read_copies(const cdl_scene_parse *ctx, const cJSON *node, const char *path,

@@ -8,16 +8,22 @@
  *                            nadir, right-handed about the axis pointing
  *                            away from the aim point (counter-clockwise
  *                            seen from behind the luminaire)
- *   array      {"counts": [nx, ny], "spacing": [dx, dy]}: nx x ny copies
- *                            at position + R (i dx, j dy, 0), i < nx, j < ny,
- *                            R the entry's orientation (its rotation, or
- *                            its aim from `position`; for a spot the turn
- *                            taking -z to its axis; none for a point), so
- *                            the rows run along the luminaire's C0 (x) and
- *                            C90 (y) axes; counts >= 1, spacing in metres
+ *   array      {"counts": [nx, ny], "spacing": [dx, dy], "axes": A}: nx x ny
+ *                            copies at position + R (i dx, j dy, 0), i < nx,
+ *                            j < ny; counts >= 1, spacing in metres. With
+ *                            "axes": "luminaire" (the default) R is the
+ *                            entry's orientation (its rotation, or its aim
+ *                            from `position`; for a spot the turn taking -z
+ *                            to its axis; none for a point), so the rows run
+ *                            along the luminaire's C0 (x) and C90 (y) axes
+ *                            whichever way it is turned; with "axes":
+ *                            "world" R is the identity: rows along world x
+ *                            and y, as a plan shows them
  *   positions  [[x, y, z], ...]: one copy at each point, instead of
  *                            "position"
- * With aim, every copy points at the aim point from its own position.
+ * With aim, every copy points at the aim point from its own position; with
+ * "positions", "aim" may also be a list of as many points, each copy aimed
+ * at its own (floodlights on masts aimed over a pitch).
  *
  * Aim, as a rotation: first `spin` about the luminaire's z axis, then the
  * shortest turn taking the nadir -z to the unit vector d from the
@@ -36,6 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "radiometry/constants.h"
 
 /* Aim points closer to the luminaire than this give no direction. */
@@ -161,17 +168,24 @@ cdl_status cdl_scene_json_read_aim(const cdl_scene_parse *ctx, const cJSON *node
         return cdl_scene_json_failf(ctx, p, exp, "both");
     }
     out->has_aim = 1;
-    if (cdl_scene_json_read_vec3(ctx, aim, p, 0, 1, &out->aim) != CDL_OK) return CDL_ERR_INPUT;
+    if (cJSON_IsArray(aim) && cJSON_IsArray(aim->child)) {
+        /* a list of aim points: each copy of "positions" its own (read with the copies) */
+        if (!cdl_scene_json_member(node, "positions"))
+            return cdl_scene_json_failf(ctx, p, "one aim point [x, y, z] (a list of them goes with \"positions\", one "
+                                        "each)", "a list without \"positions\"");
+    } else if (cdl_scene_json_read_vec3(ctx, aim, p, 0, 1, &out->aim) != CDL_OK) {
+        return CDL_ERR_INPUT;
+    }
     cdl_scene_json_path_key(p, path, "spin");
     return cdl_scene_json_read_number(ctx, spin, p, CDL_RANGE_ANY, 0, &out->spin_deg);
 }
 
 /* ---- copies ------------------------------------------------------------------------ */
 
-const char *const cdl_scene_array_keys[] = {"counts", "spacing", NULL};
+const char *const cdl_scene_array_keys[] = {"counts", "spacing", "axes", NULL};
 
 static cdl_status read_array(const cdl_scene_parse *ctx, const cJSON *node, const char *path, int counts[2],
-                             double spacing[2])
+                             double spacing[2], int *world_axes)
 {
     const char *const *keys = cdl_scene_array_keys;
     char p[CDL_SCENE_PATH_MAX], item[CDL_SCENE_PATH_MAX];
@@ -200,6 +214,35 @@ static cdl_status read_array(const cdl_scene_parse *ctx, const cJSON *node, cons
     }
     if ((double)counts[0] * counts[1] > CDL_SCENE_MAX_LUMINAIRES)
         return cdl_scene_json_failf(ctx, path, "at most 1000000 luminaires", "%d x %d", counts[0], counts[1]);
+    const cJSON *axes = cdl_scene_json_field(node, path, "axes", p);
+    *world_axes = 0;
+    if (axes) {
+        if (!cJSON_IsString(axes) || (strcmp(axes->valuestring, "world") && strcmp(axes->valuestring, "luminaire")))
+            return cdl_scene_json_fail(ctx, p, "\"luminaire\" (rows along the luminaire's C0 and C90 axes, the "
+                                       "default) or \"world\" (rows along world x and y)", axes);
+        *world_axes = strcmp(axes->valuestring, "world") == 0;
+    }
+    return CDL_OK;
+}
+
+/* "aim" as a list, one point per entry of "positions": each copy its own. */
+static cdl_status read_aims(const cdl_scene_parse *ctx, const cJSON *node, const char *path, size_t count,
+                            cdl_luminaire_copies *out)
+{
+    const cJSON *aim = cdl_scene_json_member(node, "aim");
+    if (!cJSON_IsArray(aim) || !cJSON_IsArray(aim->child)) return CDL_OK; /* one point, read with the luminaire */
+    char p[CDL_SCENE_PATH_MAX], item[CDL_SCENE_PATH_MAX];
+    cdl_scene_json_path_key(p, path, "aim");
+    if ((size_t)cJSON_GetArraySize(aim) != count)
+        return cdl_scene_json_failf(ctx, p, "one aim point per entry of \"positions\"", "%d aim points for %zu positions",
+                                    cJSON_GetArraySize(aim), count);
+    out->aims = malloc(count * sizeof *out->aims);
+    if (!out->aims) return cdl_error_out_of_memory(ctx->err);
+    size_t i = 0;
+    for (const cJSON *e = aim->child; e; e = e->next, ++i) {
+        cdl_scene_json_path_index(item, p, i);
+        if (cdl_scene_json_read_vec3(ctx, e, item, 0, 1, &out->aims[i]) != CDL_OK) return CDL_ERR_INPUT;
+    }
     return CDL_OK;
 }
 
@@ -237,20 +280,21 @@ cdl_status cdl_scene_json_read_copies(const cdl_scene_parse *ctx, const cJSON *n
             out->index[i][1] = 0;
         }
         out->count = n;
-        return CDL_OK;
+        return read_aims(ctx, node, path, n, out);
     }
     /* "position" was read into proto by the luminaire's reader. */
-    int counts[2] = {1, 1};
+    int counts[2] = {1, 1}, world_axes = 0;
     double spacing[2] = {0.0, 0.0};
     if (array) {
         cdl_scene_json_path_key(p, path, "array");
-        if (read_array(ctx, array, p, counts, spacing) != CDL_OK) return CDL_ERR_INPUT;
+        if (read_array(ctx, array, p, counts, spacing, &world_axes) != CDL_OK) return CDL_ERR_INPUT;
     }
     size_t n = (size_t)counts[0] * (size_t)counts[1];
     out->positions = malloc(n * sizeof *out->positions);
     out->index = malloc(n * sizeof *out->index);
     if (!out->positions || !out->index) return cdl_error_out_of_memory(ctx->err);
-    mat3 r = orientation(proto);
+    mat3 identity = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    mat3 r = world_axes ? identity : orientation(proto);
     cdl_vec3 ex = mat3_apply(r, cdl_vec3_make(1, 0, 0)), ey = mat3_apply(r, cdl_vec3_make(0, 1, 0));
     size_t k = 0;
     for (int j = 0; j < counts[1]; ++j)
@@ -268,6 +312,7 @@ void cdl_scene_luminaire_copies_free(cdl_luminaire_copies *copies)
 {
     free(copies->positions);
     free(copies->index);
+    free(copies->aims);
     memset(copies, 0, sizeof *copies);
 }
 

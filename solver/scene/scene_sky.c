@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "lights/environment/perez_sky.h"
 #include "radiometry/constants.h"
 

@@ -18,7 +18,7 @@
 #include <stddef.h>
 
 #include "lights/emitters/emitter.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 /* The sun's mean angular diameter seen from the Earth, degrees: 2 x
  * 959.63" (the IAU 2015 nominal solar radius at 1 AU), 0.5331 degrees; as

@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "solver/scene/mesh_file.h"
 #include "solver/geometry/polygon.h"
 
@@ -217,7 +218,10 @@ static const char *naming_text(int naming)
     return naming == 1 ? "-x, +x, -y, +y, -z, +z" : "floor, walls, ceiling";
 }
 
-static cdl_status read_box_open(const cdl_scene_parse *ctx, const cJSON *node, const char *path, int *naming,
+/* "open": the faces left out, by either naming or both (a set of faces:
+ * ["-y"] is the window wall of a room whose reflectances are given as
+ * floor, walls and ceiling). */
+static cdl_status read_box_open(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
                                 cdl_surface_spec *out)
 {
     if (!node) return CDL_OK;
@@ -229,16 +233,7 @@ static cdl_status read_box_open(const cdl_scene_parse *ctx, const cJSON *node, c
         cdl_scene_json_path_index(item, path, i);
         int faces[4], count = 0, which = cJSON_IsString(e) ? box_name(e->valuestring, faces, &count) : 0;
         if (!which) return cdl_scene_json_fail(ctx, item, "a face name (-x, +x, -y, +y, -z, +z, floor, walls, ceiling)", e);
-        if (*naming && which != *naming) {
-            char exp[96];
-            snprintf(exp, sizeof exp, "one naming per box (%s)", naming_text(*naming));
-            return cdl_scene_json_fail(ctx, item, exp, e);
-        }
-        *naming = which;
-        for (int k = 0; k < count; ++k) {
-            if (out->face_open[faces[k]]) return cdl_scene_json_fail(ctx, item, "each face named once", e);
-            out->face_open[faces[k]] = 1;
-        }
+        for (int k = 0; k < count; ++k) out->face_open[faces[k]] = 1;
     }
     int all_open = 1;
     for (int f = 0; f < CDL_BOX_FACES; ++f) all_open &= out->face_open[f];
@@ -246,9 +241,14 @@ static cdl_status read_box_open(const cdl_scene_parse *ctx, const cJSON *node, c
     return CDL_OK;
 }
 
-static cdl_status read_box_reflectance(const cdl_scene_parse *ctx, const cJSON *node, const char *path, int naming,
+/* "reflectance": one number, or per face by one naming within the object
+ * (floor, walls and ceiling, or -x ... +z: "walls" and "-y" together would
+ * say the same face twice). Whatever "open" names, every named part with a
+ * closed face needs its number. */
+static cdl_status read_box_reflectance(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
                                        cdl_surface_spec *out)
 {
+    int naming = 0;
     if (!cJSON_IsObject(node)) {
         if (cdl_scene_json_read_number(ctx, node, path, CDL_RANGE_UNIT, 1, &out->reflectance) != CDL_OK) {
             /* Say that an object is allowed too. */
@@ -415,7 +415,7 @@ cdl_status cdl_scene_json_read_span(const cdl_scene_parse *ctx, const cJSON *obj
 /* ---- one surface ---------------------------------------------------------------- */
 
 static cdl_status read_geometry(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
-                                cdl_surface_spec *out, int *box_naming)
+                                cdl_surface_spec *out)
 {
     char p[CDL_SCENE_PATH_MAX];
     switch (out->kind) {
@@ -432,7 +432,7 @@ static cdl_status read_geometry(const cdl_scene_parse *ctx, const cJSON *node, c
             return cdl_scene_json_failf(ctx, (cdl_scene_json_path_key(p, path, "max"), p), "every coordinate greater than min's",
                                         "[%.10g, %.10g, %.10g] against min [%.10g, %.10g, %.10g]", out->box_max.x,
                                         out->box_max.y, out->box_max.z, out->box_min.x, out->box_min.y, out->box_min.z);
-        return read_box_open(ctx, cdl_scene_json_field(node, path, "open", p), p, box_naming, out);
+        return read_box_open(ctx, cdl_scene_json_field(node, path, "open", p), p, out);
     }
     case CDL_SURFACE_DISK:
         if (cdl_scene_json_read_vec3(ctx, cdl_scene_json_field(node, path, "normal", p), p, 1, 1, &out->normal))
@@ -498,8 +498,7 @@ cdl_status cdl_scene_json_read_surface(const cdl_scene_parse *ctx, const cJSON *
     else snprintf(what_kind, sizeof what_kind, "a %s shape", surface_types[out->kind]);
     if (cdl_scene_json_check_object(ctx, node, path, what_kind, allowed) != CDL_OK) return CDL_ERR_INPUT;
 
-    int box_naming = 0;
-    if (read_geometry(ctx, node, path, out, &box_naming) != CDL_OK) return CDL_ERR_INPUT;
+    if (read_geometry(ctx, node, path, out) != CDL_OK) return CDL_ERR_INPUT;
     if (use == CDL_SHAPE_USE_LUMINAIRE) return CDL_OK;
 
     cdl_scene_json_path_key(p, path, "name");
@@ -510,7 +509,7 @@ cdl_status cdl_scene_json_read_surface(const cdl_scene_parse *ctx, const cJSON *
     cdl_scene_json_path_key(p, path, "reflectance");
     const cJSON *rho = cdl_scene_json_member(node, "reflectance");
     if (out->kind == CDL_SURFACE_BOX) {
-        if (read_box_reflectance(ctx, rho, p, box_naming, out) != CDL_OK) return CDL_ERR_INPUT;
+        if (read_box_reflectance(ctx, rho, p, out) != CDL_OK) return CDL_ERR_INPUT;
     } else if (cdl_scene_json_read_number(ctx, rho, p, CDL_RANGE_UNIT, 1, &out->reflectance) != CDL_OK) {
         return CDL_ERR_INPUT;
     }

@@ -38,6 +38,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/error_report.h"
 #include "radiometry/bounds.h"
 #include "radiometry/constants.h"
 #include "radiometry/estimate.h"

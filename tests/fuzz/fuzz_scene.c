@@ -43,11 +43,11 @@
 #include "solver/scene/exr_image.h"
 #include "solver/grid/grid.h"
 #include "solver/output/grid_result.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_lights.h"
 #include "solver/output/solution_write.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 /* Budget of one input: points over all grids, samples per point. */
 #define FUZZ_MAX_POINTS 256
@@ -226,7 +226,7 @@ static void check_solution(const cdl_scene *scene, const cdl_solution *sol)
             if (gs->ao) require(gs->ao[i] >= 0.0 && gs->ao[i] <= 1.0, "AO in [0, 1]", name);
         }
         cdl_grid_result r;
-        cdl_grid_solution_result(gs, &scene->grids[g], &r);
+        cdl_grid_solution_result(gs, &r);
         cdl_grid_stats s;
         cdl_grid_result_stats(&r, &s);
         require(isfinite(s.E_avg_lx) && isfinite(s.E_min_lx) && isfinite(s.E_max_lx), "finite statistics", name);
@@ -414,11 +414,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     }
     shrink(scene);
-    cdl_solve_options so = CDL_SOLVE_OPTIONS_DEFAULT;
+    cdl_solve_options so = CDL_SOLVE_OPTIONS_INIT;
     so.threads = 1;
     cdl_solution sol;
     cdl_error_clear(&err);
-    st = cdl_solve_scene(scene, &so, &sol, &err);
+    st = cdl_solve_scene_into(scene, &so, NULL, &sol, &err);
     report("solve", st, &err);
     if (st != CDL_OK) {
         require(err.message[0] != '\0', "a refused solve has a message", NULL);
@@ -428,7 +428,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         check_against_rays(scene, &sol);
         st = cdl_solution_write(scene, &sol, out_dir, NULL, &err);
         require(st == CDL_OK, "a solution is written", err.message);
-        cdl_solution_release(&sol);
+        cdl_solution_clear(&sol);
         clear_folder(out_dir);
     }
     cdl_scene_release(scene);

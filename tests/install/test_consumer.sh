@@ -45,6 +45,8 @@ ies_file() {
 }
 ies_file cone "I = 1000 cd (1 - gamma / 90) below the horizontal, nothing above" "1000 0 0"
 ies_file uniform "100 cd in every direction" "100 100 100"
+ies_file uv "100 mW/sr in every direction" "100 100 100"
+sed -i 's/^\[TEST\].*/&\r\n[_INTENSITYUNITS] mW\/sr/' "$tmp/uv.ies"
 cone=$(awk 'BEGIN { printf "%.12f", 2000 * atan2(0, -1) - 4000 }')
 uniform=$(awk 'BEGIN { printf "%.12f", 400 * atan2(0, -1) }')
 
@@ -59,6 +61,8 @@ check_programs() {
   check "$label: flux of the cone table = 2000 pi - 4000 = $cone lm (got '$out')" 'close "${out% lm}" "$cone"'
   out=$(LD_LIBRARY_PATH="$L" "$dir/flux" "$tmp/uniform.ies" 2>&1); st=$?
   check "$label: flux of the uniform table = 400 pi = $uniform lm (got '$out')" '[ $st -eq 0 ] && close "${out% lm}" "$uniform"'
+  out=$(LD_LIBRARY_PATH="$L" "$dir/flux" "$tmp/uv.ies" 2>&1); st=$?
+  check "$label: flux of the table in mW/sr = 400 pi mW, in W (got '$out')" '[ $st -eq 0 ] && [[ "$out" == *" W" ]] && close "${out% W}" "$(awk "BEGIN { printf \"%.12f\", $uniform / 1000 }")"'
   out=$(LD_LIBRARY_PATH="$L" "$dir/flux" "$tmp/missing.ies" 2>&1); st=$?
   check "$label: flux of a missing file fails with a message naming it" '[ $st -eq 1 ] && [[ "$out" == *missing.ies* ]]'
   out=$(LD_LIBRARY_PATH="$L" "$dir/illuminance" 2>&1); st=$?
@@ -110,4 +114,20 @@ check "find_package(Candela): builds" '[ $st -eq 0 ]'
 check "find_package(Candela): links libcandela.so.$CANDELA_ABI_VERSION" \
   'objdump -p "$tmp/cmake/illuminance" | grep -q "NEEDED.*libcandela.so.$CANDELA_ABI_VERSION"'
 check_programs "find_package" "$tmp/cmake"
+
+# The compile-time version macros, the run-time query and the build's
+# version are one: the program prints both, the build says which it made.
+cat > "$tmp/version.c" <<'C'
+#include <stdio.h>
+#include <candela/candela.h>
+int main(void)
+{
+    printf("%d.%d.%d %s\n", CDL_VERSION_MAJOR, CDL_VERSION_MINOR, CDL_VERSION_PATCH, cdl_version());
+    return 0;
+}
+C
+(cd "$tmp" && "$CC" $san version.c $(pkg-config --cflags --libs candela) -o version); st=$?
+out=$(LD_LIBRARY_PATH="$L" "$tmp/version" 2>&1)
+check "CDL_VERSION_MAJOR.MINOR.PATCH = cdl_version() = the build's $CANDELA_PROJECT_VERSION (got '$out')" \
+  '[ $st -eq 0 ] && [ "$out" = "$CANDELA_PROJECT_VERSION $CANDELA_PROJECT_VERSION" ]'
 exit $fail

@@ -113,7 +113,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "bench_photometry: no files in %s\n", dir);
         return 1;
     }
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     int failures = 0;
     /* pass 1: read only; pass 2: read and summarise (flux, zones, beam and field angles) */
     for (int pass = 0; pass < 2; ++pass) {
@@ -125,7 +125,7 @@ int main(int argc, char **argv)
                 cdl_error err;
                 if (cdl_photometry_read_file(files[i].path, &o, &p, &err) == CDL_OK) {
                     if (pass == 1) {
-                        cdl_photometry_summary s;
+                        cdl_photometry_summary s = CDL_PHOTOMETRY_SUMMARY_INIT;
                         cdl_photometry_summarize(p, &s);
                     }
                     cdl_photometry_release(p);
@@ -150,7 +150,7 @@ int main(int argc, char **argv)
         cdl_error err;
         int ok = cdl_photometry_read_file(files[largest].path, &o, &p, &err) == CDL_OK;
         if (ok && k >= 5) {
-            cdl_photometry_summary s;
+            cdl_photometry_summary s = CDL_PHOTOMETRY_SUMMARY_INIT;
             cdl_photometry_summarize(p, &s);
         }
         double t = now() - t0;

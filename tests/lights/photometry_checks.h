@@ -7,12 +7,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "check.h"
 #include "lights/photometry/photometry.h"
 
 /* Read from a string (strict or not); NULL and a message in *err on failure. */
 static inline cdl_photometry *pc_read_text(const char *name, const char *text, size_t len, int strict, cdl_error *err)
 {
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     o.strict = strict;
     cdl_photometry *p = NULL;
     cdl_error_clear(err);
@@ -22,12 +23,28 @@ static inline cdl_photometry *pc_read_text(const char *name, const char *text, s
 
 static inline cdl_photometry *pc_read_file(const char *path, int strict, cdl_error *err)
 {
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     o.strict = strict;
     cdl_photometry *p = NULL;
     cdl_error_clear(err);
     cdl_photometry_read_file(path, &o, &p, err);
     return p;
+}
+
+/* The text of p written as EULUMDAT (ldt) or LM-63 `version`, line 11 `name`
+ * (NULL: the writer's default); NULL and a failed check when the writer fails. */
+static inline char *pc_write(const cdl_photometry *p, int ldt, int version, const char *name)
+{
+    cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
+    o.ies_version = version;
+    o.file_name = name;
+    char *text = NULL;
+    size_t len;
+    cdl_error err;
+    cdl_status st = ldt ? cdl_photometry_format_ldt(p, &o, &text, &len, NULL, &err)
+                        : cdl_photometry_format_ies(p, &o, &text, &len, NULL, &err);
+    CHECK_MSG(st == CDL_OK, "%s: %s", name ? name : "", err.message);
+    return text;
 }
 
 static inline int pc_has_warning(const cdl_photometry *p, const char *needle)

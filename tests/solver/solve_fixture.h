@@ -12,14 +12,14 @@
 
 #include "check.h"
 #include "radiometry/constants.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 /* Solve `json` (relative paths against CANDELA_TEST_TMPDIR); 0 on failure,
  * reported as a failed check. With no_exact_route set, partly hidden lights
  * are sampled even where the visible polygon would be exact (the tests of
  * the sampler). */
-static inline int fixture_solve_options(const char *json, cdl_scene **scene, cdl_solution *sol,
-                                        const cdl_solve_options *o)
+static inline int fixture_solve_debug(const char *json, cdl_scene **scene, cdl_solution *sol,
+                                      const cdl_solve_options *o, const cdl_solve_debug *debug)
 {
     cdl_error err;
     cdl_error_clear(&err);
@@ -29,7 +29,7 @@ static inline int fixture_solve_options(const char *json, cdl_scene **scene, cdl
         CHECK(0);
         return 0;
     }
-    if (cdl_solve_scene(*scene, o, sol, &err) != CDL_OK) {
+    if (cdl_solve_scene_into(*scene, o, debug, sol, &err) != CDL_OK) {
         fprintf(stderr, "solve failed: %s\n", err.message);
         CHECK(0);
         cdl_scene_release(*scene);
@@ -39,13 +39,20 @@ static inline int fixture_solve_options(const char *json, cdl_scene **scene, cdl
     return 1;
 }
 
+static inline int fixture_solve_options(const char *json, cdl_scene **scene, cdl_solution *sol,
+                                        const cdl_solve_options *o)
+{
+    return fixture_solve_debug(json, scene, sol, o, NULL);
+}
+
 static inline int fixture_solve_route(const char *json, cdl_scene **scene, cdl_solution *sol, int threads,
                                       int no_exact_route)
 {
-    cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+    cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
     o.threads = threads;
-    o.no_exact_route = no_exact_route;
-    return fixture_solve_options(json, scene, sol, &o);
+    cdl_solve_debug debug = CDL_SOLVE_DEBUG_NONE;
+    debug.no_exact_route = no_exact_route;
+    return fixture_solve_debug(json, scene, sol, &o, &debug);
 }
 
 static inline int fixture_solve(const char *json, cdl_scene **scene, cdl_solution *sol, int threads)
@@ -55,7 +62,7 @@ static inline int fixture_solve(const char *json, cdl_scene **scene, cdl_solutio
 
 static inline void fixture_release(cdl_scene *scene, cdl_solution *sol)
 {
-    cdl_solution_release(sol);
+    cdl_solution_clear(sol);
     cdl_scene_release(scene);
 }
 

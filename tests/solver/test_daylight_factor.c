@@ -175,15 +175,14 @@ static void test_refused(void)
                  "\"points\": [{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}], \"outputs\": [\"daylight_factor\"]}]}",
                  lights[k]);
         cdl_scene *scene = NULL;
-        cdl_solution sol;
-        memset(&sol, 0, sizeof sol);
+        cdl_solution *sol = NULL;
         cdl_error err;
         CHECK_OK(cdl_scene_load_string(json, "df.json", &scene, &err), &err);
-        cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+        cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
         CHECK(cdl_solve_scene(scene, &o, &sol, &err) == CDL_ERR_INPUT);
         CHECK_MSG(strstr(err.message, "df.json: grids[0].outputs: expected a scene lit by one CIE overcast sky alone"),
                   "%s", err.message);
-        cdl_solution_release(&sol);
+        cdl_solution_release(sol);
         cdl_scene_release(scene);
     }
 }

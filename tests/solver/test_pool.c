@@ -5,9 +5,10 @@
 #include <stdatomic.h>
 #include <string.h>
 
+#include "base/error_report.h"
 #include "check.h"
 #include "solver/pool.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 typedef struct squares {
     double *out;
@@ -127,18 +128,18 @@ static void test_solve_cancel(void)
     if (!scene) return;
     cdl_solution sol;
     seen all = {0, 0, 0, 0};
-    cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+    cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
     o.threads = 1;
     o.progress.fn = count_and_cancel;
     o.progress.user = &all;
-    CHECK_OK(cdl_solve_scene(scene, &o, &sol, &err), &err);
+    CHECK_OK(cdl_solve_scene_into(scene, &o, NULL, &sol, &err), &err);
     CHECK(all.calls >= 2); /* the geometry stage and the grid */
-    cdl_solution_release(&sol);
+    cdl_solution_clear(&sol);
     for (size_t stop_at = 1; stop_at <= 2; ++stop_at) {
         seen stop = {0, 0, 0, stop_at};
         o.progress.user = &stop;
         cdl_error_clear(&err);
-        CHECK(cdl_solve_scene(scene, &o, &sol, &err) == CDL_ERR_CANCELLED);
+        CHECK(cdl_solve_scene_into(scene, &o, NULL, &sol, &err) == CDL_ERR_CANCELLED);
         CHECK(strstr(err.message, "cancelled") != NULL);
         CHECK(sol.grids == NULL && sol.plan_json == NULL); /* nothing half-made is handed back */
     }

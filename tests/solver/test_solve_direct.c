@@ -10,7 +10,7 @@
 #include "lights/emitters/projected_solid_angle.h"
 #include "radiometry/constants.h"
 #include "solver/scene/exr_image.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 #include "solver/solve_fixture.h"
 
 /* Point light, no geometry: inverse-square and cosine law over angles
@@ -827,7 +827,7 @@ static void test_goniometric_tilt_and_flux(void)
 {
     const char *ies = CANDELA_SOURCE_DIR "/tests/data/photometric/ies_tilt_file.ies";
     cdl_photometry *ph = NULL;
-    cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     cdl_error err;
     CHECK_OK(cdl_photometry_read_file(ies, &opt, &ph, &err), &err);
     if (!ph) return;

@@ -17,7 +17,7 @@
 #include "solver/output/grid_result.h"
 #include "solver/output/solution_write.h"
 #include "solver/scene/exr_image.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 #include "solver/solve_fixture.h"
 
 #define I_CD 1234.5
@@ -121,7 +121,7 @@ static void test_point_source_closed_forms(void)
            worst_z, worst_sz, worst_quad);
     /* Statistics of the extra outputs come out as for E. */
     cdl_grid_result r;
-    cdl_grid_solution_result(g, &scene->grids[0], &r);
+    cdl_grid_solution_result(g, &r);
     cdl_grid_stats s;
     cdl_grid_result_stats(&r, &s);
     double mean = 0.0, lo = g->Ez[0];
@@ -434,9 +434,9 @@ static void expect_refusal(const char *json, const char *fragment)
     CHECK(cdl_scene_load_string(json, "refuse.json", &scene, &err) == CDL_OK);
     if (!scene) return;
     cdl_solution sol;
-    cdl_status st = cdl_solve_scene(scene, NULL, &sol, &err);
+    cdl_status st = cdl_solve_scene_into(scene, NULL, NULL, &sol, &err);
     CHECK_MSG(st == CDL_ERR_INPUT && strstr(err.message, fragment), "status %d, message %s", (int)st, err.message);
-    if (st == CDL_OK) cdl_solution_release(&sol);
+    if (st == CDL_OK) cdl_solution_clear(&sol);
     cdl_scene_release(scene);
 }
 
@@ -498,7 +498,7 @@ static void test_polygon_area_column(void)
         /* The triangles tile the polygon: their areas add up to it to rounding. */
         CHECK_REL(area, 12.0, 1e-12);
         cdl_grid_result r;
-        cdl_grid_solution_result(&sol.grids[0], &scene->grids[0], &r);
+        cdl_grid_solution_result(&sol.grids[0], &r);
         cdl_grid_stats s;
         cdl_grid_result_stats(&r, &s);
         CHECK_REL(weighted / area, s.E_avg_lx, 1e-13);

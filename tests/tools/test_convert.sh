@@ -28,10 +28,11 @@ check "bad input: exit 1, message, no output" '[ $st -eq 1 ] && [[ "$err" == *"b
 err=$("$CANDELA" convert "$fix/iso_1000cd.ies" "$tmp/no/such/dir/out.ldt" 2>&1); st=$?
 check "unwritable output: exit 1 naming it" '[ $st -eq 1 ] && [[ "$err" == *"no/such/dir/out.ldt"* ]]'
 
-# IES -> EULUMDAT -> IES keeps the light, flux x output factor (to the ten
-# digits the writers print): a ballast factor EULUMDAT cannot hold is folded
-# into its lamp flux, so the table's own flux takes it on.
-light() { awk -v f="$(json_number "$1" flux_lm)" -v k="$(json_number "$1" output_factor)" 'BEGIN { printf "%.17g", f * k }'; }
+# IES -> EULUMDAT -> IES keeps the light (to the ten digits the writers
+# print): `info` reports the luminaire's flux, the table times its output
+# factor, and a ballast factor EULUMDAT cannot hold is folded into its lamp
+# flux, so the same luminaire reads the same before and after.
+light() { json_number "$1" flux_lm; }
 for f in iso_1000cd.ies ies_1986_one_per_line.ies ies_crlf_latin1_ctrlz.ies asym_h90_peak.ies ldt_comma_blank_crlf.ldt; do
   base=${f%.*}
   case $f in *.ldt) a=ies; b=ldt ;; *) a=ldt; b=ies ;; esac
@@ -99,4 +100,13 @@ IES
 check "test lab: IES -> EULUMDAT -> IES converts" '[ $st -eq 0 ]'
 check "test lab: EULUMDAT carries report number and date with the lab" 'grep -q "^REPORT-4711" "$tmp/lab.ldt" && grep -q "^2026-03-14, test lab: Independent Photometry Lab GmbH" "$tmp/lab.ldt"'
 check "test lab: back in IES as [TEST], [TESTLAB], [ISSUEDATE]" 'grep -q "^\[TEST\] REPORT-4711" "$tmp/lab2.ies" && grep -q "^\[TESTLAB\] Independent Photometry Lab GmbH" "$tmp/lab2.ies" && grep -q "^\[ISSUEDATE\] 2026-03-14" "$tmp/lab2.ies"'
+# IES -> EULUMDAT names every keyword EULUMDAT has no field for, each once,
+# and counts them ([MORE] continues the keyword before it)
+sed '5a [LAMPCAT] LC-1\n[BALLAST] electronic\n[OTHER] first note\n[MORE] its second line\n[OTHER] second note\n[_SEARCH_COLOUR] white' "$tmp/lab.ies" > "$tmp/kw.ies"
+err=$("$CANDELA" convert "$tmp/kw.ies" "$tmp/kw.ldt" 2>&1 >/dev/null); st=$?
+check "IES -> EULUMDAT names each lost keyword ($err)" '[ $st -eq 0 ] && [[ "$err" == *"EULUMDAT cannot hold: 5 IES keywords with no EULUMDAT field: [LAMPCAT], [BALLAST], [OTHER], [_SEARCH_COLOUR]"* ]]'
+check "IES -> EULUMDAT: the direct ratios computed, not 0 (line 27, k = 0.6)" '[ "$(sed -n 27p "$tmp/kw.ldt" | tr -d "\r")" != 0 ] && [[ "$err" != *"direct ratios"* ]]'
+# the input's warnings are passed on with their codes
+err=$("$CANDELA" convert "$fix/warn_seam.ies" "$tmp/seam.ldt" 2>&1 >/dev/null); st=$?
+check "the input's warnings on stderr with their codes" '[ $st -eq 0 ] && [[ "$err" == *"candela convert: warning: [seam-differs] "*"H = 360"* ]]'
 exit $fail

@@ -3,10 +3,13 @@
 # at draft quality here, under --strict: no luminaire lights nothing, no
 # grid is dark. What each shows is checked against its own inputs: the
 # classroom's installed power (12 linear luminaires of 36 W and 2 board
-# lights of 20 W, from their files) over its 8 x 6 m work plane; the
+# lights of 20 W, from their files) over its 8 x 6 m work plane, and its
+# observers' glare in glare.csv; the
 # corridor's polygon floor, whose area_m2 column adds up to its area
 # (24 x 2.4 + 2.4 x 5.6 m^2); the yard's cylindrical and semicylindrical
-# columns and its luminance on the ground (L = rho E / pi, rho 0.15).
+# columns and its luminance on the ground (L = rho E / pi, rho 0.15). The
+# README's complete scene solves too, its downlights (an array in world
+# axes, turned 90 degrees) all inside the room, over the work plane.
 # ctest-timeout: 300
 source "$(dirname "$0")/harness.sh"
 json() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))" "$@"; }
@@ -26,6 +29,23 @@ json.dump(d, open(dst, "w"), indent=1)
 PY
 }
 
+# The README's scene, as a user would save it at the top of the repository.
+python3 - "$CANDELA_SOURCE_DIR/README.md" "$tmp/readme_scene.json" "$CANDELA_SOURCE_DIR" <<'PY'
+import json, os, re, sys
+text = open(sys.argv[1]).read()
+block = re.search(r"A complete scene:.*?```json\n(.*?)```", text, re.S).group(1)
+d = json.loads(block)
+for l in d["luminaires"]:
+    if "file" in l: l["file"] = os.path.join(sys.argv[3], l["file"])
+d["solver"]["quality"] = "draft"
+json.dump(d, open(sys.argv[2], "w"), indent=1)
+PY
+check "README scene: extracted" '[ -s "$tmp/readme_scene.json" ]'
+"$CANDELA" solve "$tmp/readme_scene.json" -o "$tmp/readme" --quiet --strict > /dev/null 2> "$tmp/readme.err"; st=$?
+check "README scene: solves under --strict" '[ $st -eq 0 ]' || cat "$tmp/readme.err"
+check "README scene: all 6 downlights over the work plane (world-axis rows inside the room)" \
+  '[ "$(json "$tmp/readme/summary.json" "d[\"grids\"][\"workplane\"][\"luminaires_over\"]")" = 6 ]'
+
 for name in classroom corridor yard; do
   scene="$CANDELA_SOURCE_DIR/data/$name/$name.json"
   check "$name: the example exists" '[ -s "$scene" ]'
@@ -36,6 +56,10 @@ done
 
 check "classroom: installed power 12 x 36 W + 2 x 20 W from the files" '[ "$(json "$tmp/classroom/summary.json" "d[\"power\"][\"installed_w\"]")" = 472 ]'
 check "classroom: W/m2 over the 48 m2 work plane" '[ "$(json "$tmp/classroom/summary.json" "abs(d[\"grids\"][\"workplane\"][\"power_density_w_m2\"] - 472 / 48) < 1e-9")" = True ]'
+check "classroom: its two observers rated for glare (glare.csv: pupil and teacher with a UGR each)" 'python3 -c "
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert [r[\"name\"] for r in rows] == [\"pupil\", \"teacher\"] and all(float(r[\"ugr\"]) > 10 for r in rows)" "$tmp/classroom/glare.csv"'
 check "classroom: the board is lit by its aimed lights" '[ "$(json "$tmp/classroom/summary.json" "d[\"grids\"][\"board\"][\"E_min_lx\"] > 0")" = True ]'
 check "corridor: area_m2 adds up to the floor (71.04 m2)" 'python3 -c "
 import csv, sys

@@ -52,7 +52,7 @@ tmp=$(mktemp -d)
 # and JSON, the height their mean
 sed -e '17s/.*/40/' -e '18s/.*/10/' -e '19s/.*/20/' -e '20s/.*/10/' -e '21s/.*/20/' "$fix/warn_lorl.ldt" > "$tmp/sides.ldt"
 out=$("$CANDELA" info "$tmp/sides.ldt"); st=$?
-check "sides of their own heights shown" '[ $st -eq 0 ] && [[ "$out" == *"rectangle with luminous sides, 0.09 x 0.04 x 0.015 m"* ]] && [[ "$out" == *"sides luminous to 0.01 (C0), 0.02 (C90), 0.01 (C180), 0.02 (C270) m"* ]]'
+check "sides of their own heights shown" '[ $st -eq 0 ] && [[ "$out" == *"rectangle with luminous sides, length 90 mm (along C90-C270) x width 40 mm (along C0-C180), luminous height 15 mm (EULUMDAT lines 16-21)"* ]] && [[ "$out" == *"sides luminous to 0.01 (C0), 0.02 (C90), 0.01 (C180), 0.02 (C270) m"* ]]'
 out=$("$CANDELA" info --json "$tmp/sides.ldt"); st=$?
 check "sides of their own heights in JSON" '[ $st -eq 0 ] && [[ "$(echo "$out" | tr -d " \t\n")" == *"\"side_heights_m\":[0.01,0.02,0.01,0.02]"* ]]'
 sed '2s/.*/x/' "$fix/ldt_comma_blank_crlf.ldt" > "$tmp/ityp.ldt"
@@ -83,4 +83,13 @@ check "--strict: output ratio above 1" '[ $st -eq 1 ]'
 check "--strict passes a clean file" '[ $st -eq 0 ]'
 out=$("$CANDELA" info --json --strict "$fix/warn_seam.ies" 2>/dev/null); st=$?
 check "--json with --strict on a warning: exit 1, no JSON" '[ $st -eq 1 ] && [ -z "$out" ]'
+# Warning codes: `info --help` points to the list, and the list
+# (docs/photometry-warnings.md) names every code the library can give and
+# no other (codes are the second argument of cdl_photometry_add_warning).
+out=$("$CANDELA" info --help)
+check "--help points to the list of warning codes" '[[ "$out" == *"docs/photometry-warnings.md"* ]]'
+doc="$CANDELA_SOURCE_DIR/docs/photometry-warnings.md"
+codes=$(grep -rhoz 'cdl_photometry_add_warning([^,]*,[[:space:]]*"[a-z0-9-]*"' "$CANDELA_SOURCE_DIR/lights" | tr '\0' '\n' | grep -o '"[a-z0-9-]*"$' | tr -d '"' | sort -u)
+listed=$(grep -o '^| `[a-z0-9-]*`' "$doc" | tr -d '|` ' | sort -u)
+check "the list names every code given ($(echo $codes | wc -w) codes)" '[ -n "$codes" ] && [ "$codes" = "$listed" ]' || { echo "given:  " $codes; echo "listed: " $listed; }
 exit $fail

@@ -67,8 +67,9 @@ ies "$tmp/mult.ies" 73.052119 1000 1.32 20
 check "multiplier explains the mismatch: said with the flux without it" '"$CANDELA" info "$tmp/mult.ies" | grep -q "output ratio above 1: the table integrates to 1211.76 lm, 121.2 % of the rated lamp flux 1000 lm (expected at most 100 %); the table integrates to 918 lm without the 1.32 multiplier"'
 
 # 5. The polar diagram: valid SVG; the isotropic source's curves are circles
-# of I x 1000 / flux = 1000 x 1000 / (4000 pi) = 79.58 cd/klm on a ring
-# scale of 100: radius 220 x 0.7958 = 175.07 units around (280, 300)
+# of I x 1000 / flux = 1000 x 1000 / (4000 pi) = 79.58 cd/klm on rings
+# fitted to it (4 of 20, up to 80): radius 220 x 79.58 / 80 = 218.84 units
+# around (280, 300)
 # (cairo writes coordinates to 1/256 of a unit).
 "$CANDELA" info --plot "$tmp/iso.svg" "$data/iso_1000cd.ies" > /dev/null; st=$?
 check "--plot: exit 0, valid SVG" '[ $st -eq 0 ] && xmllint --noout "$tmp/iso.svg"'
@@ -82,9 +83,9 @@ for plane, colour in (("c0-c180", "rgb(80%,0%,0%)"), ("c90-c270", "rgb(0%,0%,80%
     r = [math.hypot(x - 280, y - 300) for x, y in zip(nums[0::2], nums[1::2])]
     print(plane, len(r), min(r), max(r))
 PY
-check "--plot: both planes, 361 points each, a circle of radius 175.07 (to 0.01)" 'python3 -c "
+check "--plot: both planes, 361 points each, a circle of radius 218.84 (to 0.01)" 'python3 -c "
 import sys
-want = 220 * 1000 * 1000 / (4000 * 3.141592653589793) / 100
+want = 220 * 1000 * 1000 / (4000 * 3.141592653589793) / 80
 rows = [l.split() for l in open(sys.argv[1])]
 assert [r[0] for r in rows] == [\"c0-c180\", \"c90-c270\"] and all(r[1] == \"361\" for r in rows)
 assert all(abs(float(r[2]) - want) < 0.01 and abs(float(r[3]) - want) < 0.01 for r in rows), (rows, want)" "$tmp/radii.txt"'

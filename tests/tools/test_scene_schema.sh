@@ -37,8 +37,10 @@ while read -r line; do
 done < "$tmp/examples.txt"
 check "every example checked" '[ $(wc -l < "$tmp/examples.txt") -eq ${#scenes[@]} ]'
 
-# Scenes the loader refuses (a typo, two placements, a bad output, a range)
-# are refused by the schema as well.
+# Scenes the loader refuses (a typo, two placements, a bad output, a range;
+# an observer's unknown key, missing view, eye and positions both, a limit
+# of 0, an empty observer grid, no grid and no observer) are refused by
+# the schema as well.
 base='"version": 1, "grids": [{"name": "g", "type": "points", "points": [{"p": [0,0,0], "n": [0,0,1]}]}]'
 bad=(
   '{'"$base"', "luminaires": [{"type": "point", "positon": [0,0,3], "intensity_cd": 1}]}'
@@ -49,6 +51,12 @@ bad=(
   '{'"$base"', "surfaces": [{"type": "rect", "origin": [0,0,0], "u": [1,0,0], "v": [0,1,0], "reflectance": 1.5}]}'
   '{'"$base"', "solver": {"quality": "best"}}'
   '{"version": 2, "grids": [{"name": "g", "type": "points", "points": [{"p": [0,0,0], "n": [0,0,1]}]}]}'
+  '{"version": 1, "observers": [{"name": "o", "eye": [0,0,1.2], "view": [0,1,0], "look": 1}]}'
+  '{"version": 1, "observers": [{"name": "o", "eye": [0,0,1.2]}]}'
+  '{"version": 1, "observers": [{"name": "o", "eye": [0,0,1.2], "positions": [[0,0,1.2]], "view": [0,1,0]}]}'
+  '{"version": 1, "observers": [{"name": "o", "eye": [0,0,1.2], "view": [0,1,0], "requirements": {"UGR_L": 0}}]}'
+  '{"version": 1, "grids": [{"name": "m", "type": "observers", "origin": [0,0,1.2], "u": [1,0,0], "v": [0,1,0], "nu": 0, "nv": 1, "view": [0,1,0]}]}'
+  '{"version": 1, "observers": []}'
 )
 for i in "${!bad[@]}"; do
   printf '%s\n' "${bad[$i]}" > "$tmp/bad$i.json"

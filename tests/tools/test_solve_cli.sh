@@ -21,7 +21,7 @@ check "no temporary files left" '[ -z "$(ls "$out" | grep -F .tmp.)" ]'
 
 header=$(head -n 1 "$out/workplane.csv")
 check "CSV header as DESIGN.md" '[ "$header" = "x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx" ]'
-check "AO column when asked" '[ "$(head -n 1 "$out/north_wall.csv")" = "x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx,AO" ]'
+check "AO and its error when asked" '[ "$(head -n 1 "$out/north_wall.csv")" = "x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx,AO,AO_stderr" ]'
 rows=$(($(wc -l < "$out/workplane.csv") - 1))
 check "one row per point (20 x 12)" '[ $rows -eq 240 ]'
 check "PNG signature" '[ "$(head -c 8 "$out/workplane.png" | od -An -tx1 | tr -d " \n")" = "89504e470d0a1a0a" ]'

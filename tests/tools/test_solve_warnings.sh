@@ -3,7 +3,10 @@
 # above the ceiling, millimetres typed into a scene in metres), a dark grid
 # and a scene without light are named on stderr and in summary.json's
 # "warnings"; --strict refuses them (exit 1, no results). Installed power
-# and W/m2 from the luminaire files' input watts, times the copies placed.
+# and W/m2 from the luminaire files' input watts, times the copies placed,
+# per grid of the luminaires over it. No false alarms: a luminaire that
+# lights every point through its near field only, a luminaire 2 m above a
+# one-point grid in an empty scene.
 # ctest-timeout: 300
 source "$(dirname "$0")/harness.sh"
 cp "$CANDELA_SOURCE_DIR/data/office/downlight.ies" "$tmp/"
@@ -70,6 +73,50 @@ check "power: W/m2 over the 16 m2 grid" '[ "$(json "$tmp/power/summary.json" "ab
 check "power: printed" 'grep -q "installed power $((12 * ${watts%.*})) W (12 luminaires)" "$tmp/power.out"'
 # A point light has no wattage: no total, and the reason.
 check "power unknown: null with why" '[ "$(json "$tmp/shade/summary.json" "d[\"power\"][\"installed_w\"]")" = None ] && grep -q "not every luminaire" "$tmp/shade/summary.json"'
+
+# 6. Power density belongs to the grid the luminaires hang over: two rooms
+# side by side, each 4 x 4 m, 12 downlights over the first, 4 over the
+# second; each work plane's W/m2 counts only its own (the whole scene's
+# 16 x the file's watts over one room's area was the old, wrong figure).
+solve rooms '{"version": 1, "luminaires": [
+  {"type": "goniometric", "file": "downlight.ies", "position": [0.5,0.5,2.95], "array": {"counts": [4,3], "spacing": [1,1.5]}},
+  {"type": "goniometric", "file": "downlight.ies", "position": [5,1,2.95], "array": {"counts": [2,2], "spacing": [2,2]}}],
+  "grids": [{"name": "a", "type": "rect", "origin": [0,0,0.8], "u": [4,0,0], "v": [0,4,0], "nu": 4, "nv": 4},
+            {"name": "b", "type": "polygon", "vertices": [[4,0,0.8],[8,0,0.8],[8,4,0.8],[4,4,0.8]], "spacing": 1},
+            {"name": "wall", "type": "rect", "origin": [0,0,0], "u": [0,0,3], "v": [8,0,0], "nu": 2, "nv": 4}],
+  "solver": {"method": "direct"}}'; st=$?
+check "rooms: exit 0" '[ $st -eq 0 ]'
+check "rooms: a counts its own 12 luminaires, 12 x $watts W over 16 m2" '[ "$(json "$tmp/rooms/summary.json" "d[\"grids\"][\"a\"][\"luminaires_over\"] == 12 and abs(d[\"grids\"][\"a\"][\"power_density_w_m2\"] - 12 * $watts / 16) < 1e-9")" = True ]'
+check "rooms: b (a polygon) counts its own 4, 4 x $watts W over 16 m2" '[ "$(json "$tmp/rooms/summary.json" "d[\"grids\"][\"b\"][\"luminaires_over\"] == 4 and abs(d[\"grids\"][\"b\"][\"power_density_w_m2\"] - 4 * $watts / 16) < 1e-9")" = True ]'
+check "rooms: the wall has no luminaire over it, so no W/m2" '[ "$(json "$tmp/rooms/summary.json" "d[\"grids\"][\"wall\"][\"luminaires_over\"] == 0 and \"power_density_w_m2\" not in d[\"grids\"][\"wall\"]")" = True ]'
+check "rooms: the scene's installed power is all 16" '[ "$(json "$tmp/rooms/summary.json" "abs(d[\"power\"][\"installed_w\"] - 16 * $watts) < 1e-9")" = True ]'
+
+# 7. A luminaire whose light reaches every point through its opening (a
+# box with luminous sides, 0.62 m, 2.95 m up over a 6 x 4 m room: every
+# point within its near-field distance) lights the grid: no warning, and
+# --strict solves it.
+# (an LM-63-2002 file: W L H = 0.62 0.62 0.06 m, positive: a box with
+# luminous sides; I = 1000 cos(gamma) cd below the horizontal, as the
+# PERLUCE of the corpus is shaped)
+python3 - "$tmp/perluce.ies" <<'PY'
+import math, sys
+rows = ["IESNA:LM-63-2002", "[TEST] box with luminous sides", "TILT=NONE",
+        "1 -1 1 19 1 1 2 0.62 0.62 0.06", "1 1 42",
+        " ".join(str(10 * g) for g in range(19)), "0",
+        " ".join("%.6g" % (1000 * math.cos(math.radians(10 * g)) if g < 9 else 0) for g in range(19))]
+open(sys.argv[1], "w").write("\n".join(rows) + "\n")
+PY
+solve perluce '{"version": 1, "surfaces": [{"type": "box", "min": [0,0,0], "max": [6,4,3], "inward": true, "reflectance": 0}],
+  "luminaires": [{"type": "goniometric", "file": "perluce.ies", "position": [3,2,2.95]}],
+  "grids": [{"name": "work", "type": "rect", "origin": [0,0,0.8], "u": [6,0,0], "v": [0,4,0], "nu": 6, "nv": 4}],
+  "solver": {"method": "direct", "quality": "draft"}}' --strict; st=$?
+check "near field only: --strict solves it (exit 0), no warning" '[ $st -eq 0 ] && ! grep -q "adds nothing" "$tmp/perluce.err"'
+
+# 8. A luminaire 2 m above a one-point grid in an empty scene is not
+# millimetres, and --strict does not refuse it.
+solve probe '{"version": 1, "luminaires": [{"type": "goniometric", "file": "downlight.ies", "position": [0,0,2]}],
+  "grids": [{"name": "p", "type": "points", "points": [{"p": [0,0,0], "n": [0,0,1]}]}], "solver": {"method": "direct"}}' --strict; st=$?
+check "one probe 2 m under a luminaire: solved under --strict, nothing about millimetres" '[ $st -eq 0 ] && ! grep -q "millimetres" "$tmp/probe.err"'
 
 # The map's scale: linear by default, logarithmic on request, said in the PNG's description.
 check "map: linear by default" 'grep -aq "floor: illuminance in lux, false colour on a linear scale" "$tmp/power/floor.png"'

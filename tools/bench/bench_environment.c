@@ -40,7 +40,7 @@
 #include "solver/scene/exr_image.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_lights.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 #define MAX_SAMPLES 67108864.0 /* 2^26: a point that needs more stops there (reported) */
 
@@ -247,12 +247,13 @@ int main(int argc, char **argv)
      * point short of the target its stated sigma is larger: reported. */
     double us[2] = {0.0, 0.0};
     for (int route_off = 1; route_off >= 0; --route_off) {
-        cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+        cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
         o.threads = 1;
-        o.no_exact_route = route_off;
+        cdl_solve_debug dbg = CDL_SOLVE_DEBUG_NONE;
+        dbg.no_exact_route = route_off;
         cdl_solution sol;
         double t3 = now_seconds();
-        if (cdl_solve_scene(scene, &o, &sol, &err) != CDL_OK) {
+        if (cdl_solve_scene_into(scene, &o, &dbg, &sol, &err) != CDL_OK) {
             fprintf(stderr, "bench_environment: %s\n", err.message);
             return 3;
         }
@@ -269,7 +270,7 @@ int main(int argc, char **argv)
                route_off ? "off (E0 - H, rays)  " : "on (visible sky)   ", us[route_off], (double)sol.rays / points,
                mean, worst, capped_points(sol.plan_json));
         if (!route_off) printf("  plan: %s\n", route_text(sol.plan_json));
-        cdl_solution_release(&sol);
+        cdl_solution_clear(&sol);
     }
     printf("ratio route off / on: time %.2f\n", us[1] / us[0]);
     cdl_scene_lights_release(&lights);

@@ -19,7 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 static const char *arg_str(int argc, char **argv, const char *name, const char *dflt)
 {
@@ -50,12 +50,13 @@ static int run(const char *label, const char *file, const char *quality, int thr
     scene->settings.quality = (cdl_quality)q;
     cdl_solution sol[2];
     for (int r = 0; r < 2; ++r) {
-        cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+        cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
         o.threads = threads;
-        o.no_exact_route = r == 0;
-        if (cdl_solve_scene(scene, &o, &sol[r], &err) != CDL_OK) {
+        cdl_solve_debug dbg = CDL_SOLVE_DEBUG_NONE;
+        dbg.no_exact_route = r == 0;
+        if (cdl_solve_scene_into(scene, &o, &dbg, &sol[r], &err) != CDL_OK) {
             fprintf(stderr, "bench_exact_route: %s\n", err.message);
-            if (r == 1) cdl_solution_release(&sol[0]);
+            if (r == 1) cdl_solution_clear(&sol[0]);
             cdl_scene_release(scene);
             return 1;
         }
@@ -77,8 +78,8 @@ static int run(const char *label, const char *file, const char *quality, int thr
     printf("  ratio sampled / exact time: %.1f\n", ts / tx);
     printf("  sampled against exact: %zu of %zu within 2 stated sigma, worst %.3g sigma, worst %.3g relative\n",
            within, n, worst_sigma, worst_rel);
-    cdl_solution_release(&sol[0]);
-    cdl_solution_release(&sol[1]);
+    cdl_solution_clear(&sol[0]);
+    cdl_solution_clear(&sol[1]);
     cdl_scene_release(scene);
     return 0;
 }

@@ -31,7 +31,7 @@
 #include <string.h>
 
 #include "solver/bench/bench_ladder.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 static const char *arg_str(int argc, char **argv, const char *name, const char *dflt)
 {
@@ -130,7 +130,7 @@ int main(int argc, char **argv)
             r->target = targets[k];
             if (solve(scene, methods[m], targets[k], threads, &sol)) return 1;
             cdl_bench_rung_measure(&sol, &ref, NULL, r);
-            cdl_solution_release(&sol);
+            cdl_solution_clear(&sol);
             printf("%-10s %7.2f%% %9.2f %12llu %8llu %8.3f%% %8.2f%% %8.1f%%\n", method_name(r->method),
                    100.0 * r->target, r->seconds, (unsigned long long)r->rays, (unsigned long long)r->records, 100.0 * r->rms, 100.0 * r->worst,
                    100.0 * r->within2);
@@ -155,9 +155,9 @@ int main(int argc, char **argv)
         same &= memcmp(one.grids[g].E, all.grids[g].E, one.grids[g].grid.count * sizeof(double)) == 0;
     printf("icache at normal: 1 thread %.2f s, %d threads %.2f s, speed-up %.2f (%s bytes)\n", one.seconds,
            all.threads_used, all.seconds, one.seconds / all.seconds, same ? "same" : "DIFFERENT");
-    cdl_solution_release(&one);
-    cdl_solution_release(&all);
-    cdl_solution_release(&ref);
+    cdl_solution_clear(&one);
+    cdl_solution_clear(&all);
+    cdl_solution_clear(&ref);
     cdl_scene_release(scene);
     return same ? 0 : 1;
 }

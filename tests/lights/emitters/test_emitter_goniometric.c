@@ -219,7 +219,7 @@ static void test_file_factors(void)
 {
     cdl_photometry *ph = NULL;
     cdl_error err;
-    cdl_photometry_read_options opts = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options opts = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     CHECK_OK(cdl_photometry_read_memory(tilted_ies, sizeof tilted_ies - 1, "tilted.ies", &opts, &ph, &err), &err);
     if (!ph) return;
     CHECK_REL(cdl_photometry_output_factor(ph), 0.9, 1e-15);

@@ -12,6 +12,7 @@
 #include "ellipse_segment.h"
 #include "lights/emitters/emitter.h"
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 #include "radiometry/constants.h"
 
 /* ---- photometric files in memory ------------------------------------------ */
@@ -37,7 +38,7 @@ static cdl_photometry *make_ies_planes(const char *version, double W, double L, 
         n += (size_t)snprintf(s + n, cap - n, "\n");
     }
     cdl_photometry *ph = NULL;
-    cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     cdl_error err;
     CHECK_OK(cdl_photometry_read_memory(s, n, "near.ies", &opt, &ph, &err), &err);
     free(s);

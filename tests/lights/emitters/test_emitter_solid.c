@@ -22,6 +22,7 @@
 #include "sphere_factor.h"
 #include "lights/emitters/emitter.h"
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 
@@ -50,7 +51,7 @@ static cdl_photometry *solid_file(double W, double L, double H, table_fn f, doub
             used += (size_t)snprintf(text + used, cap - used, "%.17g ", f(c * c_step, (double)g));
     }
     cdl_photometry *ph = NULL;
-    cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     cdl_error err;
     CHECK_OK(cdl_photometry_read_memory(text, used, "solid.ies", &opt, &ph, &err), &err);
     free(text);
@@ -739,7 +740,7 @@ static void test_sign_codes(void)
         snprintf(text, sizeof text, "%s\n[TEST] code\nTILT=NONE\n1 -1 1 2 1 1 2 %s\n1 1 10\n0 90\n0\n10 5\n", codes[m].tag,
                  codes[m].wlh);
         cdl_photometry *ph = NULL;
-        cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+        cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
         cdl_error err;
         CHECK_OK(cdl_photometry_read_memory(text, strlen(text), "code.ies", &opt, &ph, &err), &err);
         if (!ph) continue;
@@ -851,7 +852,7 @@ static cdl_photometry *sides_file(void)
             n += (size_t)snprintf(t + n, cap - n, "%.17g\n", LUM * sides_projected_area(w));
         }
     cdl_photometry *ph = NULL;
-    cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options opt = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     cdl_error err;
     CHECK_OK(cdl_photometry_read_memory(t, n, "sides.ldt", &opt, &ph, &err), &err);
     free(t);

@@ -9,6 +9,7 @@
 #include "check.h"
 #include "lights/photometry_checks.h"
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 #include "radiometry/constants.h"
 
 #define FIXTURES CANDELA_SOURCE_DIR "/tests/data/photometric/"
@@ -113,7 +114,7 @@ static void test_tilt(void)
     char buf[4096];
     size_t n = f ? fread(buf, 1, sizeof buf, f) : 0;
     if (f) fclose(f);
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     o.no_external_files = 1;
     p = NULL;
     CHECK(cdl_photometry_read_memory(buf, n, path, &o, &p, &err) == CDL_ERR_INPUT && !p);

@@ -10,6 +10,7 @@
 #include "check.h"
 #include "lights/photometry_checks.h"
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 #include "radiometry/constants.h"
 
 #define FIXTURES CANDELA_SOURCE_DIR "/tests/data/photometric/"
@@ -140,7 +141,7 @@ static void test_units_and_lamp_sets(void)
         CHECK(strcmp(m->lamp_sets[1].type, "Lamp 2") == 0);
         /* 300 cd everywhere: 4 pi 300 lm, LOR = 1200 pi / 1500 */
         cdl_photometry_summary sum;
-        cdl_photometry_summarize(p, &sum);
+        cdl_photometry_summary_compute(p, &sum);
         CHECK(sum.lor_known);
         CHECK_REL(sum.lor, 1200.0 * CDL_PI / 1500.0, 1e-12);
         cdl_photometry_release(p);
@@ -157,7 +158,7 @@ static void test_units_and_lamp_sets(void)
         CHECK(m->absolute && m->rated_lamp_flux_lm == 0.0);
         CHECK_REL(cdl_photometry_intensity_c_gamma(p, 0.0, 0.0).cd, 150.0, 1e-15);
         cdl_photometry_summary sum;
-        cdl_photometry_summarize(p, &sum);
+        cdl_photometry_summary_compute(p, &sum);
         CHECK(!sum.lor_known && !sum.lamp_flux_known);
         cdl_photometry_release(p);
     }
@@ -212,7 +213,7 @@ static void test_irregular_and_partial(void)
 
 static void test_fixtures(void)
 {
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     o.strict = 1;
     cdl_photometry *p = NULL;
     cdl_error err;

@@ -11,6 +11,7 @@
 #include "check.h"
 #include "lights/photometry_checks.h"
 #include "lights/photometry/photometry.h"
+#include "lights/photometry/photometry_metadata.h"
 #include "radiometry/constants.h"
 
 #define FIXTURES CANDELA_SOURCE_DIR "/tests/data/photometric/"
@@ -45,7 +46,7 @@ static double asym(double c, double g) { return 200.0 + 80.0 * sin(c * CDL_DEG_T
 
 static char *format(const cdl_photometry *p, int ldt, int version, cdl_photometry_notes *notes)
 {
-    cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT;
+    cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
     o.ies_version = version;
     o.file_name = "out.ldt";
     char *text = NULL;
@@ -213,7 +214,7 @@ static void test_gamma_padding(void)
 
 static void test_factors_tilt_absolute(void)
 {
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     cdl_photometry *p = NULL;
     cdl_error err;
     /* 1995 with ballast factor 0.9 and ballast-lamp factor 0.95: folded into 0.855 */
@@ -371,7 +372,7 @@ static void test_write_file(void)
     CHECK_OK(cdl_photometry_write_file(p, TMP "/out.ldt", CDL_PHOTOMETRY_FORMAT_EULUMDAT, NULL, NULL, &err), &err);
     /* replaced in place, no temporary left behind */
     CHECK(count_entries(TMP) == 1);
-    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_DEFAULT;
+    cdl_photometry_read_options o = CDL_PHOTOMETRY_READ_OPTIONS_INIT;
     cdl_photometry *q = NULL;
     CHECK_OK(cdl_photometry_read_file(TMP "/out.ldt", &o, &q, &err), &err);
     if (q) {

@@ -13,6 +13,7 @@
 
 #include "check.h"
 #include "lights/photometry_checks.h"
+#include "lights/photometry/photometry_metadata.h"
 
 #define DIR_ CANDELA_PHOTOMETRIC_DIR
 
@@ -35,7 +36,8 @@ static const expectation expected[] = {
     {"ies_1995_mult_eq_lumens.ies", NULL, NULL, NULL},
     {"ies_1995_quad_91x37.ies", NULL, NULL, NULL},
     {"ies_2002_tabs_bilateral.ies", NULL, NULL, NULL},
-    {"ies_CRonly_big.ies", NULL, "far from the luminaire flux 91.6 lm", NULL}, /* radiometric table, lumen keyword */
+    /* radiometric table, a lumen keyword read in its unit */
+    {"ies_CRonly_big.ies", NULL, "radiant flux 121.138 mW is far from the luminaire flux 91.6 mW stated in [_TOTALLUMINAIRELUMENS]", NULL},
     {"ies_archive_full_mult0667.ies", NULL, NULL, NULL},
     {"ies_dlip_1995_ellipsoid.ies", NULL, NULL, NULL},
     {"ies_dlip_1995_relative_mult.ies", NULL, "output ratio above 1", NULL},
@@ -82,7 +84,9 @@ static const expectation expected[] = {
     {"ies_ruco_2002_circle.ies", NULL, NULL, NULL},
     {"ldt_avad_Isym4.ldt", NULL, NULL, NULL},
     {"ldt_bega_Isym1_absolute.ldt", NULL, NULL, NULL},
-    {"ldt_dlip_Isym3_synthetic.ldt", NULL, "stated light output ratio LORL 100 %", NULL},
+    /* Ityp 1 (rotationally symmetric) over Isym 3 data whose C90 and C270 planes differ */
+    {"ldt_dlip_Isym3_synthetic.ldt", NULL, "stated light output ratio LORL 100 %",
+     "Ityp 1 (a point source symmetric about the vertical axis) is contradicted by the data"},
     {"ldt_dlip_MALFORMED_truncated.ldt", "expected 949 numbers", NULL, NULL},
     {"ldt_dlip_three_lamp_sets.ldt", NULL, "stated light output ratio LORL 100 %", NULL},
     {"ldt_eurs_wiki_batwing_badLORL.ldt", NULL, "output ratio above 1", "stated light output ratio LORL 85 %"},
@@ -161,12 +165,24 @@ static void test_every_file(void)
             strict = pc_read_file(path, 1, &err);
             CHECK_MSG((strict == NULL) == (want > 0), "%s: --strict", x->file);
             cdl_photometry_release(strict);
-            /* every figure of the summary is finite */
+            /* every figure of the summary is finite: luminous ones, or radiant ones for a file in W/sr */
             cdl_photometry_summary s;
-            cdl_photometry_summarize(p, &s);
-            CHECK_MSG(isfinite(s.flux.lm) && s.flux.lm > 0.0 && isfinite(s.downward_fraction) &&
-                          isfinite(s.max_intensity.cd) && isfinite(s.beam_angle_deg[0]) && isfinite(s.lor),
+            cdl_photometry_summary_compute(p, &s);
+            double flux = s.radiometric ? s.radiant_flux.W : s.flux.lm;
+            double peak = s.radiometric ? s.max_radiant_intensity.W_sr : s.max_intensity.cd;
+            CHECK_MSG(isfinite(flux) && flux > 0.0 && isfinite(s.downward_fraction) && isfinite(peak) &&
+                          isfinite(s.beam_angle_deg[0]) && isfinite(s.lor),
                       "%s: summary", x->file);
+            /* every warning has a code and, when it names a line, the message names it too */
+            for (size_t w = 0; w < cdl_photometry_warning_count(p); ++w) {
+                const char *code = cdl_photometry_warning_code(p, w);
+                char at[64];
+                snprintf(at, sizeof at, ":%u:", cdl_photometry_warning_line(p, w));
+                CHECK_MSG(code && code[0], "%s: warning %zu has no code", x->file, w);
+                CHECK_MSG(cdl_photometry_warning_line(p, w) == 0 || strstr(cdl_photometry_warning(p, w), at),
+                          "%s: warning %zu: line %u not in '%s'", x->file, w, cdl_photometry_warning_line(p, w),
+                          cdl_photometry_warning(p, w));
+            }
             cdl_photometry_release(p);
         }
     }
@@ -239,17 +255,14 @@ static void test_pairs(void)
     }
 }
 
-static char *write_as(const cdl_photometry *p, int ldt, int version)
+static char *write_as(const cdl_photometry *p, int ldt, int version) { return pc_write(p, ldt, version, NULL); }
+
+/* The table's integral in its own unit: lumens, or watts for a radiometric file. */
+static double table_flux(const cdl_photometry *p)
 {
-    cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_DEFAULT;
-    o.ies_version = version;
-    char *text = NULL;
-    size_t len;
-    cdl_error err;
-    cdl_status st = ldt ? cdl_photometry_format_ldt(p, &o, &text, &len, NULL, &err)
-                        : cdl_photometry_format_ies(p, &o, &text, &len, NULL, &err);
-    CHECK_MSG(st == CDL_OK, "%s", err.message);
-    return text;
+    cdl_photometry_summary s;
+    cdl_photometry_summary_compute(p, &s);
+    return s.radiometric ? s.radiant_flux.W : s.flux.lm;
 }
 
 /* IES -> EULUMDAT -> IES and EULUMDAT -> IES -> EULUMDAT: every stored
@@ -257,7 +270,9 @@ static char *write_as(const cdl_photometry *p, int ldt, int version)
  * than any file prints, so 1e-8 of the maximum is within the printed
  * precision) and the flux within 0.1 %. Type A/B data cannot enter
  * EULUMDAT without resampling (reported by the writer): for those the IES
- * legs are exact and the EULUMDAT leg keeps the flux within 0.5 %. */
+ * legs are exact and the EULUMDAT leg keeps the flux within 0.5 %.
+ * Radiometric files (W/sr) are refused by EULUMDAT and stay radiometric
+ * through IES. */
 static void test_round_trips(void)
 {
     for (size_t k = 0; k < NEXPECTED; ++k) {
@@ -268,13 +283,22 @@ static void test_round_trips(void)
         int is_ldt = strncmp(expected[k].file, "ldt_", 4) == 0;
         cdl_photometry_table t;
         cdl_photometry_get_table(p, &t);
-        double max = cdl_photometry_max_intensity(p).cd, flux = cdl_photometry_flux(p).lm;
+        double max = cdl_photometry_max_intensity(p).cd, flux = table_flux(p);
+        int radiometric = cdl_photometry_get_metadata(p)->radiometric;
         for (int version = 2002; version <= 2019; version += 17) {
-            char *first = write_as(p, !is_ldt, version);
+            /* EULUMDAT has no radiometric units: refused, never written as cd/klm */
+            char *ldt = NULL;
+            size_t ldt_len;
+            cdl_photometry_write_options o = CDL_PHOTOMETRY_WRITE_OPTIONS_INIT;
+            if (radiometric)
+                CHECK_MSG(cdl_photometry_format_ldt(p, &o, &ldt, &ldt_len, NULL, &err) == CDL_ERR_INPUT && !ldt &&
+                              strstr(err.message, "mW/sr"),
+                          "%s: written to EULUMDAT", expected[k].file);
+            char *first = radiometric ? NULL : write_as(p, !is_ldt, version);
             cdl_photometry *q = first ? pc_read_text("first", first, strlen(first), 0, &err) : NULL;
             char *second = q ? write_as(q, is_ldt, version) : NULL;
             cdl_photometry *r = second ? pc_read_text("second", second, strlen(second), 0, &err) : NULL;
-            CHECK_MSG(r != NULL, "%s: %s", expected[k].file, err.message);
+            CHECK_MSG(r != NULL || radiometric, "%s: %s", expected[k].file, err.message);
             if (r) {
                 /* A ballast factor EULUMDAT cannot hold is folded into its
                  * lamp flux: the light (flux x output factor) is kept, the
@@ -284,9 +308,9 @@ static void test_round_trips(void)
                     if (kp == kr)
                         CHECK_MSG(pc_node_difference(p, r) <= 1e-8 * max, "%s: stored values moved by %g cd",
                                   expected[k].file, pc_node_difference(p, r));
-                    CHECK_REL(cdl_photometry_flux(r).lm * kr, flux * kp, 1e-3);
+                    CHECK_REL(table_flux(r) * kr, flux * kp, 1e-3);
                 } else {
-                    CHECK_REL(cdl_photometry_flux(r).lm * kr, flux * kp, 5e-3);
+                    CHECK_REL(table_flux(r) * kr, flux * kp, 5e-3);
                 }
             }
             cdl_photometry_release(q);
@@ -299,7 +323,9 @@ static void test_round_trips(void)
             CHECK_MSG(s != NULL, "%s: %s", expected[k].file, err.message);
             if (s) {
                 CHECK_MSG(pc_node_difference(p, s) <= 1e-8 * max, "%s: same-format trip", expected[k].file);
-                CHECK_REL(cdl_photometry_flux(s).lm, flux, 1e-6);
+                /* IES to IES keeps [_INTENSITYUNITS]: still radiometric, the same watts */
+                CHECK_MSG(cdl_photometry_get_metadata(s)->radiometric == radiometric, "%s: units", expected[k].file);
+                CHECK_REL(table_flux(s), flux, 1e-6);
             }
             cdl_photometry_release(s);
             free(same);
@@ -328,9 +354,36 @@ static void test_radiometric_units(void)
         if (want) {
             CHECK(m->radiometric_scale == 1e-3);
             cdl_photometry_summary s;
-            cdl_photometry_summarize(p, &s);
-            /* the table's integral, in mW, as watts */
-            CHECK(s.radiometric && s.radiant_flux.W == s.flux.lm * 1e-3 && !s.efficacy_known);
+            cdl_photometry_summary_compute(p, &s);
+            /* The same table built as candela (cdl_photometry_create_type_c) integrates to
+             * lumens; read from a file in mW/sr, that integral is milliwatts, and no lumens. */
+            cdl_photometry_table t;
+            cdl_photometry_get_table(p, &t);
+            cdl_photometry *as_cd = NULL;
+            CHECK_OK(cdl_photometry_create_type_c(t.horizontal_deg, t.horizontal_count, t.vertical_deg,
+                                                  t.vertical_count, t.candela, &as_cd, &err),
+                     &err);
+            double mw = as_cd ? cdl_photometry_flux(as_cd).lm : NAN;
+            cdl_photometry_release(as_cd);
+            /* the same sum over the same table: equal to rounding */
+            CHECK_REL(s.radiant_flux.W, mw * 1e-3, 1e-12);
+            CHECK(s.radiometric && isnan(s.flux.lm) && isnan(s.zone_flux[0].lm) && !s.efficacy_known);
+            /* the 18 zones share the whole radiant flux (sums of the same exact integrals: 1e-12) */
+            double zones = 0.0;
+            for (int z = 0; z < 18; ++z) zones += s.radiant_zone_flux[z].W;
+            CHECK_REL(zones, s.radiant_flux.W, 1e-12);
+            /* the typed API: watts, and an error for lumens */
+            cdl_radiant_flux w = cdl_watts(0.0);
+            cdl_luminous_flux lm = cdl_lumens(-1.0);
+            CHECK_OK(cdl_photometry_radiant_flux(p, &w, &err), &err);
+            CHECK_REL(w.W, s.radiant_flux.W, 0.0);
+            CHECK(cdl_photometry_luminous_flux(p, &lm, &err) == CDL_ERR_INPUT && lm.lm == -1.0 &&
+                  strstr(err.message, "mW/sr") && isnan(cdl_photometry_flux(p).lm));
+        } else {
+            cdl_radiant_flux w = cdl_watts(-1.0);
+            cdl_luminous_flux lm;
+            CHECK(cdl_photometry_radiant_flux(p, &w, &err) == CDL_ERR_INPUT && w.W == -1.0);
+            CHECK(cdl_photometry_luminous_flux(p, &lm, &err) == CDL_OK && lm.lm == cdl_photometry_flux(p).lm);
         }
         cdl_photometry_release(p);
     }

@@ -134,7 +134,17 @@ static void test_values(void)
     j = info("warn_seam.ies");
     if (j) {
         const cJSON *w = cJSON_GetObjectItemCaseSensitive(j, "warnings");
-        CHECK(cJSON_GetArraySize(w) == 1 && strstr(cJSON_GetArrayItem(w, 0)->valuestring, "H = 360"));
+        /* {"code", "line", "message"}: the seam row's code and the line of its first value */
+        const cJSON *w0 = cJSON_GetArrayItem(w, 0);
+        const cJSON *code = cJSON_GetObjectItemCaseSensitive(w0, "code");
+        const cJSON *line = cJSON_GetObjectItemCaseSensitive(w0, "line");
+        const cJSON *message = cJSON_GetObjectItemCaseSensitive(w0, "message");
+        CHECK(cJSON_GetArraySize(w) == 1 && cJSON_IsString(code) && strcmp(code->valuestring, "seam-differs") == 0);
+        CHECK(cJSON_IsNumber(line) && line->valuedouble >= 1.0);
+        CHECK(cJSON_IsString(message) && strstr(message->valuestring, "H = 360"));
+        char at[32];
+        snprintf(at, sizeof at, ":%d:", cJSON_IsNumber(line) ? (int)line->valuedouble : -1);
+        CHECK(cJSON_IsString(message) && strstr(message->valuestring, at));
         cJSON_Delete(j);
     }
     /* the asymmetric fixture's maximum: IES H = 90 is frame C = 270 */

@@ -261,7 +261,7 @@ static void test_reference_read(void)
     if (err.status == CDL_OK) {
         CHECK(ref.grid_count == 1 && ref.grids[0].grid.count == 2);
         CHECK(ref.grids[0].E[1] == 181 && ref.grids[0].E_stderr[1] == 0.25 && ref.grids[0].E_indirect[0] == 80);
-        cdl_solution_release(&ref);
+        cdl_solution_clear(&ref);
     }
     fixture_write_file(path, "x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx\n"
                              "0,0,-0.9,0,0,1,180,100,80,0.5\n0.8,0,0,-1,0,0,181,100,81,0.25\n");

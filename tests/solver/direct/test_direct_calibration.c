@@ -127,10 +127,11 @@ static void tally_scene(const char *json, const char *file, cdl_quality quality,
             return;
         }
         scene->settings.quality = quality;
-        cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+        cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
         o.threads = 2;
-        o.no_exact_route = 1;
-        if (cdl_solve_scene(scene, &o, &sol, &err) != CDL_OK) {
+        cdl_solve_debug dbg = CDL_SOLVE_DEBUG_NONE;
+        dbg.no_exact_route = 1;
+        if (cdl_solve_scene_into(scene, &o, &dbg, &sol, &err) != CDL_OK) {
             CHECK_MSG(0, "%s", err.message);
             cdl_scene_release(scene);
             return;

@@ -8,7 +8,7 @@
 #include "base/rng.h"
 #include "solver/direct/direct.h"
 #include "solver/grid/grid.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_lights.h"
 

@@ -19,8 +19,8 @@
 #include "lights/emitters/projected_solid_angle.h"
 #include "radiometry/constants.h"
 #include "radiometry/vec3.h"
-#include "solver/scene/scene.h"
-#include "solver/solve.h"
+#include "solver/scene/scene_internal.h"
+#include "solver/solve_internal.h"
 
 #define L_SKY 1000.0
 #define TARGET 1e-3
@@ -36,11 +36,12 @@ static int solve_points(const char *json, double *E, double *se, size_t n, size_
     cdl_error_clear(&err);
     CHECK_OK(cdl_scene_load_string(json, "near.json", &scene, &err), &err);
     if (!scene) return 0;
-    cdl_solve_options so = CDL_SOLVE_OPTIONS_DEFAULT;
+    cdl_solve_options so = CDL_SOLVE_OPTIONS_INIT;
     so.threads = 1;
-    so.no_exact_route = 1;
+    cdl_solve_debug dbg = CDL_SOLVE_DEBUG_NONE;
+    dbg.no_exact_route = 1;
     cdl_solution sol;
-    cdl_status st = cdl_solve_scene(scene, &so, &sol, &err);
+    cdl_status st = cdl_solve_scene_into(scene, &so, &dbg, &sol, &err);
     CHECK_OK(st, &err);
     int ok = st == CDL_OK && sol.grids[0].grid.count == n;
     CHECK(ok);
@@ -51,7 +52,7 @@ static int solve_points(const char *json, double *E, double *se, size_t n, size_
         }
         if (edges) *edges = sol.grids[0].edge_point_count;
     }
-    if (st == CDL_OK) cdl_solution_release(&sol);
+    if (st == CDL_OK) cdl_solution_clear(&sol);
     cdl_scene_release(scene);
     return ok;
 }

@@ -12,7 +12,7 @@
 #include "lights/emitters/projected_solid_angle.h"
 #include "radiometry/constants.h"
 #include "solver/scene/exr_image.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 #include "solver/solve_fixture.h"
 
 enum { W = 96, H = 48, CAP_ROWS = 12 };
@@ -62,7 +62,7 @@ static void test_unoccluded(void)
     CHECK_REL(g->E[1], 2000.0 * tilted, 1e-12);
     CHECK(g->E_stderr[0] == 0.0 && g->E_stderr[1] == 0.0);
     CHECK(sol.rays == 0);
-    cdl_solution_release(&sol);
+    cdl_solution_clear(&sol);
     cdl_scene_release(scene);
 }
 
@@ -245,7 +245,7 @@ static void test_light_well(const char *quality, double target, int deep, int ca
     CHECK(strstr(sol.plan_json, "sampled where partly hidden") != NULL);
     size_t capped = fixture_capped_points(sol.plan_json);
     CHECK_MSG(capped == (capped_expected ? (size_t)P : 0), "%s: the cap held %zu points", quality, capped);
-    cdl_solution_release(&sol);
+    cdl_solution_clear(&sol);
     cdl_scene_release(scene);
 }
 

@@ -18,7 +18,7 @@
 #include "check.h"
 #include "radiometry/constants.h"
 #include "solver/direct/exact_forms.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 
 static const char *const presets[4] = {"draft", "normal", "high", "reference"};
 static const cdl_quality qualities[4] = {CDL_QUALITY_DRAFT, CDL_QUALITY_NORMAL, CDL_QUALITY_HIGH, CDL_QUALITY_REFERENCE};
@@ -37,10 +37,11 @@ static int load_solve(const char *json, const char *file, cdl_quality quality, i
                          : cdl_scene_load(path, scene, &err);
     if (st == CDL_OK) {
         if (!json) (*scene)->settings.quality = quality;
-        cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+        cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
         o.threads = 2;
-        o.no_exact_route = no_exact_route;
-        st = cdl_solve_scene(*scene, &o, sol, &err);
+        cdl_solve_debug dbg = CDL_SOLVE_DEBUG_NONE;
+        dbg.no_exact_route = no_exact_route;
+        st = cdl_solve_scene_into(*scene, &o, &dbg, sol, &err);
         if (st != CDL_OK) cdl_scene_release(*scene);
     }
     CHECK_MSG(st == CDL_OK, "%s", err.message);
@@ -59,7 +60,7 @@ static int solve_file(const char *file, cdl_quality quality, cdl_scene **scene, 
 
 static void done(cdl_scene *scene, cdl_solution *sol)
 {
-    cdl_solution_release(sol);
+    cdl_solution_clear(sol);
     cdl_scene_release(scene);
 }
 
@@ -254,7 +255,7 @@ static void test_sampler_agrees(void)
     if (!solve(json, &scene, &sampled, 1)) return;
     cdl_scene_release(scene);
     if (!solve(json, &scene, &exact, 0)) {
-        cdl_solution_release(&sampled);
+        cdl_solution_clear(&sampled);
         return;
     }
     const cdl_grid_solution *g = &sampled.grids[0], *x = &exact.grids[0];
@@ -272,7 +273,7 @@ static void test_sampler_agrees(void)
     CHECK_MSG(count_sampled_points(g) == g->grid.count, "the sampler was not used at every point");
     CHECK_MSG(strstr(sampled.plan_json, "sampled: exact route turned off") != NULL, "plan: %s", sampled.plan_json);
     printf("sampler behind the partition (normal): %zu of %zu points within 2 sigma\n", within, g->grid.count);
-    cdl_solution_release(&sampled);
+    cdl_solution_clear(&sampled);
     done(scene, &exact);
 }
 

@@ -44,7 +44,7 @@
 #include "check.h"
 #include "radiometry/constants.h"
 #include "solver/scene/exr_image.h"
-#include "solver/solve.h"
+#include "solver/solve_internal.h"
 #include "solver/solve_fixture.h"
 
 enum { POINTS = 48, MAX_W = 512, MAX_H = 256 };

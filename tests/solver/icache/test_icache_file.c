@@ -63,10 +63,10 @@ static cdl_status solve(const variant *v, const char *cache, int threads, cdl_sc
     memset(sol, 0, sizeof *sol);
     cdl_status st = cdl_scene_load_string(json, CANDELA_TEST_TMPDIR "/inline.json", scene, err);
     if (st != CDL_OK) return st;
-    cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+    cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
     o.threads = threads;
     o.cache_path = cache;
-    return cdl_solve_scene(*scene, &o, sol, err);
+    return cdl_solve_scene_into(*scene, &o, NULL, sol, err);
 }
 
 /* The plan's interreflection "paths": paths traced by this solve. */
@@ -319,7 +319,7 @@ static void expect_refusal(const char *cache, const variant *v, const char *what
     CHECK_MSG(strncmp(err.message, cache, strlen(cache)) == 0 && strstr(err.message, word),
               "%s: expected the file and \"%s\" in: %s", what, word, err.message);
     printf("%s: %s\n", what, err.message);
-    if (st == CDL_OK) cdl_solution_release(&sol);
+    if (st == CDL_OK) cdl_solution_clear(&sol);
     cdl_scene_release(scene);
     CHECK_MSG(fixture_file_is(cache, before, size), "%s: the cache file was changed", what);
     free(before);

@@ -126,11 +126,12 @@ static void test_gradients(void)
     snprintf(json, sizeof json, fmt, "pathtrace", 0.006, 5);
     if (!fixture_solve(json, &s[0], &r[0], 2)) return;
     snprintf(json, sizeof json, fmt, "icache", 0.02, 1);
-    cdl_solve_options o = CDL_SOLVE_OPTIONS_DEFAULT;
+    cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
     o.threads = 2;
     int ok1 = fixture_solve_options(json, &s[1], &r[1], &o);
-    o.no_cache_gradients = 1;
-    int ok2 = ok1 && fixture_solve_options(json, &s[2], &r[2], &o);
+    cdl_solve_debug no_gradients = CDL_SOLVE_DEBUG_NONE;
+    no_gradients.no_cache_gradients = 1;
+    int ok2 = ok1 && fixture_solve_debug(json, &s[2], &r[2], &o, &no_gradients);
     if (ok2) {
         double ms[3] = {0, 0, 0};
         const cdl_grid_solution *ref = &r[0].grids[0];
@@ -187,7 +188,7 @@ static void test_determinism(void)
     fixture_release(s1, &a);
 }
 
-/* The Radiance peer's room (4 x 4 x 3 m, rho 0.2 / 0.5 / 0.7, a 3000 lm
+/* The downlight room (data/bench/downlight_room.json: 4 x 4 x 3 m, rho 0.2 / 0.5 / 0.7, a 3000 lm
  * downlight at the ceiling's centre, 81 work-plane points at 0.8 m) at
  * quality high, against path tracing to 0.03 %. Under the downlight the
  * interreflected light has a minimum (the ceiling above it is dark), where

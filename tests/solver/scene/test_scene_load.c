@@ -8,7 +8,7 @@
 
 #include "check.h"
 #include "radiometry/constants.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 #define DATA CANDELA_SOURCE_DIR "/tests/data/scene/"
 

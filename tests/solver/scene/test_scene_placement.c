@@ -7,7 +7,7 @@
 
 #include "check.h"
 #include "radiometry/constants.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 
 /* world_from_luminaire = Rz(c) Ry(b) Rx(a) applied to v (DESIGN.md:
  * rotation about fixed x, then y, then z), written out independently of
@@ -78,6 +78,15 @@ static void test_aim_matches_rotation(void)
     cdl_scene_release(s);
 }
 
+/* The copy's turned nadir points from its position at `aim`. */
+static void check_nadir_at(const cdl_luminaire_spec *l, cdl_vec3 aim, size_t k)
+{
+    cdl_vec3 want = cdl_vec3_normalize(cdl_vec3_sub(aim, l->position));
+    cdl_vec3 nadir = rotate(l->rotation_deg, cdl_vec3_make(0, 0, -1));
+    CHECK_MSG(cdl_vec3_length(cdl_vec3_sub(nadir, want)) < ROT_TOL, "copy %zu nadir off by %g", k,
+              cdl_vec3_length(cdl_vec3_sub(nadir, want)));
+}
+
 /* Floodlights on poles all aimed at one point: every copy's nadir points
  * at it, whatever its position (including straight above and level with it). */
 static void test_positions_aimed(void)
@@ -90,10 +99,7 @@ static void test_positions_aimed(void)
     CHECK(s->luminaire_count == 6);
     for (size_t k = 0; k < s->luminaire_count && k < 6; ++k) {
         const cdl_luminaire_spec *l = &s->luminaires[k];
-        cdl_vec3 want = cdl_vec3_normalize(cdl_vec3_sub(cdl_vec3_make(5, 5, 0.5), l->position));
-        cdl_vec3 nadir = rotate(l->rotation_deg, cdl_vec3_make(0, 0, -1));
-        CHECK_MSG(cdl_vec3_length(cdl_vec3_sub(nadir, want)) < 1e-12, "copy %zu nadir off by %g", k,
-                  cdl_vec3_length(cdl_vec3_sub(nadir, want)));
+        check_nadir_at(l, cdl_vec3_make(5, 5, 0.5), k);
         CHECK(strcmp(l->json_path, "luminaires[0]") == 0 && l->entry == 0 && l->copy == k && l->copy_count == 6);
     }
     char label[160];
@@ -132,6 +138,62 @@ static void test_array(void)
     /* A point light's frame is the world's. */
     CHECK(s->luminaires[14].position.x == 0.5 && s->luminaires[14].position.y == 0.0);
     CHECK(s->luminaires[13].entry == 2 && s->luminaires[0].copy_count == 1);
+    cdl_scene_release(s);
+}
+
+/* The issue's trap: rotation [0, 0, 90] with counts [3, 4] laid rows along
+ * the turned C0/C90 axes, 9 of 12 luminaires outside a 6 x 8 m room. With
+ * "axes": "world" the rows run along world x and y, where the plan shows
+ * them, whatever the luminaires' rotation; each copy keeps the rotation. */
+static void test_array_world_axes(void)
+{
+    cdl_scene *s = load(
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"goniometric\", \"file\": \"downlight.ies\", "
+        "\"position\": [1, 1, 2.8], \"rotation\": [0, 0, 90], \"array\": {\"counts\": [3, 4], \"spacing\": [2, 2], "
+        "\"axes\": \"world\"}}], " GRID "}");
+    if (!s) return;
+    CHECK(s->luminaire_count == 12);
+    int inside = 0;
+    for (size_t k = 0; k < s->luminaire_count && k < 12; ++k) {
+        const cdl_luminaire_spec *l = &s->luminaires[k];
+        int i = (int)(k % 3), j = (int)(k / 3);
+        CHECK_ABS(l->position.x, 1.0 + 2.0 * i, 1e-12);
+        CHECK_ABS(l->position.y, 1.0 + 2.0 * j, 1e-12);
+        CHECK(l->rotation_deg[2] == 90.0);
+        inside += l->position.x > 0.0 && l->position.x < 6.0 && l->position.y > 0.0 && l->position.y < 8.0;
+    }
+    CHECK_MSG(inside == 12, "%d of 12 luminaires inside the 6 x 8 m room", inside);
+    cdl_scene_release(s);
+}
+
+/* Floodlights on masts, each aimed at its own point of a pitch: with
+ * "positions", "aim" takes as many points. */
+static void test_positions_each_aimed(void)
+{
+    cdl_scene *s = load(
+        "{\"version\": 1, \"luminaires\": [{\"type\": \"goniometric\", \"file\": \"downlight.ies\", "
+        "\"positions\": [[0, 0, 20], [0, 0, 20], [50, 30, 18]], \"aim\": [[10, 5, 0], [30, 25, 0], [40, 10, 0]]}], "
+        GRID "}");
+    if (!s) return;
+    static const double aims[3][3] = {{10, 5, 0}, {30, 25, 0}, {40, 10, 0}};
+    CHECK(s->luminaire_count == 3);
+    for (size_t k = 0; k < s->luminaire_count && k < 3; ++k)
+        check_nadir_at(&s->luminaires[k], cdl_vec3_make(aims[k][0], aims[k][1], aims[k][2]), k);
+    cdl_scene_release(s);
+}
+
+/* A room with a window wall left open and its reflectances by floor,
+ * walls and ceiling: the natural mix of namings. */
+static void test_window_room(void)
+{
+    cdl_scene *s = load("{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [4,5,3], "
+                        "\"inward\": true, \"open\": [\"-y\"], "
+                        "\"reflectance\": {\"floor\": 0.2, \"walls\": 0.5, \"ceiling\": 0.7}}], " GRID "}");
+    if (!s) return;
+    const cdl_surface_spec *b = &s->surfaces[0];
+    CHECK(b->face_open[CDL_BOX_NEG_Y] && !b->face_open[CDL_BOX_POS_Y] && !b->face_open[CDL_BOX_NEG_Z]);
+    CHECK(b->face_reflectance[CDL_BOX_NEG_Z] == 0.2 && b->face_reflectance[CDL_BOX_POS_Z] == 0.7);
+    CHECK(b->face_reflectance[CDL_BOX_NEG_X] == 0.5 && b->face_reflectance[CDL_BOX_POS_Y] == 0.5);
     cdl_scene_release(s);
 }
 
@@ -182,6 +244,13 @@ static void test_errors(void)
                  "\"intensity_cd\": 1, \"half_angle\": 20}], " GRID "}",
                  "luminaires[0].direction: expected a non-zero vector of 3 numbers, found nothing");
     expect_error("{\"$schema\": 3, \"version\": 1, " GRID "}", "$schema: expected the address of the scene's JSON Schema");
+    expect_error(GONIO "\"position\": [0,0,3], \"array\": {\"counts\": [2, 2], \"spacing\": [1, 1], \"axes\": \"plan\"}}], "
+                       GRID "}",
+                 "luminaires[0].array.axes: expected \"luminaire\"");
+    expect_error(GONIO "\"positions\": [[0,0,3], [1,1,3]], \"aim\": [[0,0,0]]}], " GRID "}",
+                 "luminaires[0].aim: expected one aim point per entry of \"positions\", found 1 aim points for 2 positions");
+    expect_error(GONIO "\"position\": [0,0,3], \"aim\": [[0,0,0]]}], " GRID "}",
+                 "luminaires[0].aim: expected one aim point [x, y, z] (a list of them goes with \"positions\"");
 }
 
 int main(void)
@@ -189,6 +258,9 @@ int main(void)
     test_aim_matches_rotation();
     test_positions_aimed();
     test_array();
+    test_array_world_axes();
+    test_positions_each_aimed();
+    test_window_room();
     test_errors();
     return check_finish();
 }

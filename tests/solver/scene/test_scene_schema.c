@@ -11,7 +11,7 @@
 
 #include "check.h"
 #include "file_fixture.h"
-#include "solver/scene/scene.h"
+#include "solver/scene/scene_internal.h"
 #include "solver/scene/scene_schema.h"
 
 static int in_keys(const char *const *keys, const char *key)
