@@ -84,4 +84,19 @@ cdl_vec3 cdl_reinhart_direction(const cdl_reinhart_patches *p, double altitude, 
  * lower hemisphere. */
 double cdl_reinhart_projected_solid_angle(const cdl_reinhart_patches *p, int k, cdl_vec3 n);
 
+/* Most vertices of a polygon cdl_reinhart_add_polygon takes. */
+#define CDL_REINHART_POLYGON_MAX 36
+
+/* For every patch (ground included) the projected solid angle about unit
+ * world normal n of its part inside the convex spherical polygon poly[0 ..
+ * count) (unit world directions, edges the shorter great-circle arcs,
+ * either orientation, within the hemisphere of n), times `weight`, added
+ * to out[k] (p->count entries): exact (environment_peaks.h's cell and
+ * polygon contour, the cap and the ground in quarters); only the patches
+ * the polygon's extent in altitude and azimuth reaches are visited.
+ * Returns 0, adding nothing, for fewer than 3 or more than
+ * CDL_REINHART_POLYGON_MAX vertices. */
+int cdl_reinhart_add_polygon(const cdl_reinhart_patches *p, const cdl_vec3 *poly, int count, cdl_vec3 n,
+                             double weight, double *out);
+
 #endif

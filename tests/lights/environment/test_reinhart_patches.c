@@ -11,11 +11,20 @@
  *  - the closed-form projected solid angles: all patches (ground
  *    included) sum to pi for any normal (the whole hemisphere in front of
  *    it); the sky's alone to pi for up; single patches against a midpoint
- *    quadrature of max(0, n.w) over them for tilted normals.
+ *    quadrature of max(0, n.w) over them for tilted normals;
+ *  - polygons over the patches (cdl_reinhart_add_polygon): the five faces
+ *    of the cube over a receiving plane (the top and four half sides, as
+ *    the exact route cuts the visible sky) tile its hemisphere, so what they
+ *    add to each patch is the patch's own projected solid angle; a small
+ *    quadrilateral inside one patch adds there its projected solid angle by
+ *    Lambert's formula, and nothing elsewhere; one across the horizon
+ *    splits between the ground and the sky as the horizon cuts it (Lambert's
+ *    formula of each part).
  */
 #include <math.h>
 
 #include "check.h"
+#include "lights/emitters/projected_solid_angle.h"
 #include "lights/environment/reinhart_patches.h"
 #include "radiometry/constants.h"
 
@@ -128,8 +137,80 @@ static void test_projected(void)
     }
 }
 
+/* The five faces of the unit cube over the plane of n, each added. */
+static void add_cube(const cdl_reinhart_patches *p, cdl_vec3 n, double *out)
+{
+    cdl_frame f = cdl_frame_from_normal(n);
+    const cdl_vec3 sides[4] = {f.s, f.t, cdl_vec3_neg(f.s), cdl_vec3_neg(f.t)};
+    cdl_vec3 top[4] = {cdl_vec3_sub(cdl_vec3_sub(n, f.s), f.t), cdl_vec3_sub(cdl_vec3_add(n, f.s), f.t),
+                       cdl_vec3_add(cdl_vec3_add(n, f.s), f.t), cdl_vec3_add(cdl_vec3_sub(n, f.s), f.t)};
+    CHECK(cdl_reinhart_add_polygon(p, top, 4, n, 1.0, out));
+    for (int k = 0; k < 4; ++k) {
+        cdl_vec3 a = sides[k], b = sides[(k + 1) % 4];
+        cdl_vec3 q[4] = {cdl_vec3_sub(a, b), cdl_vec3_add(a, b), cdl_vec3_add(cdl_vec3_add(a, b), n),
+                         cdl_vec3_add(cdl_vec3_sub(a, b), n)};
+        CHECK(cdl_reinhart_add_polygon(p, q, 4, n, 1.0, out));
+    }
+}
+
+static void test_polygons(void)
+{
+    cdl_error err;
+    cdl_vec3 up = cdl_vec3_normalize(cdl_vec3_make(0.05, 0.1, 1.0));
+    for (int mf = 1; mf <= 4; mf *= 2) {
+        cdl_reinhart_patches p;
+        CHECK_OK(cdl_reinhart_init(&p, mf, up, cdl_vec3_make(0.3, 1, 0), &err), &err);
+        const cdl_vec3 normals[3] = {up, cdl_vec3_normalize(cdl_vec3_make(1, 0.2, 0.1)),
+                                     cdl_vec3_normalize(cdl_vec3_make(-0.4, 0.3, -0.8))};
+        double out[2400];
+        for (int i = 0; i < 3; ++i) {
+            for (int k = 0; k < p.count; ++k) out[k] = 0.0;
+            add_cube(&p, normals[i], out);
+            double worst = 0.0, sum = 0.0;
+            for (int k = 0; k < p.count; ++k) {
+                double want = cdl_reinhart_projected_solid_angle(&p, k, normals[i]);
+                sum += out[k];
+                if (fabs(out[k] - want) > worst) worst = fabs(out[k] - want);
+            }
+            /* two closed forms of the same areas: rounding, a few ulps of pi */
+            CHECK_MSG(worst < 1e-12, "MF %d normal %d: worst patch differs by %.3g sr", mf, i, worst);
+            CHECK_REL(sum, CDL_PI, 1e-12);
+        }
+        /* a small quadrilateral inside one patch of the third row */
+        double a0 = 2.2 * p.alpha, a1 = 2.7 * p.alpha, w = CDL_TWO_PI / p.row_count[2], z0 = 3.1 * w, z1 = 3.3 * w;
+        cdl_vec3 q[4] = {cdl_reinhart_direction(&p, a0, z0), cdl_vec3_scale(cdl_reinhart_direction(&p, a0, z1), 2.0),
+                         cdl_reinhart_direction(&p, a1, z1), cdl_reinhart_direction(&p, a1, z0)};
+        cdl_vec3 n = cdl_vec3_normalize(cdl_vec3_make(0.2, -0.9, 0.3));
+        for (int k = 0; k < p.count; ++k) out[k] = 0.0;
+        CHECK(cdl_reinhart_add_polygon(&p, q, 4, n, 2.0, out));
+        int home = p.row_first[2] + 3;
+        double lambert = cdl_projected_solid_angle_polygon(q, 4, n), elsewhere = 0.0;
+        for (int k = 0; k < p.count; ++k)
+            if (k != home) elsewhere += out[k];
+        /* the same polygon by two closed forms: rounding */
+        CHECK_REL(out[home], 2.0 * lambert, 1e-11);
+        CHECK(elsewhere == 0.0);
+        /* across the horizon: the ground holds the part below it */
+        cdl_vec3 x[4] = {cdl_reinhart_direction(&p, -0.2, 1.0), cdl_reinhart_direction(&p, -0.2, 1.2),
+                         cdl_reinhart_direction(&p, 0.3, 1.2), cdl_reinhart_direction(&p, 0.3, 1.0)};
+        cdl_vec3 h[2] = {cdl_reinhart_direction(&p, 0.0, 1.0), cdl_reinhart_direction(&p, 0.0, 1.2)};
+        /* the horizon between two directions is a great circle: the parts
+         * are the quadrilaterals cut by it */
+        cdl_vec3 below[4] = {x[0], x[1], h[1], h[0]}, above[4] = {h[0], h[1], x[2], x[3]};
+        /* a receiver facing it (the polygon within its hemisphere) */
+        n = cdl_vec3_normalize(cdl_vec3_add(cdl_vec3_add(x[0], x[2]), cdl_vec3_make(0.1, 0.2, 0.3)));
+        for (int k = 0; k < p.count; ++k) out[k] = 0.0;
+        CHECK(cdl_reinhart_add_polygon(&p, x, 4, n, 1.0, out));
+        double sky = 0.0;
+        for (int k = 1; k < p.count; ++k) sky += out[k];
+        CHECK_REL(out[CDL_REINHART_GROUND], cdl_projected_solid_angle_polygon(below, 4, n), 1e-11);
+        CHECK_REL(sky, cdl_projected_solid_angle_polygon(above, 4, n), 1e-11);
+    }
+}
+
 int main(void)
 {
+    test_polygons();
     test_counts();
     test_tiling();
     test_projected();
