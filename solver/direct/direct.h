@@ -111,6 +111,23 @@ typedef enum cdl_direct_route {
 int cdl_direct_light_seen(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy strategy,
                           cdl_vec3 p, cdl_vec3 n);
 
+/* The sky a point sees, for callers that integrate their own functions of
+ * direction over it (daylight coefficients, solver/daylight/): every
+ * direction on the side of n that leaves the scene, whatever the horizon,
+ * as convex spherical polygons, each handed to `piece` as `count` unit
+ * world directions from p (count <= CDL_VISIBLE_MAX_VERTICES; either
+ * orientation; edges the shorter great-circle arcs). Returns
+ * CDL_ROUTE_FULL_VIEW when nothing can hide any of it (no piece is handed
+ * over: the whole hemisphere of n is seen), CDL_ROUTE_VISIBLE_POLYGON when
+ * the pieces were handed over (exactly what is seen past the surfaces,
+ * geometry/visible_polygon.h), or the route's reason why it cannot say
+ * (glass, curved or too many occluders, too many pieces: the caller
+ * samples; some pieces may have been handed over before it found out).
+ * Thread-safe. */
+typedef void (*cdl_sky_piece_fn)(void *user, const cdl_vec3 *dirs, int count);
+cdl_direct_route cdl_direct_visible_sky(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_sky_piece_fn piece,
+                                        void *user);
+
 /* Most occluders between a point and a light for the exact route. */
 #define CDL_EXACT_ROUTE_MAX_OCCLUDERS 64
 

@@ -386,6 +386,52 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     return CDL_ROUTE_VISIBLE_POLYGON;
 }
 
+cdl_direct_route cdl_direct_visible_sky(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_sky_piece_fn piece,
+                                        void *user)
+{
+    if (!ctx->geometry || !ctx->occluders) return CDL_ROUTE_FULL_VIEW;
+    /* a sky of every direction: its region is the half-space above p's plane */
+    cdl_scene_light sky;
+    memset(&sky, 0, sizeof sky);
+    sky.is_environment = 1;
+    sky.owner = UINT32_MAX;
+    cdl_convex_region region;
+    double tol;
+    cdl_direct_light_region(ctx, &sky, p, n, &region, &tol);
+    cdl_occluder_triangle occ[CDL_EXACT_ROUTE_MAX_OCCLUDERS];
+    size_t count = 0;
+    cdl_occluder_list_status ls =
+        cdl_occluder_index_list(ctx->occluders, &region, tol, UINT32_MAX, occ, CDL_EXACT_ROUTE_MAX_OCCLUDERS, &count);
+    if (ls == CDL_OCCLUDERS_SPHERE) return CDL_ROUTE_CURVED_OCCLUDER;
+    if (ls == CDL_OCCLUDERS_TOO_MANY) return CDL_ROUTE_TOO_MANY;
+    if (count == 0) return CDL_ROUTE_FULL_VIEW;
+    for (size_t i = 0; i < count; ++i) {
+        const cdl_geometry_piece *g = cdl_scene_geometry_piece(ctx->geometry, occ[i].owner);
+        if (g->shape.kind == CDL_SHAPE_DISK) return CDL_ROUTE_CURVED_OCCLUDER;
+        if (g->transmittance > 0.0) return CDL_ROUTE_GLASS;
+    }
+    double near = NEAR_FRACTION * cdl_ray_offsets_epsilon(&ctx->offsets, p);
+    cdl_visible_face faces[5];
+    if (!sky_faces(&sky, p, n, near, occ, count, faces)) return CDL_ROUTE_TOO_COMPLEX;
+    for (int k = 0; k < 5; ++k) {
+        const cdl_visible_face *f = &faces[k];
+        /* a piece's point (x, y) is foot + x e1 + y e2, seen from the apex
+         * along -height toward + x e1 + y e2 */
+        for (size_t i = 0; i < f->count; ++i) {
+            const cdl_visible_piece *pc = &f->pieces[i];
+            cdl_vec3 dirs[CDL_VISIBLE_MAX_VERTICES];
+            for (int v = 0; v < pc->count; ++v) {
+                cdl_vec3 d = cdl_vec3_scale(f->toward, -f->height);
+                d = cdl_vec3_madd(d, pc->v[v][0], f->e1);
+                dirs[v] = cdl_vec3_normalize(cdl_vec3_madd(d, pc->v[v][1], f->e2));
+            }
+            if (pc->count >= 3) piece(user, dirs, pc->count);
+        }
+    }
+    faces_release(faces);
+    return CDL_ROUTE_VISIBLE_POLYGON;
+}
+
 int cdl_direct_exact_term(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy st,
                           cdl_vec3 p, cdl_vec3 n, double unoccluded, double *E, cdl_sky_region **region,
                           cdl_direct_sample_stats *stats)

@@ -26,8 +26,12 @@ int cdl_transport_trace(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3
     double T = 1.0, travelled = 0.0;
     const cdl_geometry_piece *piece = NULL;
     for (int panes = 0;; ++panes) {
-        if (!cdl_scene_geometry_intersect(geometry, p, p_normal, dir, INFINITY, &h)) return 0;
+        if (!cdl_scene_geometry_intersect(geometry, p, p_normal, dir, INFINITY, &h)) {
+            hit->transmission = T; /* out to the sky through the panes met */
+            return 0;
+        }
         piece = cdl_scene_geometry_piece(geometry, h.geom_id);
+        hit->transmission = 0.0;
         if (!piece) return 0;
         if (!(piece->transmittance > 0.0)) break;
         if (panes == CDL_GLASS_MAX_PANES) return 0;

@@ -37,7 +37,8 @@ typedef struct cdl_surface_hit {
  * their transmittance at the ray's angle multiplied into hit->transmission
  * (the ray goes on undeviated: a thin pane's two faces refract it back);
  * the hit is the first surface that is not glass, or none after
- * CDL_GLASS_MAX_PANES panes. */
+ * CDL_GLASS_MAX_PANES panes. On 0, hit->transmission alone is set: what
+ * the panes on the way out let through to the sky (0 after too many). */
 int cdl_transport_trace(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 p_normal, cdl_vec3 dir,
                         cdl_surface_hit *hit);
 
