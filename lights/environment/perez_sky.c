@@ -131,7 +131,7 @@ static cdl_status check_input(const cdl_perez_input *in, cdl_error *err)
     if (!(isfinite(in->diffuse_horizontal) && in->diffuse_horizontal > 0.0))
         return cdl_error_set(err, CDL_ERR_INPUT, "diffuse horizontal: expected a value above 0 %s, found %g", unit,
                              in->diffuse_horizontal);
-    if (!(isfinite(in->direct_normal) && in->direct_normal >= 0.0 && in->direct_normal <= top))
+    if (!(isfinite(in->direct_normal) && in->direct_normal >= 0.0 && (in->clamp || in->direct_normal <= top)))
         return cdl_error_set(err, CDL_ERR_INPUT,
                              "direct normal: expected a value from 0 to the solar constant, %g %s, found %g", top, unit,
                              in->direct_normal);
@@ -169,6 +169,13 @@ cdl_status cdl_perez_sky_compute(const cdl_perez_input *in, cdl_perez_sky *out, 
     double z = in->sun_zenith_deg * CDL_DEG_TO_RAD;
     double W = exp(0.07 * in->dew_point_c - 0.075);
     double dh, dn;
+    cdl_perez_input clamped = *in;
+    double top = in->photometric ? PEREZ_SOLAR_CONSTANT_LX : PEREZ_SOLAR_CONSTANT_W_M2;
+    if (in->direct_normal > top) {
+        clamped.direct_normal = top;
+        out->clamped = 1;
+        in = &clamped;
+    }
     if (in->photometric) {
         irradiances_from_illuminances(in, W, &dh, &dn);
     } else {
@@ -177,7 +184,13 @@ cdl_status cdl_perez_sky_compute(const cdl_perez_input *in, cdl_perez_sky *out, 
     }
     double eps, delta;
     clearness_brightness(in, dh, dn, &eps, &delta);
-    if (!(eps <= 12.01) || !(delta > 0.01 && delta <= 0.6))
+    if (in->clamp && (!(eps <= 12.01) || !(delta > 0.01 && delta <= 0.6))) {
+        /* gendaylit's check_parametrization: to the nearest edge */
+        eps = fmin(fmax(eps, 1.0), 12.01);
+        delta = fmin(fmax(delta, 0.01), 0.6);
+        out->clamped = 1;
+    }
+    if (!(eps <= 12.01) || !(delta >= 0.01 && delta <= 0.6) || (!in->clamp && !(delta > 0.01)))
         return cdl_error_set(err, CDL_ERR_INPUT,
                              "expected a sky within the Perez model's range (clearness epsilon 1 to 12.01, brightness "
                              "Delta in (0.01, 0.6]), found epsilon = %.6g, Delta = %.6g from %g W/m^2 diffuse "

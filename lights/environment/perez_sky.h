@@ -31,7 +31,8 @@
  * horizontal plane (emitter.h, CDL_SKY_PEREZ with scale_to_horizontal), and
  * the sun is a disk of 0.533 degrees giving E_dn normal to its rays.
  *
- * Inputs outside the model's range are refused, as gendaylit refuses them:
+ * Inputs outside the model's range are refused (unless `clamp` asks to take
+ * them at the range's edge, as an annual study must, hour by hour):
  * the sun at or below the horizon, E_dh <= 0, E_dn < 0 or above the solar
  * constant (1367 W/m^2, 127.5 klx), epsilon above 12.01, Delta outside
  * (0.01, 0.6], and coefficients for which the model's luminance grows
@@ -51,6 +52,10 @@ typedef struct cdl_perez_input {
     double direct_normal;                 /* >= 0 */
     double diffuse_horizontal;            /* > 0 */
     double dew_point_c;                   /* the surface dew point, degrees C (gendaymtx's default: 11) */
+    int clamp;                            /* 1: a clearness or brightness outside the model's range is taken at
+                                           * its nearest edge (epsilon in [1, 12.01], Delta in [0.01, 0.6]),
+                                           * and a direct normal above the solar constant as the constant, as
+                                           * gendaylit and gendaymtx do hour by hour; 0 (default): refused */
 } cdl_perez_input;
 
 typedef struct cdl_perez_sky {
@@ -63,6 +68,7 @@ typedef struct cdl_perez_sky {
     double diffuse_horizontal_w_m2, direct_normal_w_m2;
     double diffuse_horizontal_lx, direct_normal_lx;
     double coefficients[5];               /* a, b, c, d, e */
+    int clamped;                          /* 1: an input was brought to the model's range (clamp) */
 } cdl_perez_sky;
 
 /* The Perez sky of the weather `in` (above): its clearness, brightness and

@@ -27,6 +27,16 @@
 #include "solver/output/lux_scale.h"
 #include "solver/solution_internal.h"
 
+/* A map of another quantity than illuminance (an annual metric's share
+ * of hours, daylight/annual.h): what it is, its unit's label, a fixed
+ * linear range with its tick, and the line under the title. */
+typedef struct cdl_map_quantity {
+    const char *what;         /* "daylight autonomy DA300, % of occupied hours" (the PNG's description) */
+    const char *unit;         /* the legend's unit: "%", "h" */
+    double lo, hi, tick;      /* the colours' range and the legend's step */
+    char stats[160];          /* under the title, instead of Em, Emin, Emax and U0 */
+} cdl_map_quantity;
+
 /* The arrays hold grid->count values each, in grid order. E, E_direct,
  * E_indirect and E_stderr are required (a direct-only solve passes zeros for
  * E_indirect); ao is optional. */
@@ -48,6 +58,7 @@ typedef struct cdl_grid_result {
     const double *Ez_stderr;  /* with Ez where part of it is sampled: its standard error, lux */
     const double *Esz_stderr; /* with Esz likewise */
     int map_log_scale;        /* NAME.png: 1 a logarithmic lux scale, 0 (default) linear (lux_scale.h) */
+    const cdl_map_quantity *quantity; /* NAME.png: NULL for illuminance; else E holds this quantity */
 } cdl_grid_result;
 
 /* A solved grid's results as the writers take them: E and its parts, ao,
@@ -163,6 +174,7 @@ typedef struct cdl_png_layout {
     int bar_x, bar_y;         /* top-left corner of the colour bar (inside its frame) */
     int bar_width, bar_height;
     int label_x;              /* left edge of the tick labels */
+    char unit[8];             /* "" for lux; else the quantity's unit */
 } cdl_png_layout;
 
 /* The layout cdl_grid_result_write_png uses for `result` (which must have a

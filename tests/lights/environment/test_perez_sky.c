@@ -95,7 +95,7 @@ static double horizontal_integral(const double *c, double Zs)
 static void check_sky(const char *name, double dh, double dn, double z_deg, int day, double dew,
                       const double (*row)[4], const double *kd, const double *kb, int first, int category)
 {
-    cdl_perez_input in = {z_deg, day, 0, dn, dh, dew};
+    cdl_perez_input in = {z_deg, day, 0, dn, dh, dew, 0};
     cdl_perez_sky sky;
     cdl_error err;
     CHECK_OK(cdl_perez_sky_compute(&in, &sky, &err), &err);
@@ -151,7 +151,7 @@ static void check_sky(const char *name, double dh, double dn, double z_deg, int 
 static void test_from_illuminance(void)
 {
     /* 20 klx diffuse, 60 klx direct, sun 35 degrees from the zenith */
-    cdl_perez_input in = {35.0, 150, 1, 60000.0, 20000.0, 8.0};
+    cdl_perez_input in = {35.0, 150, 1, 60000.0, 20000.0, 8.0, 0};
     cdl_perez_sky sky;
     cdl_error err;
     CHECK_OK(cdl_perez_sky_compute(&in, &sky, &err), &err);
@@ -160,7 +160,7 @@ static void test_from_illuminance(void)
     CHECK_REL(sky.diffuse_horizontal_w_m2 * sky.diffuse_efficacy_lm_w, 20000.0, 1e-9);
     CHECK_REL(sky.direct_normal_w_m2 * sky.direct_efficacy_lm_w, 60000.0, 1e-9);
     CHECK(sky.diffuse_horizontal_lx == 20000.0 && sky.direct_normal_lx == 60000.0);
-    cdl_perez_input again = {35.0, 150, 0, sky.direct_normal_w_m2, sky.diffuse_horizontal_w_m2, 8.0};
+    cdl_perez_input again = {35.0, 150, 0, sky.direct_normal_w_m2, sky.diffuse_horizontal_w_m2, 8.0, 0};
     cdl_perez_sky w;
     CHECK_OK(cdl_perez_sky_compute(&again, &w, &err), &err);
     CHECK_REL(w.diffuse_horizontal_lx, 20000.0, 1e-9);
@@ -171,15 +171,33 @@ static void test_refused(void)
 {
     cdl_perez_sky sky;
     cdl_error err;
-    cdl_perez_input below = {95.0, 100, 0, 100.0, 100.0, 11.0};
+    cdl_perez_input below = {95.0, 100, 0, 100.0, 100.0, 11.0, 0};
     CHECK(cdl_perez_sky_compute(&below, &sky, &err) == CDL_ERR_INPUT && strstr(err.message, "sun"));
-    cdl_perez_input dark = {30.0, 100, 0, 100.0, 0.0, 11.0};
+    cdl_perez_input dark = {30.0, 100, 0, 100.0, 0.0, 11.0, 0};
     CHECK(cdl_perez_sky_compute(&dark, &sky, &err) == CDL_ERR_INPUT && strstr(err.message, "diffuse horizontal"));
-    cdl_perez_input bright = {30.0, 100, 0, 1500.0, 100.0, 11.0};
+    cdl_perez_input bright = {30.0, 100, 0, 1500.0, 100.0, 11.0, 0};
     CHECK(cdl_perez_sky_compute(&bright, &sky, &err) == CDL_ERR_INPUT && strstr(err.message, "direct normal"));
     /* Delta above 0.6: 500 W/m^2 diffuse at 80 degrees (air mass 5.6) */
-    cdl_perez_input heavy = {80.0, 100, 0, 10.0, 500.0, 11.0};
+    cdl_perez_input heavy = {80.0, 100, 0, 10.0, 500.0, 11.0, 0};
     CHECK(cdl_perez_sky_compute(&heavy, &sky, &err) == CDL_ERR_INPUT && strstr(err.message, "Delta"));
+    /* clamped, as an annual study takes them hour by hour: to the range's
+     * edges, and said */
+    heavy.clamp = 1;
+    CHECK_OK(cdl_perez_sky_compute(&heavy, &sky, &err), &err);
+    CHECK(sky.clamped && sky.brightness == 0.6);
+    bright.clamp = 1;
+    CHECK_OK(cdl_perez_sky_compute(&bright, &sky, &err), &err);
+    CHECK(sky.clamped && sky.direct_normal_w_m2 == 1367.0);
+    cdl_perez_input clear = {30.0, 100, 0, 900.0, 5.0, 11.0, 1};
+    CHECK_OK(cdl_perez_sky_compute(&clear, &sky, &err), &err);
+    CHECK(sky.clamped && sky.clearness == 12.01 && sky.category == 8);
+    /* within the range: not clamped, the same sky as without the flag */
+    cdl_perez_input fine = {30.0, 100, 0, 500.0, 100.0, 11.0, 1};
+    cdl_perez_sky plain;
+    CHECK_OK(cdl_perez_sky_compute(&fine, &sky, &err), &err);
+    fine.clamp = 0;
+    CHECK_OK(cdl_perez_sky_compute(&fine, &plain, &err), &err);
+    CHECK(!sky.clamped && memcmp(&sky, &plain, sizeof sky) == 0);
 }
 
 int main(void)
