@@ -54,13 +54,19 @@ cdl_status cdl_annual_metrics_compute(const cdl_annual_input *in, cdl_point_metr
     if (grid->daylight_hours == 0)
         return cdl_error_set(err, CDL_ERR_INPUT, "expected at least one daylight hour, found none");
     point_counts *c = calloc(in->points ? in->points : 1, sizeof *c);
-    if (!c) return cdl_error_out_of_memory(err);
+    float *dark = calloc(in->points ? in->points : 1, sizeof *dark);
+    if (!c || !dark) {
+        free(c);
+        free(dark);
+        return cdl_error_out_of_memory(err);
+    }
     double total = 0.0;
     for (size_t i = 0; i < in->points; ++i) total += weight_of(in, i);
     size_t en_t[CDL_EN17037_LEVELS] = {0}, en_m[CDL_EN17037_LEVELS] = {0};
     for (size_t h = 0; h < in->hours; ++h) {
-        const float *E = in->E + h * in->points;
-        const float *S = in->E_sun ? in->E_sun + h * in->points : NULL;
+        int row = in->row_of_hour ? in->row_of_hour[h] : (int)h;
+        const float *E = row >= 0 ? in->E + (size_t)row * in->points : dark;
+        const float *S = in->E_sun && row >= 0 ? in->E_sun + (size_t)row * in->points : NULL;
         if (in->occupied[h])
             for (size_t i = 0; i < in->points; ++i) {
                 point_counts *p = &c[i];
@@ -94,6 +100,7 @@ cdl_status cdl_annual_metrics_compute(const cdl_annual_input *in, cdl_point_metr
         grid->DA300_mean += w * m->DA300;
     }
     free(c);
+    free(dark);
     grid->en_level = "none";
     for (int l = 0; l < CDL_EN17037_LEVELS; ++l) {
         grid->en_target_hours[l] = 100.0 * (double)en_t[l] / day;

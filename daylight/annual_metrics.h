@@ -54,13 +54,14 @@ typedef struct cdl_en17037_level {
 } cdl_en17037_level;
 extern const cdl_en17037_level cdl_en17037_levels[CDL_EN17037_LEVELS];
 
-/* One year at one grid: E[h * points + i] (lx), the direct sun alone likewise
+/* One year at one grid: E[row * points + i] (lx), the direct sun alone likewise
  * (NULL: no sun, every ASE count 0), and per hour whether it is occupied and
  * whether it is a daylight hour. */
 typedef struct cdl_annual_input {
     size_t hours, points;
-    const float *E;
+    const float *E;                       /* rows of `points` values: row_of_hour[h] (or h) for hour h */
     const float *E_sun;
+    const int *row_of_hour;               /* per hour its row of E and E_sun, -1 for an hour of 0 lx; NULL: row h */
     const unsigned char *occupied;
     const unsigned char *daylight;
     const double *weights;                /* per point (area), or NULL: 1 each */

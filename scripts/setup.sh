@@ -12,6 +12,7 @@ packages=(
   libxml2-utils
   python3-jsonschema
   libcairo2-dev libpango1.0-dev
+  libopenblas-dev
   fonts-dejavu-core chromium poppler-utils
 )
 

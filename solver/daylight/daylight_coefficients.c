@@ -1,6 +1,7 @@
 /* daylight_coefficients.c - sky patches' and suns' coefficients at grid points (see the header). */
 #include "solver/daylight/daylight_coefficients.h"
 
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,10 +10,13 @@
 #include "base/content_hash.h"
 #include "base/error_report.h"
 #include "base/rng.h"
+#include "lights/emitters/projected_solid_angle.h"
+#include "lights/emitters/spherical_triangle.h"
 #include "radiometry/constants.h"
 #include "radiometry/estimate.h"
 #include "radiometry/frame.h"
 #include "radiometry/sampling.h"
+#include "solver/geometry/visible_polygon.h"
 #include "solver/pool.h"
 #include "solver/scene/scene_occluders.h"
 #include "solver/transport/path.h"
@@ -76,9 +80,21 @@ void cdl_daylight_scene_release(cdl_daylight_scene *ds)
 
 /* ---- one point ------------------------------------------------------------------ */
 
+/* Directions drawn over the visible sky to weigh it with the panes' transmittance. */
+#define GLASS_SAMPLES 1024
+
+/* A visible piece, kept for the panes' weights. */
+typedef struct sky_piece {
+    int count;
+    cdl_vec3 v[CDL_VISIBLE_MAX_VERTICES];
+} sky_piece;
+
 /* What a worker keeps from point to point. */
 typedef struct worker {
     double *direct;           /* patches: the exact direct part */
+    double *t_num, *t_den;    /* patches: the panes' transmittance, cosine-weighted sums */
+    sky_piece *pieces;        /* the point's visible pieces */
+    size_t piece_count, piece_cap;
     double *acc;              /* patches: the reported stage's escapes, summed */
     double *sun_acc;          /* suns: its next-event sums */
     double *full;             /* patches: the whole hemisphere's Q for full_n */
@@ -96,25 +112,98 @@ typedef struct job {
     cdl_daylight_grid_coefficients *out;
 } job;
 
+typedef struct piece_sink {
+    const cdl_reinhart_patches *p;        /* NULL: keep the pieces only */
+    cdl_vec3 n;
+    worker *w;
+    int overflow;
+} piece_sink;
+
+/* A visible piece: its patches' parts in closed form, and kept. */
 static void add_piece(void *user, const cdl_vec3 *dirs, int count)
 {
-    void **u = user;
-    const cdl_reinhart_patches *p = u[0];
-    const cdl_vec3 *n = u[1];
-    cdl_reinhart_add_polygon(p, dirs, count, *n, 1.0, u[2]);
+    piece_sink *sink = user;
+    worker *w = sink->w;
+    if (sink->p) cdl_reinhart_add_polygon(sink->p, dirs, count, sink->n, 1.0, w->direct);
+    if (w->piece_count == w->piece_cap) {
+        size_t cap = w->piece_cap ? 2 * w->piece_cap : 16;
+        sky_piece *more = realloc(w->pieces, cap * sizeof *more);
+        if (!more) {
+            sink->overflow = 1;
+            return;
+        }
+        w->pieces = more;
+        w->piece_cap = cap;
+    }
+    sky_piece *pc = &w->pieces[w->piece_count++];
+    pc->count = count;
+    memcpy(pc->v, dirs, (size_t)count * sizeof *dirs);
 }
 
-/* The direct part at p exactly where the exact route can say what p sees:
- * 1 with w->direct filled, 0 (w->direct zero) where it is to be sampled. */
-static int direct_exact(const job *jb, worker *w, cdl_vec3 p, cdl_vec3 n)
+/* The panes seen: each patch's closed-form part times the mean
+ * transmittance over it, T_k = int_k T cos dw / int_k cos dw, estimated by
+ * GLASS_SAMPLES directions drawn uniformly in solid angle over the pieces'
+ * fan triangles (Arvo's map), each triangle its share, a ray each for T;
+ * a patch no direction fell in takes the mean over all. T varies slowly
+ * with the angle of incidence, so the ratio is close whatever the draw. */
+static void weigh_glass(const job *jb, worker *w, uint64_t stream, cdl_vec3 p, cdl_vec3 n)
+{
+    const cdl_reinhart_patches *pt = jb->o->patches;
+    size_t K = (size_t)pt->count;
+    memset(w->t_num, 0, K * sizeof *w->t_num);
+    memset(w->t_den, 0, K * sizeof *w->t_den);
+    double total = 0.0, all_num = 0.0, all_den = 0.0;
+    for (size_t i = 0; i < w->piece_count; ++i)
+        for (int t = 1; t + 1 < w->pieces[i].count; ++t)
+            total += cdl_triangle_solid_angle(w->pieces[i].v[0], w->pieces[i].v[t], w->pieces[i].v[t + 1]);
+    uint64_t draw = 0;
+    for (size_t i = 0; i < w->piece_count && total > 0.0; ++i)
+        for (int t = 1; t + 1 < w->pieces[i].count; ++t) {
+            cdl_spherical_triangle tri;
+            double omega = cdl_spherical_triangle_init(&tri, w->pieces[i].v[0], w->pieces[i].v[t],
+                                                       w->pieces[i].v[t + 1]);
+            if (!(omega > 1e-9)) continue; /* Arvo's map is imprecise there; its patch takes the mean */
+            int m = (int)ceil(GLASS_SAMPLES * omega / total);
+            for (int j = 0; j < m; ++j) {
+                double u[2];
+                cdl_rng_uniform2((cdl_rng_key){jb->o->seed, stream}, draw++, u);
+                cdl_vec3 d = cdl_spherical_triangle_sample(&tri, (j + u[0]) / m, u[1]);
+                double c = cdl_vec3_dot(n, d);
+                if (!(c > 0.0)) continue;
+                w->rays++;
+                double T = cdl_scene_geometry_transmission(jb->ds->geometry, p, d, INFINITY);
+                int k = cdl_reinhart_patch_of(pt, d);
+                w->t_num[k] += omega / m * T * c;
+                w->t_den[k] += omega / m * c;
+                all_num += omega / m * T * c;
+                all_den += omega / m * c;
+            }
+        }
+    double mean = all_den > 0.0 ? all_num / all_den : 0.0;
+    for (size_t k = 0; k < K; ++k)
+        if (w->direct[k] > 0.0) w->direct[k] *= w->t_den[k] > 0.0 ? w->t_num[k] / w->t_den[k] : mean;
+}
+
+/* The direct part at p exactly where the exact route can say what p sees
+ * (through glass: weighed with the panes' transmittance): 1 with
+ * w->direct filled, 0 (w->direct zero) where it is to be sampled. */
+static int direct_exact(const job *jb, worker *w, uint64_t stream, cdl_vec3 p, cdl_vec3 n)
 {
     const cdl_reinhart_patches *pt = jb->o->patches;
     size_t K = (size_t)pt->count;
     memset(w->direct, 0, K * sizeof *w->direct);
-    void *user[3] = {(void *)pt, &n, w->direct};
-    cdl_direct_route route = cdl_direct_visible_sky(&jb->ds->direct, p, n, add_piece, user);
+    w->piece_count = 0;
+    piece_sink sink = {pt, n, w, 0};
+    int glass = 0;
+    cdl_direct_route route = cdl_direct_visible_sky_through_glass(&jb->ds->direct, p, n, add_piece, &sink, &glass);
+    if (route == CDL_ROUTE_VISIBLE_POLYGON && sink.overflow) route = CDL_ROUTE_TOO_COMPLEX;
     if (route == CDL_ROUTE_VISIBLE_POLYGON) {
-        w->routes.exact++;
+        if (glass) {
+            weigh_glass(jb, w, cdl_rng_stream_id(stream, 0, 0x676c617373 /* "glass" */), p, n);
+            w->routes.through_glass++;
+        } else {
+            w->routes.exact++;
+        }
         return 1;
     }
     if (route != CDL_ROUTE_FULL_VIEW) {
@@ -138,6 +227,69 @@ static int direct_exact(const job *jb, worker *w, cdl_vec3 p, cdl_vec3 n)
 typedef struct path_sums {
     double f_sky, f_sun;
 } path_sums;
+
+/* Next-event estimation towards the sky from a reflection at hit (throughput
+ * wt): one direction drawn in the sky the hit sees, as the exact route finds
+ * it (panes taken as clear, then their transmittance along the direction):
+ * a fan triangle of its pieces with probability proportional to its
+ * projected solid angle Omega_p,t, a direction uniform in its solid angle
+ * Omega_t, so that Omega_t cos T / P_t estimates int T cos dw over the sky
+ * seen (unbiased; no shadow ray misses a window). Returns 0, adding
+ * nothing, where the exact route cannot say what the hit sees: the path's
+ * next escape counts instead. */
+static int sky_at(const job *jb, worker *w, const cdl_surface_hit *hit, double wt, cdl_rng_key key, int depth,
+                  double *acc, path_sums *s)
+{
+    w->piece_count = 0;
+    piece_sink sink = {NULL, hit->n, w, 0};
+    int glass = 0;
+    cdl_direct_route route =
+        cdl_direct_visible_sky_through_glass(&jb->ds->direct, hit->p, hit->n, add_piece, &sink, &glass);
+    double u[2];
+    cdl_rng_uniform2(key, (uint64_t)(0x10000 + 2 * depth), u);
+    if (route == CDL_ROUTE_FULL_VIEW) {
+        /* the whole hemisphere: a cosine-weighted direction, pi L a sample */
+        cdl_frame f = cdl_frame_from_normal(hit->n);
+        cdl_vec3 d = cdl_frame_to_world(&f, cdl_sample_cosine_hemisphere(u[0], u[1]));
+        double v = CDL_PI * wt;
+        if (acc) acc[cdl_reinhart_patch_of(jb->o->patches, d)] += v;
+        s->f_sky += v;
+        return 1;
+    }
+    if (route != CDL_ROUTE_VISIBLE_POLYGON || sink.overflow) return 0;
+    double total = 0.0;
+    for (size_t i = 0; i < w->piece_count; ++i)
+        for (int t = 1; t + 1 < w->pieces[i].count; ++t) {
+            const cdl_vec3 tri[3] = {w->pieces[i].v[0], w->pieces[i].v[t], w->pieces[i].v[t + 1]};
+            total += fabs(cdl_projected_solid_angle_polygon(tri, 3, hit->n));
+        }
+    if (!(total > 0.0)) return 1; /* it sees no sky */
+    double pick = u[0] * total;
+    for (size_t i = 0; i < w->piece_count; ++i)
+        for (int t = 1; t + 1 < w->pieces[i].count; ++t) {
+            const cdl_vec3 tri[3] = {w->pieces[i].v[0], w->pieces[i].v[t], w->pieces[i].v[t + 1]};
+            double q = fabs(cdl_projected_solid_angle_polygon(tri, 3, hit->n));
+            if (pick >= q && !(i + 1 == w->piece_count && t + 2 == w->pieces[i].count)) {
+                pick -= q;
+                continue;
+            }
+            cdl_spherical_triangle st;
+            double omega = cdl_spherical_triangle_init(&st, tri[0], tri[1], tri[2]);
+            if (!(omega > 0.0) || !(q > 0.0)) return 1;
+            double u2[2];
+            cdl_rng_uniform2(key, (uint64_t)(0x10001 + 2 * depth), u2);
+            cdl_vec3 d = cdl_spherical_triangle_sample(&st, u2[0], u2[1]);
+            double c = cdl_vec3_dot(hit->n, d);
+            if (!(c > 0.0)) return 1;
+            w->rays++;
+            double T = glass ? cdl_scene_geometry_transmission(jb->ds->geometry, hit->p, d, INFINITY) : 1.0;
+            double v = wt * omega * c * T * total / q;
+            if (acc) acc[cdl_reinhart_patch_of(jb->o->patches, d)] += v;
+            s->f_sky += v;
+            return 1;
+        }
+    return 1;
+}
 
 /* Next-event estimation towards every sun from a reflection at hit
  * (throughput w, the hit's reflectance and panes included). */
@@ -166,13 +318,15 @@ static path_sums trace_path(const job *jb, worker *w, cdl_rng_key key, cdl_vec3 
     path_sums s = {0.0, 0.0};
     double wt = 1.0;
     cdl_vec3 origin = p, origin_n = n;
+    int escape_counts = first_escape_counts;
     w->paths++;
     for (int depth = 0; depth < CDL_PATH_MAX_DEPTH; ++depth) {
         cdl_surface_hit hit;
         w->rays++;
         if (!cdl_transport_trace(jb->ds->geometry, origin, origin_n, dir, &hit)) {
-            /* E = int L cos dw by cosine-weighted directions: pi L a sample */
-            if (depth > 0 || first_escape_counts) {
+            /* E = int L cos dw by cosine-weighted directions: pi L a sample
+             * (unless the sky was reached by next-event estimation) */
+            if (escape_counts) {
                 double v = CDL_PI * wt * hit.transmission;
                 if (acc) acc[cdl_reinhart_patch_of(jb->o->patches, dir)] += v;
                 s.f_sky += v;
@@ -183,6 +337,7 @@ static path_sums trace_path(const job *jb, worker *w, cdl_rng_key key, cdl_vec3 
         wt *= hit.transmission * hit.reflectance;
         if (!(wt > 0.0)) break;
         suns_at(jb, w, &hit, wt, sun_acc, &s);
+        escape_counts = !sky_at(jb, w, &hit, wt, key, depth, acc, &s);
         double u[2];
         cdl_rng_uniform2(key, (uint64_t)(1 + 2 * depth), u);
         double q = wt < RR_THRESHOLD ? wt / RR_THRESHOLD : 1.0;
@@ -229,14 +384,14 @@ static void point_coefficients(const job *jb, worker *w, size_t i)
     cdl_daylight_grid_coefficients *out = jb->out;
     size_t K = (size_t)o->patches->count, S = o->sun_count;
     cdl_vec3 p = jb->grid->points[i], n = jb->grid->normals[i];
-    int exact = direct_exact(jb, w, p, n);
+    uint64_t stream = cdl_rng_stream_id(jb->grid_key, (uint64_t)i, 0x636f6566 /* "coef" */);
+    int exact = direct_exact(jb, w, stream, p, n);
     double E_direct = 0.0;
     for (size_t k = 0; k < K; ++k) E_direct += w->direct[k];
     memset(w->acc, 0, K * sizeof *w->acc);
     if (S) memset(w->sun_acc, 0, S * sizeof *w->sun_acc);
     double sky_var = 0.0, sun_mean = 0.0, sun_var = 0.0, stage = 0.0;
     if (jb->ds->geometry && cdl_scene_geometry_piece_count(jb->ds->geometry) > 0) {
-        uint64_t stream = cdl_rng_stream_id(jb->grid_key, (uint64_t)i, 0x636f6566 /* "coef" */);
         /* The pilot only plans (estimate.h): how many paths the point needs
          * for the sampled part under a uniform sky to meet the target. */
         cdl_estimate ps = {0.0, 0.0, 0.0, 0}, pu = {0.0, 0.0, 0.0, 0};
@@ -296,6 +451,9 @@ static void workers_release(worker *w, int threads)
         free(w[t].acc);
         free(w[t].sun_acc);
         free(w[t].full);
+        free(w[t].t_num);
+        free(w[t].t_den);
+        free(w[t].pieces);
     }
     free(w);
 }
@@ -324,7 +482,9 @@ cdl_status cdl_daylight_coefficients_compute(const cdl_daylight_scene *ds, size_
         w[t].acc = malloc(K * sizeof(double));
         w[t].full = malloc(K * sizeof(double));
         w[t].sun_acc = malloc((S ? S : 1) * sizeof(double));
-        ok = w[t].direct && w[t].acc && w[t].full && w[t].sun_acc;
+        w[t].t_num = malloc(K * sizeof(double));
+        w[t].t_den = malloc(K * sizeof(double));
+        ok = w[t].direct && w[t].acc && w[t].full && w[t].sun_acc && w[t].t_num && w[t].t_den;
     }
     if (!ok) {
         workers_release(w, threads);
@@ -342,6 +502,7 @@ cdl_status cdl_daylight_coefficients_compute(const cdl_daylight_scene *ds, size_
         out->paths += w[t].paths;
         out->rays += w[t].rays;
         out->routes.exact += w[t].routes.exact;
+        out->routes.through_glass += w[t].routes.through_glass;
         for (int r = 0; r < CDL_ROUTE_COUNT; ++r) out->routes.sampled[r] += w[t].routes.sampled[r];
     }
     workers_release(w, threads);

@@ -16,8 +16,13 @@
  *    (solver/direct: the whole hemisphere, or the visible polygons past at
  *    most CDL_EXACT_ROUTE_MAX_OCCLUDERS planar occluders, no glass), each
  *    visible polygon cut by the patches in closed form
- *    (cdl_reinhart_add_polygon); elsewhere sampled with the paths' first
- *    rays (below), which pass panes of glass with their transmittance;
+ *    (cdl_reinhart_add_polygon); where panes of glass are in the way, the
+ *    same polygons seen through them (panes taken as clear), each patch's
+ *    part then times the panes' mean transmittance over it, cosine-
+ *    weighted, from GLASS_SAMPLES directions drawn over the polygons (T
+ *    varies slowly with the angle of incidence: the ratio is close whatever
+ *    the draw); elsewhere (curved or too many occluders) sampled with the
+ *    paths' first rays (below), which pass panes with their transmittance;
  *  - interreflected: paths from the point (transport/surface_hit.h), the
  *    first direction stratified and cosine-weighted, each reflection
  *    Lambertian with the surface's reflectance and Russian roulette, as the
@@ -86,6 +91,7 @@ typedef struct cdl_daylight_coefficient_options {
 /* Points per route of the direct sky part. */
 typedef struct cdl_daylight_routes {
     size_t exact;                         /* the whole hemisphere, or visible polygons */
+    size_t through_glass;                 /* visible polygons through panes, weighed by their transmittance */
     size_t sampled[CDL_ROUTE_COUNT];      /* sampled, by the route's reason */
 } cdl_daylight_routes;
 

@@ -128,6 +128,13 @@ typedef void (*cdl_sky_piece_fn)(void *user, const cdl_vec3 *dirs, int count);
 cdl_direct_route cdl_direct_visible_sky(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_sky_piece_fn piece,
                                         void *user);
 
+/* The same with panes of glass taken as clear: the pieces are what p sees
+ * through them and past everything else, and *through_glass says whether
+ * any pane was among the occluders (the caller then weighs the pieces with
+ * the panes' transmittance itself: cdl_scene_geometry_transmission). */
+cdl_direct_route cdl_direct_visible_sky_through_glass(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n,
+                                                      cdl_sky_piece_fn piece, void *user, int *through_glass);
+
 /* Most occluders between a point and a light for the exact route. */
 #define CDL_EXACT_ROUTE_MAX_OCCLUDERS 64
 

@@ -386,9 +386,12 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     return CDL_ROUTE_VISIBLE_POLYGON;
 }
 
-cdl_direct_route cdl_direct_visible_sky(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_sky_piece_fn piece,
-                                        void *user)
+/* The visible sky's pieces; glass_clear: panes are left out of the
+ * occluders (*glass_seen says whether there were any). */
+static cdl_direct_route visible_sky(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_sky_piece_fn piece,
+                                    void *user, int glass_clear, int *glass_seen)
 {
+    *glass_seen = 0;
     if (!ctx->geometry || !ctx->occluders) return CDL_ROUTE_FULL_VIEW;
     /* a sky of every direction: its region is the half-space above p's plane */
     cdl_scene_light sky;
@@ -404,12 +407,20 @@ cdl_direct_route cdl_direct_visible_sky(const cdl_direct_context *ctx, cdl_vec3 
         cdl_occluder_index_list(ctx->occluders, &region, tol, UINT32_MAX, occ, CDL_EXACT_ROUTE_MAX_OCCLUDERS, &count);
     if (ls == CDL_OCCLUDERS_SPHERE) return CDL_ROUTE_CURVED_OCCLUDER;
     if (ls == CDL_OCCLUDERS_TOO_MANY) return CDL_ROUTE_TOO_MANY;
-    if (count == 0) return CDL_ROUTE_FULL_VIEW;
+    size_t kept = 0;
     for (size_t i = 0; i < count; ++i) {
         const cdl_geometry_piece *g = cdl_scene_geometry_piece(ctx->geometry, occ[i].owner);
         if (g->shape.kind == CDL_SHAPE_DISK) return CDL_ROUTE_CURVED_OCCLUDER;
-        if (g->transmittance > 0.0) return CDL_ROUTE_GLASS;
+        if (g->transmittance > 0.0) {
+            if (!glass_clear) return CDL_ROUTE_GLASS;
+            *glass_seen = 1;
+            continue;
+        }
+        occ[kept++] = occ[i];
     }
+    count = kept;
+    /* nothing in the way (but panes, whose pieces the caller weighs: handed over) */
+    if (count == 0 && !*glass_seen) return CDL_ROUTE_FULL_VIEW;
     double near = NEAR_FRACTION * cdl_ray_offsets_epsilon(&ctx->offsets, p);
     cdl_visible_face faces[5];
     if (!sky_faces(&sky, p, n, near, occ, count, faces)) return CDL_ROUTE_TOO_COMPLEX;
@@ -430,6 +441,19 @@ cdl_direct_route cdl_direct_visible_sky(const cdl_direct_context *ctx, cdl_vec3 
     }
     faces_release(faces);
     return CDL_ROUTE_VISIBLE_POLYGON;
+}
+
+cdl_direct_route cdl_direct_visible_sky(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_sky_piece_fn piece,
+                                        void *user)
+{
+    int glass = 0;
+    return visible_sky(ctx, p, n, piece, user, 0, &glass);
+}
+
+cdl_direct_route cdl_direct_visible_sky_through_glass(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n,
+                                                      cdl_sky_piece_fn piece, void *user, int *through_glass)
+{
+    return visible_sky(ctx, p, n, piece, user, 1, through_glass);
 }
 
 int cdl_direct_exact_term(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy st,

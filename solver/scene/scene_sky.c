@@ -68,7 +68,7 @@ static cdl_status build_perez(const cdl_luminaire_spec *sp, cdl_scene_sky_emitte
 {
     const cdl_daylight_spec *d = &sp->daylight;
     cdl_perez_input in = {90.0 - d->sun_altitude_deg, d->day_of_year, !d->radiometric, d->direct_normal,
-                          d->diffuse_horizontal, d->dew_point_c};
+                          d->diffuse_horizontal, d->dew_point_c, 0};
     cdl_perez_sky perez;
     cdl_status st = cdl_perez_sky_compute(&in, &perez, err);
     if (st != CDL_OK) return st;

@@ -36,7 +36,7 @@ static void test_da_udi(void)
         E[h * N + 2] = occ[h] ? (h == 18 ? 3000.0f : 300.0f) : 3000.5f;
     }
     double w[N] = {1.0, 2.0, 1.0};
-    cdl_annual_input in = {H, N, E, NULL, occ, day, w};
+    cdl_annual_input in = {H, N, E, NULL, NULL, occ, day, w};
     cdl_point_metrics m[N];
     cdl_grid_annual_metrics g;
     cdl_error err;
@@ -54,6 +54,25 @@ static void test_da_udi(void)
     /* EN 17037 per point: all 20 hours are daylight hours; point 1 has
      * 100 h >= 300 for h >= 3: 17 of 20 */
     CHECK_ABS(m[1].EN17037_target, 85.0, 1e-12);
+
+    /* the same year kept as rows of the even hours only, the odd ones dark
+     * (row -1): as the full table with the odd hours at 0 lx */
+    float rows[10 * N], full[H * N];
+    int row_of[H];
+    for (int h = 0; h < H; ++h) {
+        row_of[h] = h % 2 ? -1 : h / 2;
+        for (int i = 0; i < N; ++i) {
+            full[h * N + i] = h % 2 ? 0.0f : E[h * N + i];
+            if (h % 2 == 0) rows[(h / 2) * N + i] = E[h * N + i];
+        }
+    }
+    cdl_point_metrics a[N], b[N];
+    cdl_grid_annual_metrics ga, gb;
+    cdl_annual_input compact = {H, N, rows, NULL, row_of, occ, day, w}, plain = {H, N, full, NULL, NULL, occ, day, w};
+    CHECK_OK(cdl_annual_metrics_compute(&compact, a, &ga, &err), &err);
+    CHECK_OK(cdl_annual_metrics_compute(&plain, b, &gb, &err), &err);
+    CHECK(memcmp(a, b, sizeof a) == 0 && ga.sDA300 == gb.sDA300 && ga.UDI == gb.UDI);
+    CHECK_ABS(a[1].EN17037_target, 40.0, 1e-12); /* the even hours from 4 on: 8 of 20 */
 }
 
 static void test_ase(void)
@@ -67,7 +86,7 @@ static void test_ase(void)
         S[h * N + 0] = h < 251 ? 1000.0f : 999.9f;
         S[h * N + 1] = h < 250 ? 5000.0f : 0.0f;
     }
-    cdl_annual_input in = {H, N, E, S, occ, day, NULL};
+    cdl_annual_input in = {H, N, E, S, NULL, occ, day, NULL};
     cdl_point_metrics m[N];
     cdl_grid_annual_metrics g;
     cdl_error err;
@@ -101,7 +120,7 @@ static void test_en17037(void)
         day[h] = h < 6;
         for (int i = 0; i < N; ++i) E[h * N + i] = rows[h][i];
     }
-    cdl_annual_input in = {H, N, E, NULL, occ, day, NULL};
+    cdl_annual_input in = {H, N, E, NULL, NULL, occ, day, NULL};
     cdl_point_metrics m[N];
     cdl_grid_annual_metrics g;
     cdl_error err;
@@ -143,7 +162,7 @@ static void test_refused(void)
     cdl_point_metrics m[1];
     cdl_grid_annual_metrics g;
     cdl_error err;
-    cdl_annual_input in = {2, 1, E, NULL, none, all, NULL};
+    cdl_annual_input in = {2, 1, E, NULL, NULL, none, all, NULL};
     CHECK(cdl_annual_metrics_compute(&in, m, &g, &err) == CDL_ERR_INPUT && strstr(err.message, "occupied hour"));
     in.occupied = all;
     in.daylight = none;
