@@ -15,6 +15,7 @@ packages=(
   python3-jsonschema
   python3-numpy python3-pytest python3-pip python3-setuptools python3-wheel python3-venv python3-matplotlib
   libcairo2-dev libpango1.0-dev
+  libopenblas-dev
   fonts-dejavu-core chromium poppler-utils
   libopenmpi-dev openmpi-bin
 )

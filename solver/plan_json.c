@@ -87,6 +87,13 @@ cdl_status cdl_plan_json_create(const cdl_solve_state *state, cdl_plan_json **ou
     return CDL_OK;
 }
 
+void cdl_plan_json_daylight_factor(cdl_plan_json *plan, const char *grid, const char *words)
+{
+    cJSON *df = cJSON_GetObjectItemCaseSensitive(plan->root, "daylight_factor");
+    if (!df) df = cJSON_AddObjectToObject(plan->root, "daylight_factor");
+    if (df) cJSON_AddStringToObject(df, grid, words);
+}
+
 cdl_status cdl_plan_json_lights(cdl_plan_json *plan, const cdl_solve_state *state, cdl_error *err)
 {
     const cdl_scene_lights *lights = &state->lights;
@@ -100,6 +107,7 @@ cdl_status cdl_plan_json_lights(cdl_plan_json *plan, const cdl_solve_state *stat
         cJSON *item = cJSON_CreateObject();
         cJSON_AddStringToObject(item, "light", lights->lights[l].label);
         cJSON_AddStringToObject(item, "kind", lights->kinds[l]);
+        if (lights->lights[l].model) cJSON_AddStringToObject(item, "model", lights->lights[l].model);
         if (lights->lights[l].near_field_unspread)
             cJSON_AddStringToObject(item, "near_field",
                                     "\"always\" asked, but the file gives no luminous opening that is spread "

@@ -27,6 +27,9 @@ void cdl_plan_json_grid(cdl_plan_json *plan, const cdl_solve_state *state, const
 
 /* The surface maps: their meshes' counts and how their light was found. */
 void cdl_plan_json_surfaces(cdl_plan_json *plan, const cdl_solve_state *state);
+/* A grid's daylight factor, in words (daylight_factor.h), under
+ * "daylight_factor": {GRID: WORDS}. */
+void cdl_plan_json_daylight_factor(cdl_plan_json *plan, const char *grid, const char *words);
 
 /* The totals after every grid: evaluations, interreflection, the cache file. */
 void cdl_plan_json_totals(cdl_plan_json *plan, const cdl_solve_state *state);

@@ -31,6 +31,7 @@ cdl_status cdl_grid_solution_alloc_outputs(cdl_grid_solution *gs, const cdl_grid
     if (spec->want_luminance &&
         (!(gs->L = calloc(n, sizeof(double))) || !(gs->rho = calloc(n, sizeof(double)))))
         return cdl_error_out_of_memory(err);
+    if (spec->want_daylight_factor && !(gs->DF = calloc(n, sizeof(double)))) return cdl_error_out_of_memory(err);
     return CDL_OK;
 }
 
@@ -76,6 +77,7 @@ void cdl_grid_solution_release(cdl_grid_solution *gs)
     free(gs->Esz_stderr);
     free(gs->L);
     free(gs->rho);
+    free(gs->DF);
     memset(gs, 0, sizeof *gs);
 }
 
@@ -200,6 +202,7 @@ const double *cdl_solution_grid_values(const cdl_solution *s, size_t grid, cdl_g
     case CDL_GRID_ESZ: return gs->Esz;
     case CDL_GRID_ESZ_STDERR: return gs->Esz_stderr;
     case CDL_GRID_L: return gs->L;
+    case CDL_GRID_DF: return gs->DF;
     }
     return NULL;
 }

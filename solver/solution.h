@@ -43,7 +43,9 @@ typedef enum cdl_grid_quantity {
     CDL_GRID_EZ_STDERR,       /* its standard error where part of it is sampled, lx */
     CDL_GRID_ESZ,             /* semicylindrical illuminance, lx ("semicylindrical") */
     CDL_GRID_ESZ_STDERR,      /* its standard error where part of it is sampled, lx */
-    CDL_GRID_L                /* luminance rho E / pi of the surface under the point, cd/m^2 ("luminance") */
+    CDL_GRID_L,               /* luminance rho E / pi of the surface under the point, cd/m^2 ("luminance") */
+    CDL_GRID_DF               /* daylight factor 100 E / E_h under the CIE overcast sky, percent
+                               * ("daylight_factor") */
 } cdl_grid_quantity;
 
 /* A grid's statistics in EN 12464-1's terms. Set `size` to

@@ -41,6 +41,8 @@ typedef struct cdl_grid_solution {
     double *L;                        /* luminance rho E / pi of the surface under each point (cd/m^2); NULL
                                          unless asked for */
     double *rho;                      /* with L: the reflectance of that surface at each point */
+    double *DF;                       /* daylight factor 100 E / E_h, percent (E_h: the CIE overcast sky's
+                                         unobstructed horizontal illuminance); NULL unless asked for */
     /* Points lying where two surfaces meet (on the one they face and within
      * Embree's float resolution of another whose plane holds their normal,
      * as at the foot of a wall): their normal cannot say which side of that
@@ -169,7 +171,7 @@ struct cdl_solution {
 cdl_status cdl_grid_solution_alloc(cdl_grid_solution *gs, int want_ao, cdl_error *err);
 
 /* Zeroed arrays for the outputs `spec` asks for beyond E and ao:
- * Ez, Esz, and L with rho. Ownership: the grid solution's (released with
+ * Ez, Esz, L with rho, and DF. Ownership: the grid solution's (released with
  * the solution). Errors: CDL_ERR_INTERNAL (out of memory). */
 cdl_status cdl_grid_solution_alloc_outputs(cdl_grid_solution *gs, const cdl_grid_spec *spec, cdl_error *err);
 

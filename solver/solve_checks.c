@@ -3,8 +3,9 @@
  * After a solve, every luminaire (and emitting surface) is asked whether it
  * reaches any grid point: a delta light at a point in front of the point's
  * plane whose shadow ray is clear (the same test E uses); an extended light
- * at a point where its closed form is above 0 and one of up to 16
- * stratified samples of it is in view. A light that reaches none is named
+ * at a point where its closed form is above 0 and the exact route finds
+ * part of it in view (cdl_direct_light_seen), or, where that cannot tell,
+ * one of up to 16 stratified samples of it is in view. A light that reaches none is named
  * in a warning that says why: its light meets no grid point (facing away,
  * the grids outside its beam) or surfaces hide it from every point (above
  * a ceiling, outside a closed room), and when its position lies far
@@ -44,15 +45,19 @@ static reach light_reaches(const cdl_direct_context *ctx, size_t l, cdl_light_st
         cdl_delta_light d;
         if (!cdl_emitter_eval_delta(light->emitter, p, n, &d) || !(d.E.lx > 0.0)) return REACH_NONE;
         if (st != CDL_STRATEGY_DELTA_SHADOWED || !ctx->geometry) return REACH_LIT;
-        return cdl_scene_geometry_ray_occluded(ctx->geometry, p, n, d.to_light, d.distance) ? REACH_HIDDEN : REACH_LIT;
+        return cdl_scene_geometry_transmission(ctx->geometry, p, d.to_light, d.distance) > 0.0 ? REACH_LIT : REACH_HIDDEN;
     }
     /* Extended: the closed form where the emitter has one (a luminous
-     * solid has none); then probes, which also say whether it is hidden. */
+     * solid has none); then the visible part as the exact route finds it
+     * (a window's sky that the probes below could miss), where it can
+     * tell; then probes, which also say whether it is hidden. */
     int closed_form = cdl_emitter_has_exact_illuminance(light->emitter);
     if (closed_form) {
         cdl_illuminance E;
         if (cdl_emitter_exact_illuminance(light->emitter, p, n, &E, NULL) != CDL_OK || !(E.lx > 0.0)) return REACH_NONE;
         if (st == CDL_STRATEGY_EXTENDED_EXACT || !ctx->geometry) return REACH_LIT;
+        int route = cdl_direct_light_seen(ctx, light, st, p, n);
+        if (route >= 0) return route ? REACH_LIT : REACH_HIDDEN;
     }
     int seen = closed_form;
     for (int j = 0; j < EXTENDED_PROBES; ++j)
@@ -63,7 +68,7 @@ static reach light_reaches(const cdl_direct_context *ctx, size_t l, cdl_light_st
                 !(cdl_vec3_dot(s.to_light, n) > 0.0))
                 continue;
             seen = 1;
-            if (!ctx->geometry || !cdl_scene_geometry_ray_occluded(ctx->geometry, p, n, s.to_light, s.distance))
+            if (!ctx->geometry || cdl_scene_geometry_transmission(ctx->geometry, p, s.to_light, s.distance) > 0.0)
                 return REACH_LIT;
         }
     return seen ? REACH_HIDDEN : REACH_NONE;

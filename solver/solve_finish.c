@@ -57,6 +57,8 @@ cdl_status cdl_solve_finish_grid(cdl_solve_state *state, cdl_grid_job *job, cdl_
         /* Luminance of a Lambertian surface under illuminance E: L = rho E / pi
          * (its exitance rho E spread as pi L over the hemisphere). */
         if (gs->L) gs->L[i] = gs->rho[i] * gs->E[i] / CDL_PI;
+        /* Daylight factor (daylight_factor.h): DF = 100 E / E_h. */
+        if (gs->DF) gs->DF[i] = 100.0 * gs->E[i] / job->plan->daylight_E_h;
     }
     return check_finite(state, job, err);
 }

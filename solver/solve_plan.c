@@ -16,6 +16,7 @@
 #include "base/strings.h"
 #include "base/error_report.h"
 #include "solver/auto_method.h"
+#include "solver/daylight_factor.h"
 #include "solver/plan_json.h"
 #include "solver/pool.h"
 #include "solver/scene/scene_occluders.h"
@@ -211,6 +212,11 @@ static cdl_status plan_grid(cdl_solve_state *state, size_t g, cdl_error *err)
     if (st == CDL_OK) st = check_vertical_outputs(state, g, &gs->grid, &plan->vertical_sampled, err);
     if (st == CDL_OK && plan->vertical_sampled) st = cdl_grid_solution_alloc_vertical_stderr(gs, err);
     if (st == CDL_OK) st = find_reflectances(state, g, gs, err);
+    if (st == CDL_OK && spec->want_daylight_factor) {
+        char words[400];
+        st = cdl_daylight_factor_reference(scene, &state->lights, spec, &plan->daylight_E_h, words, sizeof words, err);
+        if (st == CDL_OK) cdl_plan_json_daylight_factor(state->plan, spec->name, words);
+    }
     if (st != CDL_OK) return st;
     plan->key = grid_key(spec->name);
     cdl_method method = cdl_auto_grid_method(scene->settings.method, gs->grid.count, state->target, &plan->score);

@@ -8,6 +8,7 @@
 
 static const cdl_command *const commands[] = {
     &cdl_command_info, &cdl_command_convert, &cdl_command_solve, &cdl_command_report, &cdl_command_bench,
+    &cdl_command_sun, &cdl_command_annual,
 };
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])
 

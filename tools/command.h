@@ -22,6 +22,8 @@ extern const cdl_command cdl_command_convert;
 extern const cdl_command cdl_command_solve;
 extern const cdl_command cdl_command_report;
 extern const cdl_command cdl_command_bench;
+extern const cdl_command cdl_command_sun;
+extern const cdl_command cdl_command_annual;
 
 /* Exit statuses, identical to cdl_status values. */
 enum { CDL_EXIT_OK = 0, CDL_EXIT_INPUT = 1, CDL_EXIT_USAGE = 2, CDL_EXIT_INTERNAL = 3 };

@@ -1,8 +1,9 @@
 /* scene_help.c - `candela help scene`: the scene format's reference, printed from its JSON Schema.
  *
  * Sections in the order a scene is written: the top level, surfaces, area
- * luminaires' shapes, luminaires, luminaire arrays, grids and their
- * points, grids' requirements, observers and theirs, solver settings. Each key on one line with what it takes (its
+ * luminaires' shapes, luminaires, the sun and the site of a daylight sky,
+ * luminaire arrays, grids and their points, grids' requirements, observers
+ * and theirs, solver settings. Each key on one line with what it takes (its
  * type, unit and range) and its default or "required", then what it
  * means. Everything comes from data/scene.schema.json (compiled in), so
  * the reference cannot say other than the schema editors check against.
@@ -33,6 +34,8 @@ static const char *ref_words(const char *ref)
         {"#/$defs/grid", "grid"},
         {"#/$defs/grid_point", "{\"p\": [x, y, z], \"n\": [nx, ny, nz]}"},
         {"#/$defs/requirements", "object (see \"grid requirements\")"},
+        {"#/$defs/sun", "object (see \"sun\")"},
+        {"#/$defs/site", "object (see \"site\")"},
         {"#/$defs/observer", "observer"},
         {"#/$defs/observer_requirements", "object (see \"observer requirements\")"},
         {"#/$defs/project", "object (see \"project\")"},
@@ -147,8 +150,8 @@ int cdl_scene_help_print(FILE *out)
     snprintf(top, sizeof top, "%s (the top level)", cJSON_IsString(root_title) ? root_title->valuestring : "scene");
     print_object(out, top, schema);
     const cJSON *defs = cJSON_GetObjectItemCaseSensitive(schema, "$defs");
-    static const char *const order[] = {"surface_",     "shape_",   "luminaire_", "array",  "grid_",
-                                        "requirements", "observer", "project",    "solver", NULL};
+    static const char *const order[] = {"surface_", "shape_",       "luminaire_", "sun",     "site",   "array",
+                                        "grid_",    "requirements", "observer",   "project", "solver", NULL};
     for (int k = 0; order[k]; ++k)
         for (const cJSON *d = defs ? defs->child : NULL; d; d = d->next) {
             const cJSON *t = cJSON_GetObjectItemCaseSensitive(d, "title");

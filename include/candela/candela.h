@@ -13,10 +13,13 @@
  *   radiometry/vec3.h             the 3-vector every position and direction is (inline)
  *   radiometry/cie_tables.h       CIE V(lambda) and V'(lambda)
  *   radiometry/spectrum.h         sampled spectra, Planck's law, luminous efficacy of a spectrum
+ *   radiometry/glass.h            a thin pane of glass: its transmittance by angle of incidence
  *   lights/photometry/photometry.h           photometric files: read (IES LM-63, EULUMDAT), summarise,
  *                                 convert (remap, resample), write
  *   lights/emitters/emitter.h              point, spot, goniometric, area, directional and sky emitters
  *   glare/ugr_table.h             a luminaire's CIE 190 UGR table (19 standard rooms, 5 reflectance sets)
+ *   lights/environment/solar_position.h    the sun's place for a site and time (NREL SPA)
+ *   lights/environment/perez_sky.h         the Perez all-weather sky's parameters from weather data
  *   solver/scene/scene.h          a scene from a file or a JSON string
  *   solver/progress.h             progress reports and cancelling of long calls
  *   solver/solution.h             results in memory: E, direct, indirect, stderr per point
@@ -105,9 +108,12 @@ extern "C" {
 #include "radiometry/vec3.h"
 #include "radiometry/cie_tables.h"
 #include "radiometry/spectrum.h"
+#include "radiometry/glass.h"
 #include "lights/photometry/photometry.h"
 #include "lights/emitters/emitter.h"
 #include "glare/ugr_table.h"
+#include "lights/environment/solar_position.h"
+#include "lights/environment/perez_sky.h"
 #include "solver/scene/scene.h"
 #include "solver/progress.h"
 #include "solver/solution.h"

@@ -8,6 +8,7 @@
  *   (opening)     the same, spread over the file's opening     the same
  *   area          Lambertian, one-sided shape, L (cd/m^2)     pi L A
  *   directional   direction of travel, E normal to the beam   E per m^2 of beam section
+ *   (sun disk)    the same from a disk of angular diameter     the same
  *   environment   uniform L, CIE overcast (L at   see cdl_emitter_flux
  *                 the zenith) or lat-long image,
  *                 up, hemisphere
@@ -134,18 +135,29 @@ typedef struct cdl_area_params {
     cdl_luminance luminance;               /* Lambertian, one-sided, >= 0 */
 } cdl_area_params;
 
+/* Parallel light, or (angular_diameter_deg > 0) light from a distant disk
+ * of that angular diameter and uniform luminance, `illuminance` normal to
+ * its axis: the sun, 0.533 degrees (emitter_directional.c). A disk is not
+ * a delta emitter: it has an exact illuminance, samples and radiance. */
 typedef struct cdl_directional_params {
-    cdl_vec3 direction;                    /* direction the light travels */
+    cdl_vec3 direction;                    /* direction the light travels (the disk's axis) */
     cdl_illuminance illuminance;           /* measured normal to the beam */
+    double angular_diameter_deg;           /* 0 (default): parallel; else in (0, 10] */
 } cdl_directional_params;
 
 /* The luminance of an environment without an image (image == NULL). */
 typedef enum cdl_sky_model {
     CDL_SKY_UNIFORM,                       /* `luminance` in every direction */
-    CDL_SKY_CIE_OVERCAST                   /* the CIE standard overcast sky (Moon and Spencer 1942, adopted by
+    CDL_SKY_CIE_OVERCAST,                  /* the CIE standard overcast sky (Moon and Spencer 1942, adopted by
                                             * the CIE in 1955; CIE 110-1994): L(theta) = L_z (1 + 2 cos theta)
                                             * / 3, theta from `up`, L_z = `luminance`; nothing below the
                                             * horizon */
+    CDL_SKY_CIE_GENERAL,                   /* the CIE standard general sky of type `cie_type` (1..15; ISO
+                                            * 15469:2004 / CIE S 011/E:2003): L = L_z phi(Z) f(chi) / (phi(0)
+                                            * f(Z_s)), Z from `up`, chi from `sun`; nothing below the horizon */
+    CDL_SKY_PEREZ                          /* the Perez all-weather sky (Perez, Seals and Michalsky 1993) of
+                                            * coefficients `perez` (cdl_perez_sky_compute), the same form
+                                            * without the CIE's offset in f, negative values taken as 0 */
 } cdl_sky_model;
 
 typedef struct cdl_environment_params {
@@ -165,8 +177,23 @@ typedef struct cdl_environment_params {
     int width, height;
     double scale;                          /* multiplies the image, > 0 (default 1) */
     cdl_sky_model sky;                     /* image == NULL: the model (default CDL_SKY_UNIFORM) */
+    /* CDL_SKY_CIE_GENERAL and CDL_SKY_PEREZ: */
+    int cie_type;                          /* 1..15 */
+    double perez[5];                       /* a, b, c, d, e of the Perez sky (b < 0) */
+    cdl_vec3 sun;                          /* towards the sun, any length > 0; above the horizon unless the
+                                            * sky's indicatrix is constant (CIE types 1, 3, 5) */
+    int scale_to_horizontal;               /* 1: scale so that the unobstructed horizontal illuminance is
+                                            * `horizontal` (`luminance` unused); 0: `luminance` is L_z */
+    cdl_illuminance horizontal;            /* >= 0 */
 } cdl_environment_params;
-#define CDL_ENVIRONMENT_PARAMS_DEFAULT {{0.0, 0.0, 1.0}, 0, {0.0}, NULL, 0, 0, 1.0, CDL_SKY_UNIFORM}
+#define CDL_ENVIRONMENT_PARAMS_DEFAULT                                                                        \
+    {{0.0, 0.0, 1.0}, 0, {0.0}, NULL, 0, 0, 1.0, CDL_SKY_UNIFORM, 0, {0.0, 0.0, 0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, \
+     0, {0.0}}
+
+/* 1 when a CIE standard general sky type (1..15) brightens towards the sun
+ * (its indicatrix is not constant: every type but 1, 3 and 5), so that the
+ * sun's place matters. */
+int cdl_sky_cie_type_uses_sun(int type);
 
 /* Create an emitter of each kind from its parameters (validated, copied;
  * see the ownership note above for the photometry). */
@@ -253,6 +280,11 @@ cdl_status cdl_emitter_opening_partial_illuminance(const cdl_emitter *emitter, c
  * that needs many unshadowed values cheaply (next-event estimation)
  * sample such an emitter instead. */
 int cdl_emitter_opening_is_lambertian(const cdl_emitter *emitter);
+
+/* 1 for a directional emitter with a disk (angular_diameter_deg > 0):
+ * *to_light the unit direction of its axis towards it, *half_angle_rad
+ * half its angular diameter. 0 (and nothing set) for any other. */
+int cdl_emitter_directional_disk(const cdl_emitter *emitter, cdl_vec3 *to_light, double *half_angle_rad);
 
 /* The kind the emitter was created as. */
 cdl_emitter_kind cdl_emitter_get_kind(const cdl_emitter *emitter);

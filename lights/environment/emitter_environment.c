@@ -5,7 +5,13 @@
  *   upper_hemi...  1: nothing from below the horizon of up       -       0        0 or 1
  *   luminance      sky model's (image == NULL): everywhere       cd/m^2  -        >= 0
  *                  (uniform) or at the zenith (CIE overcast)
- *   sky            uniform or CIE overcast (image == NULL)       -       uniform
+ *   sky            uniform, CIE overcast, CIE general (type 1..  -       uniform
+ *                  15) or Perez (image == NULL)
+ *   cie_type       CIE general sky's type                        -       -        1..15
+ *   perez          Perez sky's a, b, c, d, e                     -       -        b < 0
+ *   sun            towards the sun (CIE general, Perez)          -       +z       above the horizon
+ *   horizontal     scale to this unobstructed horizontal E       lx      -        >= 0
+ *                  instead of L_z (scale_to_horizontal)
  *   image          lat-long luminance, width x height, copied    cd/m^2  NULL     finite, >= 0
  *   scale          multiplies the image                          -       1        > 0
  *
@@ -25,6 +31,8 @@
  *     E = (L_z / 3) [pi (1 + cos beta) / 2 + (4 / 3)((pi - beta) cos beta
  *     + sin beta)] (derivation at overcast_exact below), 7 pi L_z / 9 on
  *     a horizontal plane (beta = 0);
+ *   CIE general and Perez skies: a quadrature about the sun converged to
+ *     about 3e-8 (sky_distribution.h), 0.2 ms a plane;
  *   image: E(n) = sum over pixels of L_ij times the pixel's projected solid
  *     angle on n's hemisphere, exact (environment_pixels.h: the per-pixel
  *     vector integral of w for whole pixels, the boundary contour of the
@@ -38,7 +46,9 @@
  *
  * Sampling: uniform and overcast skies, cosine-weighted about the receiver
  * normal n (pdf = cos / pi: zero variance for a full uniform sky with
- * nothing in the way);
+ * nothing in the way); CIE general and Perez skies, that mixed half and
+ * half with a density about the sun where they brighten towards it
+ * (sky_distribution.h);
  * image, a pixel with probability L_ij Omega_j / sum(L Omega), then a
  * uniform direction within the pixel's solid angle: pdf = L_ij / sum(L Omega)
  * in solid angle, exact.
@@ -53,6 +63,7 @@
 #include "lights/emitters/emitter_internal.h"
 #include "lights/environment/environment_bounds.h"
 #include "lights/environment/environment_pixels.h"
+#include "lights/environment/sky_distribution.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "radiometry/sampling.h"
@@ -63,6 +74,7 @@ typedef struct environment_emitter {
     int upper_only;
     cdl_sky_model sky; /* without an image */
     double L;        /* uniform sky; the overcast sky's zenith */
+    cdl_sky_distribution model; /* CIE general and Perez skies */
     /* image */
     float *image;
     int width, height;
@@ -78,6 +90,12 @@ static const environment_emitter *as_env(const cdl_emitter *e)
     return (const environment_emitter *)e;
 }
 
+/* A CIE general or Perez sky (sky_distribution.h). */
+static int has_distribution(const environment_emitter *env)
+{
+    return !env->image && (env->sky == CDL_SKY_CIE_GENERAL || env->sky == CDL_SKY_PEREZ);
+}
+
 /* ---- flux ------------------------------------------------------------------- */
 
 static cdl_luminous_flux environment_flux(const cdl_emitter *e)
@@ -86,6 +104,7 @@ static cdl_luminous_flux environment_flux(const cdl_emitter *e)
     /* Uniform sky over the upper hemisphere: int L cos dw = pi L; the
      * overcast sky's E on the horizontal (overcast_exact, beta = 0). */
     if (env->image) return cdl_lumens(env->flux);
+    if (has_distribution(env)) return cdl_lumens(env->flux);
     return cdl_lumens(env->sky == CDL_SKY_CIE_OVERCAST ? 7.0 * CDL_PI * env->L / 9.0 : CDL_PI * env->L);
 }
 
@@ -127,6 +146,10 @@ static int environment_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_i
         *E = cdl_lux(overcast_exact(env->L, fmax(-1.0, fmin(1.0, cdl_vec3_dot(n, env->frame.n)))));
         return 1;
     }
+    if (has_distribution(env)) {
+        *E = cdl_lux(cdl_sky_distribution_illuminance(&env->model, n));
+        return 1;
+    }
     if (!env->upper_only) {
         /* The receiver's whole hemisphere is sky: int L cos dw = pi L. */
         *E = cdl_lux(CDL_PI * env->L);
@@ -153,6 +176,7 @@ static cdl_luminance sky_radiance_towards(const environment_emitter *env, cdl_ve
 {
     double cos_theta = cdl_vec3_dot(w, env->frame.n);
     if (env->upper_only && !(cos_theta > 0.0)) return cdl_nits(0.0);
+    if (has_distribution(env)) return cdl_nits(cdl_sky_distribution_luminance(&env->model, w));
     if (env->sky == CDL_SKY_CIE_OVERCAST) return cdl_nits(env->L * (1.0 + 2.0 * fmin(1.0, cos_theta)) / 3.0);
     return cdl_nits(env->L);
 }
@@ -172,7 +196,10 @@ static int environment_sample(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, doub
     cdl_vec3 w;
     double pdf;
     cdl_luminance L;
-    if (!env->image) {
+    if (has_distribution(env)) {
+        w = cdl_sky_distribution_sample(&env->model, n, u1, u2, &pdf);
+        L = sky_radiance_towards(env, w);
+    } else if (!env->image) {
         cdl_frame f = cdl_frame_from_normal(n);
         w = cdl_frame_to_world(&f, cdl_sample_cosine_hemisphere(u1, u2));
         pdf = fmax(0.0, cdl_vec3_dot(n, w)) * CDL_INV_PI;
@@ -204,15 +231,20 @@ static cdl_luminance environment_radiance(const cdl_emitter *e, cdl_vec3 p, cdl_
 {
     (void)p;
     const environment_emitter *env = as_env(e);
+    if (has_distribution(env)) {
+        cdl_vec3 u = cdl_vec3_normalize(w);
+        if (pdf) *pdf = cdl_sky_distribution_pdf(&env->model, n, u);
+        return sky_radiance_towards(env, u);
+    }
     if (!env->image) {
-        *pdf = fmax(0.0, cdl_vec3_dot(n, w)) * CDL_INV_PI;
+        if (pdf) *pdf = fmax(0.0, cdl_vec3_dot(n, w)) * CDL_INV_PI;
         return sky_radiance_towards(env, w);
     }
     int i, j;
     if (!cdl_env_pixels_locate(&env->px, w, &i, &j)) return cdl_nits(0.0);
     double value = pixel_value(env, i, j);
     double total = cdl_distribution2d_total(env->dist);
-    *pdf = total > 0.0 ? value / total : 0.0;
+    if (pdf) *pdf = total > 0.0 ? value / total : 0.0;
     return cdl_nits(env->scale * value);
 }
 
@@ -268,22 +300,60 @@ static cdl_status build_image(environment_emitter *env, const cdl_environment_pa
     return CDL_OK;
 }
 
+/* A CIE general or Perez sky from its parameters, scaled by its zenith
+ * luminance or its horizontal illuminance. */
+static cdl_status build_distribution(environment_emitter *env, const cdl_environment_params *p, cdl_error *err)
+{
+    cdl_status st;
+    double coefficients[5], k = 0.0;
+    if (p->sky == CDL_SKY_CIE_GENERAL) {
+        if (!cdl_sky_cie_parameters(p->cie_type, coefficients))
+            return cdl_error_set(err, CDL_ERR_INPUT, "environment emitter: cie_type: expected 1 to 15, found %d",
+                                 p->cie_type);
+        /* f(pi / 2) = 1 + e cos^2(pi / 2): the indicatrix is 1 at right angles to the sun */
+        k = exp(coefficients[3] * 0.5 * CDL_PI);
+    } else {
+        for (int i = 0; i < 5; ++i) {
+            if (!isfinite(p->perez[i]))
+                return cdl_error_set(err, CDL_ERR_INPUT, "environment emitter: perez[%d]: expected a finite number, "
+                                                         "found %g", i, p->perez[i]);
+            coefficients[i] = p->perez[i];
+        }
+    }
+    cdl_vec3 sun;
+    if ((st = cdl_emitter_check_direction(p->sun, "environment emitter: sun", &sun, err)) != CDL_OK) return st;
+    if (p->scale_to_horizontal &&
+        (st = cdl_emitter_check_nonnegative(p->horizontal.lx, "environment emitter: horizontal", "lx", err)) != CDL_OK)
+        return st;
+    st = cdl_sky_distribution_init(&env->model, env->frame.n, env->frame.s, sun, coefficients, k,
+                                   p->sky == CDL_SKY_PEREZ, err);
+    if (st == CDL_OK)
+        st = cdl_sky_distribution_scale_to(&env->model, p->luminance.cd_m2,
+                                           p->scale_to_horizontal ? p->horizontal.lx : -1.0, err);
+    if (st != CDL_OK) return cdl_error_prefix(err, "environment emitter: ");
+    env->L = cdl_sky_distribution_zenith(&env->model);
+    env->flux = cdl_sky_distribution_illuminance(&env->model, env->frame.n);
+    return CDL_OK;
+}
+
 cdl_status cdl_emitter_create_environment(const cdl_environment_params *p, cdl_emitter **out, cdl_error *err)
 {
     *out = NULL;
     cdl_status st;
     cdl_vec3 up;
     if ((st = cdl_emitter_check_direction(p->up, "environment emitter: up", &up, err)) != CDL_OK) return st;
-    if (!p->image &&
+    if (!p->image && !p->scale_to_horizontal &&
         (st = cdl_emitter_check_nonnegative(p->luminance.cd_m2, "environment emitter: luminance", "cd/m^2", err)) !=
             CDL_OK)
         return st;
-    if (p->sky != CDL_SKY_UNIFORM && p->sky != CDL_SKY_CIE_OVERCAST)
-        return cdl_error_set(err, CDL_ERR_INPUT, "environment emitter: sky: expected uniform or CIE overcast, found %d",
+    if (p->sky != CDL_SKY_UNIFORM && p->sky != CDL_SKY_CIE_OVERCAST && p->sky != CDL_SKY_CIE_GENERAL &&
+        p->sky != CDL_SKY_PEREZ)
+        return cdl_error_set(err, CDL_ERR_INPUT,
+                             "environment emitter: sky: expected uniform, CIE overcast, CIE general or Perez, found %d",
                              (int)p->sky);
     if (p->image && p->sky != CDL_SKY_UNIFORM)
         return cdl_error_set(err, CDL_ERR_INPUT, "environment emitter: sky: expected no sky model with an image, "
-                                                 "found the CIE overcast sky");
+                                                 "found sky model %d", (int)p->sky);
     environment_emitter *env = cdl_emitter_alloc(sizeof *env, CDL_EMITTER_ENVIRONMENT, &environment_ops, err);
     if (!env) return CDL_ERR_INTERNAL;
     /* Azimuth reference: world +x made perpendicular to up (Gram-Schmidt). */
@@ -294,9 +364,14 @@ cdl_status cdl_emitter_create_environment(const cdl_environment_params *p, cdl_e
     env->sky = p->image ? CDL_SKY_UNIFORM : p->sky;
     /* The overcast sky has no ground: L would be below L_z / 3 and fall to
      * -L_z / 3 at the nadir. */
-    env->upper_only = p->upper_hemisphere_only || env->sky == CDL_SKY_CIE_OVERCAST ? 1 : 0;
+    env->upper_only = p->upper_hemisphere_only || env->sky != CDL_SKY_UNIFORM ? 1 : 0;
     env->L = p->image ? 0.0 : p->luminance.cd_m2;
     if (p->image && (st = build_image(env, p, err)) != CDL_OK) {
+        cdl_emitter_release(&env->base);
+        return st;
+    }
+    if (!p->image && (p->sky == CDL_SKY_CIE_GENERAL || p->sky == CDL_SKY_PEREZ) &&
+        (st = build_distribution(env, p, err)) != CDL_OK) {
         cdl_emitter_release(&env->base);
         return st;
     }
@@ -333,6 +408,8 @@ int cdl_emitter_luminance_bounds(const cdl_emitter *emitter, const cdl_vec3 *dir
     double L_lo, L_hi;
     if (env->image) {
         cdl_env_range_query(&env->range, &env->px, &e, &L_lo, &L_hi);
+    } else if (has_distribution(env)) {
+        cdl_sky_distribution_bounds(&env->model, dirs, count, &L_lo, &L_hi);
     } else if (env->sky == CDL_SKY_CIE_OVERCAST) {
         L_lo = e.cos_lo > 0.0 ? env->L * (1.0 + 2.0 * e.cos_lo) / 3.0 : 0.0;
         L_hi = e.cos_hi > 0.0 ? env->L * (1.0 + 2.0 * e.cos_hi) / 3.0 : 0.0;

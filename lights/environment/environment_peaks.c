@@ -80,22 +80,37 @@ static double cap_flux(const cdl_vec3 *poly, int count, double c, double s, cdl_
     return 0.5 * flux;
 }
 
+/* Q of the cell (its parallels by cosine and sine, its meridians phi_a <
+ * phi_b within pi) inside the polygon: R clipped by the two meridian planes
+ * (a convex spherical polygon again), then the cap below theta_b less the
+ * cap below theta_a. */
+static double cell_polygon(double cos_a, double sin_a, double cos_b, double sin_b, double phi_a, double phi_b,
+                           const cdl_vec3 *poly, int count, cdl_vec3 n_local)
+{
+    if (count < 3 || count > CDL_ENV_PEAK_MAX_VERTICES - 2) return 0.0;
+    cdl_vec3 a[CDL_ENV_PEAK_MAX_VERTICES], b[CDL_ENV_PEAK_MAX_VERTICES];
+    int m = clip_plane(poly, count, cdl_vec3_make(-sin(phi_a), cos(phi_a), 0.0), a);
+    if (m < 3) return 0.0;
+    m = clip_plane(a, m, cdl_vec3_make(sin(phi_b), -cos(phi_b), 0.0), b);
+    if (m < 3) return 0.0;
+    for (int k = 0; k < m; ++k) b[k] = cdl_vec3_normalize(b[k]);
+    double Q = cap_flux(b, m, cos_b, sin_b, n_local) - cap_flux(b, m, cos_a, sin_a, n_local);
+    return Q > 0.0 ? Q : 0.0;
+}
+
+double cdl_env_cell_polygon(double theta_a, double theta_b, double phi_a, double phi_b, const cdl_vec3 *poly,
+                            int count, cdl_vec3 n_local)
+{
+    return cell_polygon(cos(theta_a), sin(theta_a), cos(theta_b), sin(theta_b), phi_a, phi_b, poly, count, n_local);
+}
+
 double cdl_env_peaks_cell_polygon(const cdl_emitter *emitter, int i, int j, const cdl_vec3 *poly, int count,
                                   cdl_vec3 n_local)
 {
     const cdl_env_pixels *px = cdl_emitter_environment_pixels(emitter);
-    if (!px || count > CDL_ENV_PEAK_MAX_VERTICES - 2 || j >= px->rows) return 0.0;
-    /* The pixel's columns: phi - phi_a and phi_b - phi in [0, pi]. */
-    double pa = px->phi_a[i], pb = px->phi_a[i + 1];
-    cdl_vec3 a[CDL_ENV_PEAK_MAX_VERTICES], b[CDL_ENV_PEAK_MAX_VERTICES];
-    int m = clip_plane(poly, count, cdl_vec3_make(-sin(pa), cos(pa), 0.0), a);
-    if (m < 3) return 0.0;
-    m = clip_plane(a, m, cdl_vec3_make(sin(pb), -cos(pb), 0.0), b);
-    if (m < 3) return 0.0;
-    for (int k = 0; k < m; ++k) b[k] = cdl_vec3_normalize(b[k]);
-    /* its rows: the cap below theta_b less the cap below theta_a */
-    double Q = cap_flux(b, m, px->cos_b[j], px->sin_b[j], n_local) - cap_flux(b, m, px->cos_a[j], px->sin_a[j], n_local);
-    return Q > 0.0 ? Q : 0.0;
+    if (!px || j >= px->rows) return 0.0;
+    return cell_polygon(px->cos_a[j], px->sin_a[j], px->cos_b[j], px->sin_b[j], px->phi_a[i], px->phi_a[i + 1], poly,
+                        count, n_local);
 }
 
 /* The walk over the pyramid: one polygon, the cut, and the running sums. */

@@ -66,4 +66,11 @@ int cdl_env_peaks_add(const cdl_emitter *emitter, const cdl_vec3 *dirs, int coun
 double cdl_env_peaks_cell_polygon(const cdl_emitter *emitter, int i, int j, const cdl_vec3 *poly, int count,
                                   cdl_vec3 n_local);
 
+/* The same for any cell theta in [theta_a, theta_b], phi in [phi_a, phi_b]
+ * of the frame the polygon is given in (radians, 0 <= theta_a < theta_b <=
+ * pi, 0 < phi_b - phi_a < pi); 0 for a polygon of fewer than 3 or more than
+ * CDL_ENV_PEAK_MAX_VERTICES - 2 vertices. */
+double cdl_env_cell_polygon(double theta_a, double theta_b, double phi_a, double phi_b, const cdl_vec3 *poly,
+                            int count, cdl_vec3 n_local);
+
 #endif

@@ -28,6 +28,14 @@ const char *cdl_light_strategy_describe(cdl_light_strategy s, const cdl_scene_li
                "(the exact value less the hidden part): surfaces may hide part of this opening";
     if (opening && s == CDL_STRATEGY_SAMPLED)
         return "sampled with shadow rays: no exact value for this luminous solid's light while surfaces may hide it";
+    /* The sun as a disk: its own words (direct_exact_route.c). */
+    if (light && light->is_sun_disk && s == CDL_STRATEGY_EXTENDED_EXACT)
+        return "exact (E_n cos theta, the disk clipped by the receiving plane where it crosses it), nothing can "
+               "hide it";
+    if (light && light->is_sun_disk && s == CDL_STRATEGY_EXTENDED_TESTED)
+        return "exact where the sun's disk is in full view, its visible part past few planar occluders (the disk as "
+               "a 240-gon: the penumbra to 1e-4), else sampled within the disk with shadow rays: surfaces may hide "
+               "the sun";
     return cdl_light_strategy_name(s);
 }
 
@@ -97,7 +105,8 @@ void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points,
             strategies[l] = CDL_STRATEGY_SAMPLED;
         else if (!may_occlude)
             strategies[l] = CDL_STRATEGY_EXTENDED_EXACT;
-        else if (light->outline_count == 0 && !light->outline_is_sphere && !light->is_environment)
+        else if (light->outline_count == 0 && !light->outline_is_sphere && !light->is_environment &&
+                 !light->is_sun_disk)
             strategies[l] = CDL_STRATEGY_SAMPLED;
         else
             strategies[l] = CDL_STRATEGY_EXTENDED_TESTED;
@@ -157,7 +166,7 @@ static double delta_contribution(const cdl_direct_context *ctx, const cdl_scene_
 {
     cdl_delta_light d;
     double E = delta_unshadowed(light, p, n, &d);
-    if (E > 0.0 && st == CDL_STRATEGY_DELTA_SHADOWED && cdl_direct_shadowed(ctx, p, n, d.to_light, d.distance, stats)) return 0.0;
+    if (E > 0.0 && st == CDL_STRATEGY_DELTA_SHADOWED) E *= cdl_direct_transmission(ctx, p, n, d.to_light, d.distance, stats);
     return E;
 }
 
@@ -217,7 +226,7 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
             double e = delta_unshadowed(light, p, n, &d);
             if (!(e > 0.0)) continue;
             free_E += e;
-            if (!ctx->geometry || !cdl_direct_shadowed(ctx, p, n, d.to_light, d.distance, stats)) E += e;
+            E += e * cdl_direct_transmission(ctx, p, n, d.to_light, d.distance, stats);
             continue;
         }
         if (!cdl_scene_light_applies(light, p)) continue;
@@ -231,21 +240,20 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
         double u[2];
         cdl_rng_uniform2(key, (uint64_t)l, u);
         cdl_light_sample s;
-        double f = 0.0;
-        int visible = 1;
+        double f = 0.0, visible = 1.0; /* V: the sample's transmission, 0 or 1 but through glass */
         if (cdl_emitter_sample(light->emitter, p, n, u[0], u[1], &s) && s.pdf > 0.0) {
             double c = cdl_vec3_dot(n, s.to_light);
             if (c > 0.0) {
                 f = s.L.cd_m2 * c / s.pdf;
-                visible = !ctx->geometry || !cdl_direct_shadowed(ctx, p, n, s.to_light, s.distance, stats);
+                visible = cdl_direct_transmission(ctx, p, n, s.to_light, s.distance, stats);
             }
         }
         if (closed) {
             free_E += exact.lx;
-            E += visible ? exact.lx : exact.lx - f;
+            E += exact.lx - f * (1.0 - visible);
         } else {
             free_E += f;
-            E += visible ? f : 0.0;
+            E += f * visible;
         }
     }
     if (unoccluded) *unoccluded = free_E;
@@ -324,11 +332,16 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
             }
         }
     }
-    /* 2. The shadow rays, one after another. */
+    /* 2. The shadow rays, one after another (through glass, each carries
+     *    the panes' transmittance). */
+    int glass = ctx->geometry && cdl_scene_geometry_has_glass(ctx->geometry);
     for (size_t k = 0; k < pending; ++k) {
         const cdl_ray_record *r = &scratch->rays[k];
         if (ctx->log) cdl_direct_record_ray(ctx->log, r->origin, r->dir, r->t_near, r->t_far);
-        if (cdl_ray_scene_occluded(ctx->rays, r->origin, r->dir, r->t_near, r->t_far))
+        if (glass)
+            scratch->contribution[scratch->ray_slot[k]] *=
+                cdl_scene_geometry_transmission(ctx->geometry, r->origin, r->dir, r->t_far);
+        else if (cdl_ray_scene_occluded(ctx->rays, r->origin, r->dir, r->t_near, r->t_far))
             scratch->contribution[scratch->ray_slot[k]] = 0.0;
     }
     stats->rays += pending;

@@ -100,8 +100,41 @@ typedef enum cdl_direct_route {
     CDL_ROUTE_TOO_COMPLEX,            /* sampled: the visible part had too many pieces */
     CDL_ROUTE_SKY_PEAK,               /* sampled: a sky far brighter in too many pixels over the visible part */
     CDL_ROUTE_DISABLED,               /* sampled: the context asked for it (no_exact_route) */
+    CDL_ROUTE_GLASS,                  /* sampled: seen through glass, whose transmittance varies with the angle */
     CDL_ROUTE_COUNT
 } cdl_direct_route;
+
+/* Whether any part of an extended light with a closed form reaches p
+ * (normal n) past the surfaces, as the exact route sees it: 1 when it
+ * finds a visible part that gives light, 0 when it finds none, -1 when it
+ * cannot tell (too many or curved occluders: the caller probes with
+ * samples). A window's worth of sky that a few samples would miss counts. */
+int cdl_direct_light_seen(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy strategy,
+                          cdl_vec3 p, cdl_vec3 n);
+
+/* The sky a point sees, for callers that integrate their own functions of
+ * direction over it (daylight coefficients, solver/daylight/): every
+ * direction on the side of n that leaves the scene, whatever the horizon,
+ * as convex spherical polygons, each handed to `piece` as `count` unit
+ * world directions from p (count <= CDL_VISIBLE_MAX_VERTICES; either
+ * orientation; edges the shorter great-circle arcs). Returns
+ * CDL_ROUTE_FULL_VIEW when nothing can hide any of it (no piece is handed
+ * over: the whole hemisphere of n is seen), CDL_ROUTE_VISIBLE_POLYGON when
+ * the pieces were handed over (exactly what is seen past the surfaces,
+ * geometry/visible_polygon.h), or the route's reason why it cannot say
+ * (glass, curved or too many occluders, too many pieces: the caller
+ * samples; some pieces may have been handed over before it found out).
+ * Thread-safe. */
+typedef void (*cdl_sky_piece_fn)(void *user, const cdl_vec3 *dirs, int count);
+cdl_direct_route cdl_direct_visible_sky(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_sky_piece_fn piece,
+                                        void *user);
+
+/* The same with panes of glass taken as clear: the pieces are what p sees
+ * through them and past everything else, and *through_glass says whether
+ * any pane was among the occluders (the caller then weighs the pieces with
+ * the panes' transmittance itself: cdl_scene_geometry_transmission). */
+cdl_direct_route cdl_direct_visible_sky_through_glass(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n,
+                                                      cdl_sky_piece_fn piece, void *user, int *through_glass);
 
 /* Most occluders between a point and a light for the exact route. */
 #define CDL_EXACT_ROUTE_MAX_OCCLUDERS 64

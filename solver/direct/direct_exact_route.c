@@ -159,7 +159,7 @@ static cdl_direct_route sky_route(const cdl_scene_light *light, cdl_vec3 p, cdl_
 {
     cdl_visible_face faces[5];
     if (!sky_faces(light, p, n, near, occ, count, faces)) return CDL_ROUTE_TOO_COMPLEX;
-    if (!light->is_image && !light->is_overcast) {
+    if (!light->is_image && !light->sky_varies) {
         double omega = 0.0;
         for (int k = 0; k < 5; ++k) omega += cdl_visible_face_projected_solid_angle(&faces[k], n);
         faces_release(faces);
@@ -193,6 +193,49 @@ static cdl_direct_route sky_route(const cdl_scene_light *light, cdl_vec3 p, cdl_
     }
     *region = r;
     return sun ? CDL_ROUTE_SKY_SUN : CDL_ROUTE_SKY_REGION;
+}
+
+/* The sun's disk as SUN_SECTORS convex sectors of SUN_SECTOR_EDGES edges
+ * along its rim each (the centre and 21 rim points: 22 vertices, leaving
+ * room under CDL_VISIBLE_MAX_VERTICES for the corners occluders' edges
+ * cut into a piece), a 240-gon of the disk's area. The visible fraction of the polygon stands
+ * for the disk's: an occluder's edge across the disk moves by at most the
+ * polygon's distance from the circle, r (1 - cos(pi / 240)) / 2 = 4.3e-5 r
+ * (the equal-area polygon lies within that of its circle), so the
+ * fraction, and E in the penumbra, is within about 1e-4 of the round
+ * disk's. */
+#define SUN_SECTORS 12
+#define SUN_SECTOR_EDGES 20
+
+/* The sun past the occluders: E_0 times the visible fraction of its disk's
+ * projected solid angle. The disk lies on the plane at unit distance
+ * towards the sun, radius tan(alpha); nothing between p and infinity may
+ * hide it (an unbounded face, as the sky's). */
+static cdl_direct_route sun_route(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n, double near,
+                                  const cdl_occluder_triangle *occ, size_t count, double unoccluded, double *E)
+{
+    cdl_frame f = cdl_frame_from_normal(light->sun_dir);
+    cdl_vec3 c = cdl_vec3_add(p, light->sun_dir);
+    const int edges = SUN_SECTORS * SUN_SECTOR_EDGES;
+    /* the equal-area polygon: (N / 2) R^2 sin(2 pi / N) = pi r^2 */
+    double r = tan(light->sun_half_angle);
+    double R = r * sqrt(CDL_TWO_PI / (edges * sin(CDL_TWO_PI / edges)));
+    cdl_visible_face face;
+    cdl_visible_face_init(&face, p, cdl_vec3_neg(light->sun_dir), c, 0, near);
+    for (int k = 0; k < SUN_SECTORS; ++k) {
+        cdl_vec3 pts[SUN_SECTOR_EDGES + 2];
+        pts[0] = c;
+        for (int j = 0; j <= SUN_SECTOR_EDGES; ++j) {
+            double a = CDL_TWO_PI * (k * SUN_SECTOR_EDGES + j) / edges;
+            pts[j + 1] = cdl_vec3_add(c, cdl_vec3_add(cdl_vec3_scale(f.s, R * cos(a)), cdl_vec3_scale(f.t, R * sin(a))));
+        }
+        cdl_visible_face_add_polygon(&face, pts, SUN_SECTOR_EDGES + 2);
+    }
+    double whole = cdl_visible_face_projected_solid_angle(&face, n);
+    double visible = 0.0;
+    if (!face_visible(&face, occ, count, n, &visible)) return CDL_ROUTE_TOO_COMPLEX;
+    *E = whole > 0.0 && visible > 0.0 ? unoccluded * fmin(1.0, visible / whole) : 0.0;
+    return CDL_ROUTE_VISIBLE_POLYGON;
 }
 
 /* The corners of triangle t of a triangle-set shape. */
@@ -309,7 +352,7 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     cdl_vec3 opening[4];
     int is_opening = !light->is_environment && light->owner == UINT32_MAX &&
                      cdl_emitter_opening_bounding_rectangle(light->emitter, opening);
-    if (!light->is_environment && !is_opening) {
+    if (!light->is_environment && !is_opening && !light->is_sun_disk) {
         if (light->owner == UINT32_MAX || light->outline_is_sphere) return CDL_ROUTE_CURVED_EMITTER;
         piece = cdl_scene_geometry_piece(ctx->geometry, light->owner);
         if (piece->shape.kind != CDL_SHAPE_RECT &&
@@ -328,9 +371,13 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     for (size_t i = 0; i < count; ++i)
         if (cdl_scene_geometry_piece(ctx->geometry, occ[i].owner)->shape.kind == CDL_SHAPE_DISK)
             return CDL_ROUTE_CURVED_OCCLUDER;
+    /* a pane passes part of the light, by angle: no polygon is exact */
+    for (size_t i = 0; i < count; ++i)
+        if (cdl_scene_geometry_piece(ctx->geometry, occ[i].owner)->transmittance > 0.0) return CDL_ROUTE_GLASS;
     *occluders = (uint32_t)count;
     double near = NEAR_FRACTION * cdl_ray_offsets_epsilon(&ctx->offsets, p);
     if (light->is_environment) return sky_route(light, p, n, near, occ, count, unoccluded, E, sky);
+    if (light->is_sun_disk) return sun_route(light, p, n, near, occ, count, unoccluded, E);
     if (is_opening) return opening_visible(light, opening, p, n, near, occ, count, E);
     double omega = 0.0;
     cdl_direct_route route = CDL_ROUTE_VISIBLE_POLYGON;
@@ -338,6 +385,76 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     /* E = L Omega_p of the visible part (Lambert); never below 0 by rounding */
     *E = omega > 0.0 ? piece->luminance_cd_m2 * omega : 0.0;
     return CDL_ROUTE_VISIBLE_POLYGON;
+}
+
+/* The visible sky's pieces; glass_clear: panes are left out of the
+ * occluders (*glass_seen says whether there were any). */
+static cdl_direct_route visible_sky(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_sky_piece_fn piece,
+                                    void *user, int glass_clear, int *glass_seen)
+{
+    *glass_seen = 0;
+    if (!ctx->geometry || !ctx->occluders) return CDL_ROUTE_FULL_VIEW;
+    /* a sky of every direction: its region is the half-space above p's plane */
+    cdl_scene_light sky;
+    memset(&sky, 0, sizeof sky);
+    sky.is_environment = 1;
+    sky.owner = UINT32_MAX;
+    cdl_convex_region region;
+    double tol;
+    cdl_direct_light_region(ctx, &sky, p, n, &region, &tol);
+    cdl_occluder_triangle occ[CDL_EXACT_ROUTE_MAX_OCCLUDERS];
+    size_t count = 0;
+    cdl_occluder_list_status ls =
+        cdl_occluder_index_list(ctx->occluders, &region, tol, UINT32_MAX, occ, CDL_EXACT_ROUTE_MAX_OCCLUDERS, &count);
+    if (ls == CDL_OCCLUDERS_SPHERE) return CDL_ROUTE_CURVED_OCCLUDER;
+    if (ls == CDL_OCCLUDERS_TOO_MANY) return CDL_ROUTE_TOO_MANY;
+    size_t kept = 0;
+    for (size_t i = 0; i < count; ++i) {
+        const cdl_geometry_piece *g = cdl_scene_geometry_piece(ctx->geometry, occ[i].owner);
+        if (g->shape.kind == CDL_SHAPE_DISK) return CDL_ROUTE_CURVED_OCCLUDER;
+        if (g->transmittance > 0.0) {
+            if (!glass_clear) return CDL_ROUTE_GLASS;
+            *glass_seen = 1;
+            continue;
+        }
+        occ[kept++] = occ[i];
+    }
+    count = kept;
+    /* nothing in the way (but panes, whose pieces the caller weighs: handed over) */
+    if (count == 0 && !*glass_seen) return CDL_ROUTE_FULL_VIEW;
+    double near = NEAR_FRACTION * cdl_ray_offsets_epsilon(&ctx->offsets, p);
+    cdl_visible_face faces[5];
+    if (!sky_faces(&sky, p, n, near, occ, count, faces)) return CDL_ROUTE_TOO_COMPLEX;
+    for (int k = 0; k < 5; ++k) {
+        const cdl_visible_face *f = &faces[k];
+        /* a piece's point (x, y) is foot + x e1 + y e2, seen from the apex
+         * along -height toward + x e1 + y e2 */
+        for (size_t i = 0; i < f->count; ++i) {
+            const cdl_visible_piece *pc = &f->pieces[i];
+            cdl_vec3 dirs[CDL_VISIBLE_MAX_VERTICES];
+            for (int v = 0; v < pc->count; ++v) {
+                cdl_vec3 d = cdl_vec3_scale(f->toward, -f->height);
+                d = cdl_vec3_madd(d, pc->v[v][0], f->e1);
+                dirs[v] = cdl_vec3_normalize(cdl_vec3_madd(d, pc->v[v][1], f->e2));
+            }
+            if (pc->count >= 3) piece(user, dirs, pc->count);
+        }
+    }
+    faces_release(faces);
+    return CDL_ROUTE_VISIBLE_POLYGON;
+}
+
+cdl_direct_route cdl_direct_visible_sky(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_sky_piece_fn piece,
+                                        void *user)
+{
+    int glass = 0;
+    return visible_sky(ctx, p, n, piece, user, 0, &glass);
+}
+
+cdl_direct_route cdl_direct_visible_sky_through_glass(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n,
+                                                      cdl_sky_piece_fn piece, void *user, int *through_glass)
+{
+    return visible_sky(ctx, p, n, piece, user, 1, through_glass);
 }
 
 int cdl_direct_exact_term(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy st,
@@ -360,6 +477,27 @@ int cdl_direct_exact_term(const cdl_direct_context *ctx, const cdl_scene_light *
     }
     if (route == CDL_ROUTE_VISIBLE_POLYGON) return 1;
     if (route == CDL_ROUTE_SKY_REGION || route == CDL_ROUTE_SKY_SUN) return *region ? 2 : 1;
+    return -1;
+}
+
+int cdl_direct_light_seen(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_light_strategy strategy,
+                          cdl_vec3 p, cdl_vec3 n)
+{
+    cdl_illuminance E0;
+    if (cdl_emitter_exact_illuminance(light->emitter, p, n, &E0, NULL) != CDL_OK || !(E0.lx > 0.0)) return 0;
+    if (strategy == CDL_STRATEGY_EXTENDED_EXACT) return 1;
+    if (strategy != CDL_STRATEGY_EXTENDED_TESTED) return -1;
+    cdl_direct_sample_stats stats = {0};
+    double E = 0.0;
+    cdl_sky_region *region = NULL;
+    int route = cdl_direct_exact_term(ctx, light, strategy, p, n, E0.lx, &E, &region, &stats);
+    if (route == 2) {
+        int seen = cdl_sky_region_projected_solid_angle(region) > 0.0;
+        cdl_sky_region_release(region);
+        return seen;
+    }
+    if (route == 0) return 1;
+    if (route == 1) return E > 0.0;
     return -1;
 }
 
@@ -422,6 +560,8 @@ void cdl_direct_route_describe(const cdl_direct_route_tally *t, char *out, size_
         [CDL_ROUTE_SKY_PEAK] = "the sky over the visible part far brighter in more than " STRINGIFY(
             SKY_PEAK_PIXELS) " pixels (a sun's wide aureole)",
         [CDL_ROUTE_DISABLED] = "exact route turned off",
+        [CDL_ROUTE_GLASS] = "seen through glass (its transmittance varies with the angle of incidence: shadow rays "
+                            "carry it)",
     };
     size_t used = 0;
     out[0] = '\0';

@@ -190,8 +190,9 @@ static double stratum_sample(const cdl_direct_context *ctx, term *t, const doubl
     if (!(c > 0.0)) return 0.0;
     double value = ls.L.cd_m2 * c / ls.pdf;
     *unoccluded = value;
-    int hidden = ctx->geometry ? cdl_direct_shadowed(ctx, p, n, ls.to_light, ls.distance, stats) : 0;
-    return (t->mode == TERM_HIDDEN ? hidden : !hidden) ? value : 0.0;
+    /* V: 1 seen, 0 hidden, between through glass */
+    double V = cdl_direct_transmission(ctx, p, n, ls.to_light, ls.distance, stats);
+    return t->mode == TERM_HIDDEN ? value * (1.0 - V) : value * V;
 }
 
 /* The fractional part of j times the golden ratio: offsets that stay

@@ -1,8 +1,11 @@
 /* direct_visibility.c - is a shadow ray blocked, is a whole emitter in view? */
 #include "solver/direct/direct_internal.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "radiometry/frame.h"
 
 /* Geometric tolerance of region tests around p: a surface must reach ten
  * double rounding bounds (cdl_ray_offsets_epsilon: 1e-11 of the scene's
@@ -44,6 +47,19 @@ int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, c
     return cdl_ray_scene_occluded(ctx->rays, o, dir, t_near, t_far);
 }
 
+double cdl_direct_transmission(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                               cdl_direct_sample_stats *stats)
+{
+    if (!ctx->geometry) return 1.0;
+    if (!cdl_scene_geometry_has_glass(ctx->geometry)) return cdl_direct_shadowed(ctx, p, n, dir, distance, stats) ? 0.0 : 1.0;
+    cdl_vec3 o;
+    double t_near, t_far;
+    if (!cdl_ray_offsets_shadow_ray(&ctx->offsets, p, n, dir, distance, &o, &t_near, &t_far)) return 1.0;
+    stats->rays++;
+    if (ctx->log) cdl_direct_record_ray(ctx->log, o, dir, t_near, t_far);
+    return cdl_scene_geometry_transmission(ctx->geometry, o, dir, t_far);
+}
+
 /* Move planes first .. first + count - 1 of a region outward by tol, so
  * that the index's shrink by tol leaves them where they were. */
 static void unshrink_planes(cdl_convex_region *region, int first, int count, double tol)
@@ -65,7 +81,20 @@ int cdl_direct_light_region(const cdl_direct_context *ctx, const cdl_scene_light
     region->plane_count = 0;
     double tol = cdl_direct_region_tolerance(ctx, p);
     *tol_out = tol;
-    if (light->is_environment) {
+    if (light->is_sun_disk) {
+        /* The cone towards the sun, in the square pyramid about it whose
+         * sides touch the cone (half-angle widened by a hundredth): each
+         * side {x : m.(x - p) <= 0}, m = u cos a - s sin a, u = +-e1, +-e2. */
+        cdl_frame f = cdl_frame_from_normal(light->sun_dir);
+        double a = 1.01 * light->sun_half_angle, ca = cos(a), sa = sin(a);
+        const cdl_vec3 u[4] = {f.s, f.t, cdl_vec3_neg(f.s), cdl_vec3_neg(f.t)};
+        for (int k = 0; k < 4; ++k) {
+            cdl_vec3 m = cdl_vec3_sub(cdl_vec3_scale(u[k], ca), cdl_vec3_scale(light->sun_dir, sa));
+            cdl_region_add(region, m, cdl_vec3_dot(m, p));
+        }
+        unshrink_planes(region, 0, 4, tol);
+        cdl_region_add(region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));
+    } else if (light->is_environment) {
         /* The open half-space above the receiving plane (and above the
          * horizon for an upper-hemisphere sky): {x : -n.x <= -n.p}. */
         cdl_region_add(region, cdl_vec3_neg(n), -cdl_vec3_dot(n, p));

@@ -59,6 +59,7 @@ typedef struct cdl_solve_cache {
 /* What planning decided for one grid. */
 typedef struct cdl_grid_plan {
     uint64_t key;                     /* keys its random numbers: a hash of its name */
+    double daylight_E_h;              /* "daylight_factor": the overcast sky's horizontal illuminance, lx */
     cdl_method method;                /* its interreflection: ICACHE or PATHTRACE; DIRECT when none */
     double score;                     /* points x target, which chose the method under "auto" */
     int vertical_sampled;             /* its vertical outputs need the sampled part */

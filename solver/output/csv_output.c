@@ -53,7 +53,7 @@ cdl_status cdl_grid_result_write_csv(const cdl_grid_result *result, const char *
     } extra[] = {{"area_m2", result->area_m2},       {"AO", result->ao},   {"AO_stderr", result->ao_stderr},
                  {"Ez_lx", result->Ez},
                  {"Ez_stderr_lx", result->Ez_stderr}, {"Esz_lx", result->Esz}, {"Esz_stderr_lx", result->Esz_stderr},
-                 {"L_cd_m2", result->L}};
+                 {"L_cd_m2", result->L},           {"DF_percent", result->DF}};
     enum { EXTRA = sizeof extra / sizeof extra[0] };
     fputs(CDL_GRID_CSV_COLUMNS, file.fp);
     for (int c = 0; c < EXTRA; ++c)

@@ -9,11 +9,11 @@
 #include "base/error_report.h"
 #include "solver/scene/exr_image.h"
 
-/* The channels a result may have; the optional ones (Ez, Esz, L) are
+/* The channels a result may have; the optional ones (Ez, Esz, L, DF) are
  * written only when given. */
-enum { CH_E, CH_Y, CH_DIRECT, CH_INDIRECT, CH_STDERR, CH_EZ, CH_ESZ, CH_L, CH_MASK, CHANNELS };
+enum { CH_E, CH_Y, CH_DIRECT, CH_INDIRECT, CH_STDERR, CH_EZ, CH_ESZ, CH_L, CH_DF, CH_MASK, CHANNELS };
 static const char *const channel_name[CHANNELS] = {"E", "Y", "E_direct", "E_indirect", "E_stderr",
-                                                   "Ez", "Esz", "L", "mask"};
+                                                   "Ez", "Esz", "L", "DF", "mask"};
 
 /* A value that float cannot hold would become inf in the file. */
 static cdl_status check_float_range(const double *values, size_t n, const char *column, const char *path,
@@ -47,7 +47,7 @@ cdl_status cdl_grid_result_write_exr(const cdl_grid_result *result, const char *
     if (st != CDL_OK) return st;
     const cdl_grid *grid = result->grid;
     const double *source[CHANNELS] = {result->E,  result->E,   result->E_direct, result->E_indirect, result->E_stderr,
-                                      result->Ez, result->Esz, result->L,        NULL};
+                                      result->Ez, result->Esz, result->L,        result->DF,         NULL};
     for (int c = CH_E; c < CH_MASK && st == CDL_OK; ++c)
         if (source[c]) st = check_float_range(source[c], grid->count, channel_name[c], path, err);
     if (st == CDL_OK) st = check_attributes(attributes, attribute_count, path, err);

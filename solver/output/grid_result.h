@@ -27,6 +27,16 @@
 #include "solver/output/lux_scale.h"
 #include "solver/solution_internal.h"
 
+/* A map of another quantity than illuminance (an annual metric's share
+ * of hours, daylight/annual.h): what it is, its unit's label, a fixed
+ * linear range with its tick, and the line under the title. */
+typedef struct cdl_map_quantity {
+    const char *what;         /* "daylight autonomy DA300, % of occupied hours" (the PNG's description) */
+    const char *unit;         /* the legend's unit: "%", "h" */
+    double lo, hi, tick;      /* the colours' range and the legend's step */
+    char stats[160];          /* under the title, instead of Em, Emin, Emax and U0 */
+} cdl_map_quantity;
+
 /* The arrays hold grid->count values each, in grid order. E, E_direct,
  * E_indirect and E_stderr are required (a direct-only solve passes zeros for
  * E_indirect); ao is optional. */
@@ -44,9 +54,11 @@ typedef struct cdl_grid_result {
     const double *Ez;         /* cylindrical illuminance, lux ("cylindrical") */
     const double *Esz;        /* semicylindrical illuminance, lux ("semicylindrical") */
     const double *L;          /* luminance rho E / pi, cd/m^2 ("luminance") */
+    const double *DF;         /* daylight factor, percent ("daylight_factor") */
     const double *Ez_stderr;  /* with Ez where part of it is sampled: its standard error, lux */
     const double *Esz_stderr; /* with Esz likewise */
     int map_log_scale;        /* NAME.png: 1 a logarithmic lux scale, 0 (default) linear (lux_scale.h) */
+    const cdl_map_quantity *quantity; /* NAME.png: NULL for illuminance; else E holds this quantity */
 } cdl_grid_result;
 
 /* A solved grid's results as the writers take them: E and its parts, ao,
@@ -71,7 +83,7 @@ typedef struct cdl_value_stats {
 typedef struct cdl_grid_stats {
     size_t count;
     double area_m2;           /* sum of the points' area weights (0 for points grids) */
-    cdl_value_stats Ez, Esz, L; /* of the optional columns given (zeros otherwise) */
+    cdl_value_stats Ez, Esz, L, DF; /* of the optional columns given (zeros otherwise) */
     double E_avg_lx;          /* area-weighted mean (Em) */
     double E_min_lx;
     double E_max_lx;
@@ -95,7 +107,7 @@ void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats)
 
 /* NAME.csv: header CDL_GRID_CSV_COLUMNS
  * then, for those given, area_m2, AO, AO_stderr, Ez_lx, Ez_stderr_lx, Esz_lx,
- * Esz_stderr_lx, L_cd_m2; one row per point in grid order, "\n" line
+ * Esz_stderr_lx, L_cd_m2, DF_percent; one row per point in grid order, "\n" line
  * ends. Each number is the shortest of "%.15g", "%.16g", "%.17g" that reads
  * back (strtod) as exactly the same double, so a closed-form result
  * survives the trip to text. Expects the "C" numeric locale (the library
@@ -120,6 +132,7 @@ void cdl_csv_write_numbers(FILE *fp, const double *values, size_t n);
  *   Ez          cylindrical illuminance, lux (when given)
  *   Esz         semicylindrical illuminance, lux (when given)
  *   L           luminance, cd/m^2 (when given)
+ *   DF          daylight factor, percent (when given)
  *   mask        1 inside the grid, 0 outside (outside pixels hold 0 in every channel)
  * String attributes units=lx, quantity=illuminance and each key/value given
  * (the solver's settings); a key may not repeat "units" or "quantity". A
@@ -163,6 +176,7 @@ typedef struct cdl_png_layout {
     int bar_x, bar_y;         /* top-left corner of the colour bar (inside its frame) */
     int bar_width, bar_height;
     int label_x;              /* left edge of the tick labels */
+    char unit[8];             /* "" for lux; else the quantity's unit */
 } cdl_png_layout;
 
 /* The layout cdl_grid_result_write_png uses for `result` (which must have a

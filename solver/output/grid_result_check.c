@@ -36,6 +36,7 @@ cdl_status cdl_grid_result_check(const cdl_grid_result *result, const char *path
         {"E_stderr_lx", result->E_stderr, 1}, {"AO", result->ao, 0}, {"AO_stderr", result->ao_stderr, 0}, {"area_m2", result->area_m2, 0},
         {"Ez_lx", result->Ez, 0}, {"Esz_lx", result->Esz, 0}, {"L_cd_m2", result->L, 0},
         {"Ez_stderr_lx", result->Ez_stderr, 0}, {"Esz_stderr_lx", result->Esz_stderr, 0},
+        {"DF_percent", result->DF, 0},
     };
     for (size_t c = 0; c < sizeof columns / sizeof columns[0]; ++c) {
         if (!columns[c].values) {

@@ -79,6 +79,7 @@ void cdl_grid_result_stats(const cdl_grid_result *result, cdl_grid_stats *stats)
     value_stats(result->Ez, total_weight > 0.0 ? w : NULL, n, &stats->Ez);
     value_stats(result->Esz, total_weight > 0.0 ? w : NULL, n, &stats->Esz);
     value_stats(result->L, total_weight > 0.0 ? w : NULL, n, &stats->L);
+    value_stats(result->DF, total_weight > 0.0 ? w : NULL, n, &stats->DF);
 
     if (!result->E_stderr) return;
     compensated_sum rel = {0.0, 0.0}, rel_weight = {0.0, 0.0};

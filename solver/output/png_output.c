@@ -55,21 +55,22 @@ static void put_text(cdl_raster_canvas *c, int x, int y, const char *text)
 }
 
 /* The legend's label of a linear scale's value (the bottom one "<=" when clipped). */
-static void linear_label(const cdl_lux_scale *scale, double lx, int bottom, char *buf, size_t size)
+static void linear_label(const cdl_lux_scale *scale, const char *unit, double lx, int bottom, char *buf, size_t size)
 {
     char v[48];
-    cdl_lux_scale_value_label(lx, v, sizeof v);
+    if (unit[0]) snprintf(v, sizeof v, "%.6g %s", lx, unit); /* another quantity (cdl_map_quantity) */
+    else cdl_lux_scale_value_label(lx, v, sizeof v);
     snprintf(buf, size, "%s%s", bottom && scale->clipped ? "<=" : "", v);
 }
 
-static int max_label_width(const cdl_lux_scale *scale)
+static int max_label_width(const cdl_lux_scale *scale, const char *unit)
 {
     char label[64];
     int widest = 0;
     if (scale->kind == CDL_LUX_SCALE_LINEAR) {
         long ticks = lround((scale->hi.lx - scale->lo.lx) / scale->tick_lx);
         for (long m = 0; m <= ticks; ++m) {
-            linear_label(scale, scale->lo.lx + (double)m * scale->tick_lx, m == 0, label, sizeof label);
+            linear_label(scale, unit, scale->lo.lx + (double)m * scale->tick_lx, m == 0, label, sizeof label);
             int w = text_width(label);
             if (w > widest) widest = w;
         }
@@ -160,8 +161,19 @@ void cdl_grid_result_png_layout(const cdl_grid_result *result, cdl_png_layout *l
 {
     const cdl_grid *grid = result->grid;
     memset(layout, 0, sizeof *layout);
-    layout->scale = result->map_log_scale ? cdl_lux_scale_for_values(result->E, grid->count)
-                                          : cdl_lux_scale_linear_for_values(result->E, grid->count);
+    if (result->quantity) {
+        /* another quantity: its fixed linear range */
+        const cdl_map_quantity *q = result->quantity;
+        layout->scale.kind = CDL_LUX_SCALE_LINEAR;
+        layout->scale.lo = cdl_lux(q->lo);
+        layout->scale.hi = cdl_lux(q->hi);
+        layout->scale.tick_lx = q->tick;
+        for (size_t i = 0; i < grid->count; ++i) layout->scale.clipped |= result->E[i] < q->lo;
+        snprintf(layout->unit, sizeof layout->unit, "%s", q->unit);
+    } else {
+        layout->scale = result->map_log_scale ? cdl_lux_scale_for_values(result->E, grid->count)
+                                              : cdl_lux_scale_linear_for_values(result->E, grid->count);
+    }
     int long_side = grid->raster_width > grid->raster_height ? grid->raster_width : grid->raster_height;
     if (long_side <= 0) long_side = 1;
     layout->cell = (MAP_LONG_SIDE + long_side - 1) / long_side;
@@ -183,7 +195,7 @@ void cdl_grid_result_png_layout(const cdl_grid_result *result, cdl_png_layout *l
     layout->bar_x = layout->map_x + map_w + MAP_TO_BAR + 1; /* + 1: the frame */
     layout->bar_y = layout->map_y;
     layout->label_x = layout->bar_x + BAR_WIDTH + 1 + TICK_LENGTH + TICK_TO_LABEL;
-    layout->width = layout->label_x + max_label_width(&layout->scale) + MARGIN;
+    layout->width = layout->label_x + max_label_width(&layout->scale, layout->unit) + MARGIN;
     /* Below the map: ticks, their labels, the horizontal axis' name. */
     int below = map_h + TICK_LENGTH + TICK_TO_LABEL + LABEL_HEIGHT + TITLE_GAP + LABEL_HEIGHT;
     layout->height = layout->map_y + (below > layout->bar_height ? below : layout->bar_height) + MARGIN;
@@ -191,7 +203,10 @@ void cdl_grid_result_png_layout(const cdl_grid_result *result, cdl_png_layout *l
     char title[256];
     snprintf(title, sizeof title, "%s", result->name ? result->name : "");
     int title_w = MARGIN + text_width(title) + MARGIN;
-    int stats_w = MARGIN + text_width("Em 0000000 lx  Emin 0000000 lx  Emax 0000000 lx  U0 0.000") + MARGIN;
+    int stats_w = MARGIN +
+                  text_width(result->quantity ? result->quantity->stats
+                                              : "Em 0000000 lx  Emin 0000000 lx  Emax 0000000 lx  U0 0.000") +
+                  MARGIN;
     if (title_w > layout->width) layout->width = title_w;
     if (stats_w > layout->width) layout->width = stats_w;
 }
@@ -261,7 +276,7 @@ static void draw_linear_ticks(cdl_raster_canvas *img, const cdl_png_layout *L)
             double lx = L->scale.lo.lx + (double)m * L->scale.tick_lx;
             int y = m == count ? L->bar_y : bar_row(L, cdl_lux_scale_position(&L->scale, cdl_lux(lx)));
             char label[64];
-            linear_label(&L->scale, lx, m == 0, label, sizeof label);
+            linear_label(&L->scale, L->unit, lx, m == 0, label, sizeof label);
             place_tick(img, L, y, label, placed_y, &placed);
         }
 }
@@ -306,8 +321,10 @@ static void draw_title_and_axes(const cdl_grid_result *result, const cdl_png_lay
     char line[256];
     snprintf(line, sizeof line, "%s", result->name ? result->name : "");
     put_text(img, MARGIN, L->title_y, line);
-    snprintf(line, sizeof line, "Em %.4g lx  Emin %.4g lx  Emax %.4g lx  U0 %.3f", st.E_avg_lx, st.E_min_lx,
-             st.E_max_lx, st.U0);
+    if (result->quantity) snprintf(line, sizeof line, "%s", result->quantity->stats);
+    else
+        snprintf(line, sizeof line, "Em %.4g lx  Emin %.4g lx  Emax %.4g lx  U0 %.3f", st.E_avg_lx, st.E_min_lx,
+                 st.E_max_lx, st.U0);
     put_text(img, MARGIN, L->stats_y, line);
     map_axis h, v;
     axes_of(grid, L, &h, &v);
@@ -453,16 +470,19 @@ cdl_status cdl_grid_result_write_png(const cdl_grid_result *result, const char *
     }
 
     char lo[64], hi[64], description[300];
-    if (L.scale.kind == CDL_LUX_SCALE_LINEAR) {
+    if (result->quantity) {
+        snprintf(lo, sizeof lo, "%.6g %s", L.scale.lo.lx, L.unit);
+        snprintf(hi, sizeof hi, "%.6g %s", L.scale.hi.lx, L.unit);
+    } else if (L.scale.kind == CDL_LUX_SCALE_LINEAR) {
         cdl_lux_scale_value_label(L.scale.lo.lx, lo, sizeof lo);
         cdl_lux_scale_value_label(L.scale.hi.lx, hi, sizeof hi);
     } else {
         cdl_lux_scale_step_label(L.scale.lo_step, lo, sizeof lo);
         cdl_lux_scale_step_label(L.scale.hi_step, hi, sizeof hi);
     }
-    snprintf(description, sizeof description, "%s: illuminance in lux, false colour on a %s scale from %s to %s",
-             result->name ? result->name : "grid", L.scale.kind == CDL_LUX_SCALE_LINEAR ? "linear" : "logarithmic",
-             lo, hi);
+    snprintf(description, sizeof description, "%s: %s, false colour on a %s scale from %s to %s",
+             result->name ? result->name : "grid", result->quantity ? result->quantity->what : "illuminance in lux",
+             L.scale.kind == CDL_LUX_SCALE_LINEAR ? "linear" : "logarithmic", lo, hi);
     st = cdl_png_write_rgb(path, img, L.width, L.height, description, err);
     free(img);
     return st;

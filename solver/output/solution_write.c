@@ -89,6 +89,7 @@ void cdl_grid_solution_result(const cdl_grid_solution *gs, cdl_grid_result *out)
     out->Ez = gs->Ez;
     out->Esz = gs->Esz;
     out->L = gs->L;
+    out->DF = gs->DF;
     out->Ez_stderr = gs->Ez_stderr;
     out->Esz_stderr = gs->Esz_stderr;
 }
@@ -192,11 +193,12 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
             const cdl_value_stats *stats;
         } extra[] = {{"Ez", sol->grids[g].Ez, &stats[g].Ez},
                      {"Esz", sol->grids[g].Esz, &stats[g].Esz},
-                     {"L", sol->grids[g].L, &stats[g].L}};
+                     {"L", sol->grids[g].L, &stats[g].L},
+                     {"DF", sol->grids[g].DF, &stats[g].DF}};
         for (size_t k = 0; k < sizeof extra / sizeof extra[0]; ++k) {
             if (!extra[k].values) continue;
-            /* Ez_avg_lx, Ez_min_lx, ...; L_avg_cd_m2, ... */
-            const char *unit = k == 2 ? "cd_m2" : "lx";
+            /* Ez_avg_lx, Ez_min_lx, ...; L_avg_cd_m2, ...; DF_avg_percent, ... */
+            const char *unit = k == 2 ? "cd_m2" : k == 3 ? "percent" : "lx";
             char key[32];
             const double v[3] = {extra[k].stats->avg, extra[k].stats->min, extra[k].stats->max};
             const char *what[3] = {"avg", "min", "max"};

@@ -50,6 +50,7 @@ struct cdl_scene_geometry {
     size_t triangle_count;
     cdl_bounds3 bounds;
     double extent;
+    int glass;                 /* 1: some piece is a pane of glass */
 };
 
 /* ---- building ---------------------------------------------------------------- */
@@ -364,6 +365,12 @@ cdl_status cdl_scene_geometry_build(const cdl_scene *scene, cdl_scene_geometry *
         tmpl.reflectance = s->reflectance;
         tmpl.two_sided = s->two_sided;
         tmpl.luminance_cd_m2 = s->luminance_cd_m2;
+        tmpl.transmittance = s->transmittance;
+        if (s->transmittance > 0.0 && cdl_glass_from_transmittance(s->transmittance, &tmpl.glass, err) != CDL_OK) {
+            st = cdl_error_prefix(err, "%s: %s.transmittance: ", file, s->json_path);
+            break;
+        }
+        g->glass |= s->transmittance > 0.0;
         size_t first = g->piece_count;
         st = add_surface(g, s, &tmpl, err);
         if (st == CDL_OK) st = check_areas(g, first, err);
@@ -521,4 +528,30 @@ int cdl_scene_geometry_intersect(const cdl_scene_geometry *g, cdl_vec3 p, cdl_ve
 {
     (void)n;
     return cdl_ray_scene_intersect(g->rays, p, dir, 0.0, t_max, hit);
+}
+
+int cdl_scene_geometry_has_glass(const cdl_scene_geometry *g)
+{
+    return g->glass;
+}
+
+double cdl_scene_geometry_transmission(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 dir, double distance)
+{
+    if (!(distance > 0.0)) return 1.0;
+    if (!g->glass) return cdl_ray_scene_occluded(g->rays, p, dir, 0.0, distance) ? 0.0 : 1.0;
+    double T = 1.0, left = distance;
+    cdl_vec3 origin = p;
+    for (int panes = 0; panes <= CDL_GLASS_MAX_PANES; ++panes) {
+        cdl_ray_hit hit;
+        if (!cdl_ray_scene_intersect(g->rays, origin, dir, 0.0, left, &hit)) return T;
+        const cdl_geometry_piece *piece = &g->pieces[hit.geom_id].piece;
+        if (!(piece->transmittance > 0.0) || panes == CDL_GLASS_MAX_PANES) return 0.0;
+        /* through the pane at its angle of incidence; on from its far side
+         * (a ray from a point of a surface never hits that surface again) */
+        T *= cdl_glass_transmittance(&piece->glass, cdl_vec3_dot(dir, hit.normal));
+        origin = cdl_vec3_madd(origin, hit.t, dir);
+        left -= hit.t;
+        if (!(T > 0.0) || !(left > 0.0)) return left > 0.0 ? 0.0 : T;
+    }
+    return 0.0;
 }

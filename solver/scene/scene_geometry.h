@@ -17,6 +17,7 @@
 
 #include "lights/emitters/emitter.h"
 #include "base/error.h"
+#include "radiometry/glass.h"
 #include "solver/geometry/ray_scene.h"
 #include "solver/scene/scene_internal.h"
 
@@ -37,6 +38,8 @@ typedef struct cdl_geometry_piece {
     cdl_shape shape;                     /* world-space shape; TRIANGLES arrays owned by the geometry */
     size_t triangle_count;               /* 0 for spheres */
     double area;                         /* m^2 */
+    double transmittance;                /* > 0: a pane of glass (its normal transmittance); 0: opaque */
+    cdl_glass glass;                     /* the pane, when transmittance > 0 */
 } cdl_geometry_piece;
 
 /* Fan segments of a disk: the sagitta of each chord, r (1 - cos(pi / N)),
@@ -139,5 +142,18 @@ int cdl_scene_geometry_segment_occluded(const cdl_scene_geometry *geometry, cdl_
                                         cdl_vec3 q_normal);
 int cdl_scene_geometry_intersect(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir,
                                  double t_max, cdl_ray_hit *hit);
+
+/* Glass ("transmittance" surfaces): 1 when the scene has a pane. */
+int cdl_scene_geometry_has_glass(const cdl_scene_geometry *geometry);
+
+/* What reaches p along -dir from `distance` away (INFINITY: from the sky):
+ * the product of the transmittances of the panes crossed, each at its
+ * angle of incidence (radiometry/glass.h), 0 when an opaque surface is in
+ * the way. Without glass, 0 or 1 as ray_occluded says. Panes are found one
+ * after another (the ray restarted at each, where it cannot hit that pane
+ * again); at most CDL_GLASS_MAX_PANES, beyond which the ray counts as
+ * blocked. */
+#define CDL_GLASS_MAX_PANES 64
+double cdl_scene_geometry_transmission(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 dir, double distance);
 
 #endif

@@ -42,6 +42,7 @@ static void hash_material(cdl_content_hash *h, const cdl_surface_spec *s)
     cdl_content_hash_f64(h, s->reflectance);
     for (int f = 0; f < CDL_BOX_FACES; ++f) cdl_content_hash_f64(h, s->face_reflectance[f]);
     cdl_content_hash_u64(h, (uint64_t)s->two_sided);
+    cdl_content_hash_f64(h, s->transmittance);
 }
 
 /* The bytes of a file, with their count. */
@@ -53,6 +54,20 @@ static cdl_status hash_file(cdl_content_hash *h, const char *path, const cdl_sce
         return cdl_error_set(err, CDL_ERR_INPUT, "%s: %s.file: %s: cannot read it to hash its content: %s",
                              scene->path, json_path, path, strerror(code));
     return CDL_OK;
+}
+
+/* A daylight sky's inputs: its sun and what scales it (the site and time
+ * are in the sun's direction). */
+static void hash_daylight(cdl_content_hash *h, const cdl_daylight_spec *d)
+{
+    cdl_content_hash_vec3(h, d->sun);
+    cdl_content_hash_u64(h, (uint64_t)d->cie_type);
+    cdl_content_hash_u64(h, (uint64_t)d->scale_to_horizontal);
+    cdl_content_hash_u64(h, (uint64_t)d->radiometric);
+    cdl_content_hash_f64(h, d->diffuse_horizontal);
+    cdl_content_hash_f64(h, d->direct_normal);
+    cdl_content_hash_f64(h, d->dew_point_c);
+    cdl_content_hash_u64(h, (uint64_t)d->day_of_year);
 }
 
 static cdl_status hash_luminaire(cdl_content_hash *h, const cdl_scene *scene, const cdl_luminaire_spec *l,
@@ -80,6 +95,9 @@ static cdl_status hash_luminaire(cdl_content_hash *h, const cdl_scene *scene, co
     cdl_content_hash_f64(h, l->scale);
     cdl_content_hash_vec3(h, l->up);
     cdl_content_hash_u64(h, (uint64_t)l->upper_hemisphere_only);
+    cdl_content_hash_u64(h, (uint64_t)l->sky);
+    cdl_content_hash_f64(h, l->angular_diameter_deg);
+    hash_daylight(h, &l->daylight);
     cdl_content_hash_u64(h, l->file != NULL);
     return l->file ? hash_file(h, l->file, scene, l->json_path, err) : CDL_OK;
 }

@@ -10,7 +10,9 @@
  *   materials  reflectances (surfaces, box faces, area luminaires) and
  *              two-sidedness;
  *   lights     every luminaire (kind, placement, intensity or flux, profile,
- *              multiplier, maintenance factor, area shape, environment) with
+ *              multiplier, maintenance factor, area shape, environment, a daylight
+ *              sky's model, sun and scaling inputs, the sun disk's
+ *              diameter) with
  *              the bytes of its photometric file or environment image and
  *              any TILT table its photometric file brought, and every
  *              emitting surface's luminance.

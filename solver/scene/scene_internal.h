@@ -88,6 +88,8 @@ typedef struct cdl_surface_spec {
      * 50 lx, U0 0.10), which `candela report` checks; 0 when not given */
     double required_Em_lx;
     double required_U0;
+    double transmittance;                /* > 0: a thin pane of glass of this normal transmittance
+                                          * (radiometry/glass.h); its reflectance 0 */
 } cdl_surface_spec;
 
 /* ---- luminaires --------------------------------------------------------- */
@@ -113,6 +115,34 @@ typedef enum cdl_luminaire_kind {
  * horizontal (elliptic) cylinder, sphere, ellipsoid) of non-zero size)
  * stays a point; under ALWAYS the plan and a warning say so. */
 typedef enum cdl_near_field_mode { CDL_NEAR_FIELD_AUTO = 0, CDL_NEAR_FIELD_ALWAYS, CDL_NEAR_FIELD_NEVER } cdl_near_field_mode;
+
+/* The sky of an environment luminaire ("sky"). */
+typedef enum cdl_scene_sky {
+    CDL_SCENE_SKY_UNIFORM,               /* "uniform" (default), or an image "file" */
+    CDL_SCENE_SKY_CIE_OVERCAST,          /* "cie_overcast": L_z (1 + 2 cos theta) / 3 */
+    CDL_SCENE_SKY_CIE,                   /* "cie": a CIE standard general sky, cie_type 1..15 */
+    CDL_SCENE_SKY_PEREZ                  /* "perez": the Perez all-weather sky from weather data */
+} cdl_scene_sky;
+
+/* Where the sun is and what a "cie" or "perez" sky needs besides
+ * (scene_daylight.c reads it; the loader turns "sun" or "site" + "time"
+ * into the world direction `sun`). */
+typedef struct cdl_daylight_spec {
+    int has_sun;                         /* "sun" or "site" + "time" given */
+    cdl_vec3 sun;                        /* unit world direction towards the sun */
+    double sun_altitude_deg, sun_azimuth_deg; /* apparent altitude; azimuth eastward from north */
+    cdl_vec3 north;                      /* "north", made perpendicular to up (default +y) */
+    int from_site;                       /* 1: the sun by the SPA from "site" and "time" */
+    double latitude_deg, longitude_deg, elevation_m, pressure_mbar, temperature_c, delta_t_s; /* "site" */
+    char time[64];                       /* "time" as given (ISO 8601 with its UTC offset) */
+    int day_of_year;                     /* 1..366: from "time", or "day_of_year" */
+    int cie_type;                        /* "cie": 1..15 */
+    int scale_to_horizontal;             /* "cie": 1 with diffuse_horizontal_illuminance_lx (else zenith) */
+    int radiometric;                     /* "perez": 1 with irradiances in W/m^2, 0 with illuminances in lx */
+    double diffuse_horizontal;           /* lx (or W/m^2 for "perez" with irradiances) */
+    double direct_normal;                /* lx (or W/m^2): the sun's; 0: no sun disk */
+    double dew_point_c;                  /* "perez": default 11 */
+} cdl_daylight_spec;
 
 typedef struct cdl_luminaire_spec {
     char json_path[CDL_JSON_PATH_SIZE];  /* "luminaires[2]": the entry it comes from */
@@ -156,11 +186,14 @@ typedef struct cdl_luminaire_spec {
     double reflectance;                  /* area: default 0 */
     /* directional */
     double illuminance_lx;
+    double angular_diameter_deg;         /* 0: parallel; > 0: a disk (the sun: 0.533) */
     /* environment: uniform luminance_cd_m2 (has_luminance) or image file */
     double scale;                        /* default 1 */
     cdl_vec3 up;                         /* default (0, 0, 1) */
     int upper_hemisphere_only;           /* "hemisphere": "upper" */
     int sky_overcast;                    /* "sky": "cie_overcast" (luminance_cd_m2 holds its zenith's) */
+    cdl_scene_sky sky;                   /* "sky" (luminance_cd_m2 holds a "cie" sky's zenith luminance) */
+    cdl_daylight_spec daylight;          /* "cie" and "perez" skies */
 } cdl_luminaire_spec;
 
 /* ---- grids -------------------------------------------------------------- */
@@ -196,6 +229,7 @@ typedef struct cdl_grid_spec {
     int want_cylindrical;                /* "cylindrical": mean vertical illuminance E_z (EN 12464-1) */
     int want_semicylindrical;            /* "semicylindrical": towards the point's normal, horizontal part */
     int want_luminance;                  /* "luminance": rho E / pi of the surface the grid lies on */
+    int want_daylight_factor;            /* "daylight_factor": 100 E / E_h under the CIE overcast sky */
     /* "requirements" (EN 12464-1 for a task area), which `candela report`
      * checks: maintained illuminance in lux and uniformity Emin / Em;
      * 0 when not given. */

@@ -8,11 +8,13 @@
 #include <string.h>
 
 #include "base/error_report.h"
+#include "base/strings.h"
 #include "lights/emitters/near_field_bound.h"
+#include "lights/photometry/photometry_metadata.h"
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "solver/scene/exr_image.h"
-#include "lights/photometry/photometry_metadata.h"
+#include "solver/scene/scene_sky.h"
 
 static const char *luminaire_kind_name(cdl_luminaire_kind k)
 {
@@ -262,6 +264,7 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
     if (!nl) {
         cdl_emitter_release(e);
         free(light.outline);
+        free(light.model);
         return cdl_error_out_of_memory(err);
     }
     L->lights = nl;
@@ -269,6 +272,7 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
     if (!ne) {
         cdl_emitter_release(e);
         free(light.outline);
+        free(light.model);
         return cdl_error_out_of_memory(err);
     }
     L->emitters = ne;
@@ -276,6 +280,7 @@ static cdl_status add_light(cdl_scene_lights *L, cdl_emitter *e, const char *kin
     if (!nk) {
         cdl_emitter_release(e);
         free(light.outline);
+        free(light.model);
         return cdl_error_out_of_memory(err);
     }
     L->kinds = nk;
@@ -350,6 +355,45 @@ static cdl_status add_near_field(const cdl_scene *scene, const cdl_luminaire_spe
     proto.has_closed_form = cdl_emitter_has_exact_illuminance(e);
     proto.costly_exact = !cdl_emitter_opening_is_lambertian(e);
     return add_light(L, e, "goniometric opening", &proto, err);
+}
+
+/* A directional emitter with a disk (the sun) is an extended light: what
+ * the exact route needs of it. */
+static void describe_sun_disk(cdl_scene_light *proto, const cdl_emitter *e)
+{
+    if (!cdl_emitter_directional_disk(e, &proto->sun_dir, &proto->sun_half_angle)) return;
+    proto->is_sun_disk = 1;
+    proto->has_closed_form = 1;
+}
+
+/* A "cie" or "perez" sky: the sky, then its sun (scene_sky.h), the sky's
+ * model in words on both. */
+static cdl_status add_daylight(const cdl_scene *scene, const cdl_luminaire_spec *sp, const cdl_scene_light *proto,
+                               cdl_scene_lights *L, cdl_error *err)
+{
+    cdl_scene_sky_emitters built;
+    cdl_status st = cdl_scene_sky_build(sp, &built, err);
+    if (st != CDL_OK) return fail_at(err, scene, sp->json_path, st);
+    cdl_scene_light sky = *proto;
+    sky.is_environment = 1;
+    sky.sky_varies = 1;
+    sky.upper_only = 1;
+    sky.up = cdl_vec3_normalize(sp->up);
+    sky.has_closed_form = 1;
+    sky.costly_exact = 1; /* a quadrature of 0.2 ms: path vertices take a sample instead */
+    sky.model = cdl_string_copy(built.description);
+    L->has_environment = 1;
+    st = add_light(L, built.sky, "environment", &sky, err);
+    if (st != CDL_OK || !built.sun) {
+        if (st != CDL_OK) cdl_emitter_release(built.sun);
+        return st;
+    }
+    cdl_scene_light sun = *proto;
+    size_t used = strlen(sun.label);
+    if (used + 7 < sizeof sun.label) memcpy(sun.label + used, " (sun)", 7);
+    describe_sun_disk(&sun, built.sun);
+    sun.model = cdl_string_copy(built.description);
+    return add_light(L, built.sun, "sun", &sun, err);
 }
 
 static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geometry *geometry, size_t k,
@@ -473,11 +517,13 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
         break;
     }
     case CDL_LUMINAIRE_DIRECTIONAL: {
-        cdl_directional_params p = {sp->direction, cdl_lux(sp->illuminance_lx * mf)};
+        cdl_directional_params p = {sp->direction, cdl_lux(sp->illuminance_lx * mf), sp->angular_diameter_deg};
         st = cdl_emitter_create_directional(&p, &e, err);
+        if (st == CDL_OK) describe_sun_disk(&proto, e);
         break;
     }
     case CDL_LUMINAIRE_ENVIRONMENT: {
+        if (sp->sky == CDL_SCENE_SKY_CIE || sp->sky == CDL_SCENE_SKY_PEREZ) return add_daylight(scene, sp, &proto, L, err);
         cdl_environment_params p;
         memset(&p, 0, sizeof p);
         p.up = sp->up;
@@ -493,7 +539,7 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
         } else {
             p.luminance = cdl_nits(sp->luminance_cd_m2 * mf);
             p.sky = sp->sky_overcast ? CDL_SKY_CIE_OVERCAST : CDL_SKY_UNIFORM;
-            proto.is_overcast = sp->sky_overcast;
+            proto.sky_varies = sp->sky_overcast;
         }
         proto.is_environment = 1;
         proto.upper_only = sp->upper_hemisphere_only;
@@ -583,6 +629,7 @@ void cdl_scene_lights_release(cdl_scene_lights *L)
     for (size_t i = 0; i < L->count; ++i) {
         cdl_emitter_release(L->emitters[i]);
         free(L->lights[i].outline);
+        free(L->lights[i].model);
     }
     for (size_t i = 0; i < L->photometry_count; ++i) cdl_photometry_release(L->photometries[i]);
     free(L->lights);

@@ -34,7 +34,12 @@ typedef struct cdl_scene_light {
     int has_closed_form;              /* area or environment (uniform, overcast or image) */
     int is_environment;
     int is_image;                     /* environment: a lat-long image (not one luminance everywhere) */
-    int is_overcast;                  /* environment: the CIE overcast sky (luminance rises towards the zenith) */
+    int sky_varies;                   /* environment: a sky model whose luminance varies (CIE overcast, CIE
+                                       * general, Perez) */
+    int is_sun_disk;                  /* a directional light from a disk (the sun): extended, exact past
+                                       * planar occluders (direct_exact_route.c) */
+    cdl_vec3 sun_dir;                 /* sun disk: unit, towards it */
+    double sun_half_angle;            /* sun disk: radians */
     int upper_only;                   /* environment: sky above the horizon of `up` only */
     cdl_vec3 up;
     /* A convex outline bounding the emitter (area emitters), for the
@@ -63,7 +68,10 @@ typedef struct cdl_scene_light {
     double near_radius;               /* where the point model's error bound falls to CDL_NEAR_FIELD_SHARE of the
                                        * target, at least CDL_NEAR_FIELD_DISTANCES x the opening's largest dimension */
     double near_model_error;          /* that bound at near_radius (relative) */
-    int costly_exact;                 /* its exact E is a cubature (an opening of a non-Lambertian table) */
+    int costly_exact;                 /* its exact E is a cubature (an opening of a non-Lambertian table, a
+                                       * CIE general or Perez sky) */
+    char *model;                      /* NULL, or what the light was made from in words (a daylight sky and
+                                       * its sun: scene_sky.h), for the plan; owned like the outline */
     int near_field_unspread;          /* near_field "always" on a file whose opening is not spread: a point */
 } cdl_scene_light;
 

@@ -14,14 +14,16 @@
  *                (>= 0, default 1), flux_lm (> 0, optional rescale)
  *   area         shape (rect, disk, polygon, mesh); exactly one of
  *                luminance_cd_m2, flux_lm (>= 0); reflectance (default 0)
- *   directional  direction, illuminance_lx (>= 0)
+ *   directional  direction, illuminance_lx (>= 0), angular_diameter_deg
+ *                ([0, 10], default 0: parallel; the sun is 0.533)
  *   environment  exactly one of luminance_cd_m2 (>= 0) or file (with
  *                scale >= 0, default 1); up (default [0, 0, 1]);
  *                hemisphere "full" (default) or "upper"; or "sky":
  *                "cie_overcast" with zenith_luminance_cd_m2 (>= 0), up
  *                and no other (the CIE standard overcast sky, L_z (1 + 2
  *                cos theta) / 3 above the horizon, nothing below);
- *                "sky": "uniform" is the default
+ *                "sky": "uniform" is the default; "sky": "cie" or "perez" with
+ *                their keys (scene_daylight.c)
  * Grids: name (letters, digits, '.', '_', '-'; unique ignoring case, so the
  * output files differ on every file system), type, outputs (["ao"]), and
  *   rect     origin, u, v, nu, nv, normal (default u x v)
@@ -51,7 +53,7 @@
 #include "solver/scene/scene_parse.h"
 
 /* Room in the key tables of luminaires and grids, NULL included. */
-#define LUMINAIRE_KEYS_MAX 16
+#define LUMINAIRE_KEYS_MAX 24
 
 static const char *const document_keys[] = {"$schema", "version", "name",   "project", "surfaces",
                                             "luminaires", "grids", "observers", "solver", NULL};
@@ -135,9 +137,11 @@ static const char *const luminaire_keys[][LUMINAIRE_KEYS_MAX] = {
     {"type", "name", "file", "position", "positions", "array", "rotation", "aim", "spin", "multiplier", "flux_lm",
      "maintenance_factor", "near_field", NULL},
     {"type", "name", "shape", "luminance_cd_m2", "flux_lm", "reflectance", "maintenance_factor", NULL},
-    {"type", "name", "direction", "illuminance_lx", "maintenance_factor", NULL},
+    {"type", "name", "direction", "illuminance_lx", "angular_diameter_deg", "maintenance_factor", NULL},
     {"type", "name", "luminance_cd_m2", "file", "scale", "up", "hemisphere", "maintenance_factor", "sky",
-     "zenith_luminance_cd_m2", NULL},
+     "zenith_luminance_cd_m2", "cie_type", "diffuse_horizontal_illuminance_lx", "direct_normal_illuminance_lx",
+     "diffuse_horizontal_irradiance_w_m2", "direct_normal_irradiance_w_m2", "dew_point_c", "sun", "site", "time",
+     "day_of_year", "north", NULL},
 };
 
 static cdl_status read_intensity(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
@@ -200,10 +204,24 @@ static cdl_status read_environment(const cdl_scene_parse *ctx, const cJSON *node
                                    cdl_luminaire_spec *out)
 {
     char p[CDL_SCENE_PATH_MAX];
-    int which = -1;
-    static const char *const skies[] = {"uniform", "cie_overcast", NULL};
-    if (cdl_scene_json_read_choice(ctx, field(node, path, "sky", p), p, skies, 0, &out->sky_overcast) != CDL_OK)
+    int which = -1, sky = 0;
+    /* the order of cdl_scene_sky */
+    static const char *const skies[] = {"uniform", "cie_overcast", "cie", "perez", NULL};
+    if (cdl_scene_json_read_choice(ctx, field(node, path, "sky", p), p, skies, 0, &sky) != CDL_OK)
         return CDL_ERR_INPUT;
+    out->sky = (cdl_scene_sky)sky;
+    out->sky_overcast = out->sky == CDL_SCENE_SKY_CIE_OVERCAST;
+    if (out->sky == CDL_SCENE_SKY_CIE || out->sky == CDL_SCENE_SKY_PEREZ)
+        return cdl_scene_json_read_daylight(ctx, node, path, out);
+    static const char *const daylight_only[] = {"cie_type", "diffuse_horizontal_illuminance_lx",
+                                                "direct_normal_illuminance_lx", "diffuse_horizontal_irradiance_w_m2",
+                                                "direct_normal_irradiance_w_m2", "dew_point_c", "sun", "site", "time",
+                                                "day_of_year", "north", NULL};
+    for (int k = 0; daylight_only[k]; ++k)
+        if (field(node, path, daylight_only[k], p))
+            return cdl_scene_json_failf(ctx, p, "this key only with \"sky\": \"cie\" or \"perez\"",
+                                        "\"%s\" with a %s sky",
+                                        daylight_only[k], skies[sky]);
     if (out->sky_overcast) {
         /* A sky model: its zenith luminance and `up` only. */
         static const char *const others[] = {"luminance_cd_m2", "file", "scale", "hemisphere", NULL};
@@ -222,7 +240,7 @@ static cdl_status read_environment(const cdl_scene_parse *ctx, const cJSON *node
         return CDL_OK;
     }
     if (field(node, path, "zenith_luminance_cd_m2", p))
-        return cdl_scene_json_failf(ctx, p, "\"zenith_luminance_cd_m2\" only with \"sky\": \"cie_overcast\"",
+        return cdl_scene_json_failf(ctx, p, "\"zenith_luminance_cd_m2\" only with \"sky\": \"cie_overcast\" or \"cie\"",
                                     "it with a uniform or image sky");
     if (one_of(ctx, node, path, "luminance_cd_m2", "file", 1, &which) != CDL_OK) return CDL_ERR_INPUT;
     if (which == 0) {
@@ -321,6 +339,12 @@ static cdl_status read_luminaire(const cdl_scene_parse *ctx, const cJSON *node, 
         if (cdl_scene_json_read_vec3(ctx, field(node, path, "direction", p), p, 1, 1, &out->direction) != CDL_OK)
             return CDL_ERR_INPUT;
         out->direction = cdl_vec3_normalize(out->direction);
+        if (cdl_scene_json_read_number(ctx, field(node, path, "angular_diameter_deg", p), p, CDL_RANGE_NONNEGATIVE, 0,
+                                       &out->angular_diameter_deg) != CDL_OK)
+            return CDL_ERR_INPUT;
+        if (out->angular_diameter_deg > 10.0)
+            return cdl_scene_json_failf(ctx, p, "an angular diameter in [0, 10] degrees (the sun's is 0.533)", "%g",
+                                        out->angular_diameter_deg);
         return cdl_scene_json_read_quantity(ctx, field(node, path, "illuminance_lx", p), p, CDL_DIM_ILLUMINANCE,
                                             CDL_RANGE_NONNEGATIVE, 1, &out->illuminance_lx);
     case CDL_LUMINAIRE_ENVIRONMENT:
@@ -441,11 +465,12 @@ static cdl_status read_grid_outputs(const cdl_scene_parse *ctx, const cJSON *nod
     if (!node) return CDL_OK;
     if (cdl_scene_json_check_array(ctx, node, path,
                                    "a list of extra outputs (\"ao\", \"cylindrical\", \"semicylindrical\", "
-                                   "\"luminance\")",
+                                   "\"luminance\", \"daylight_factor\")",
                                    0) != CDL_OK)
         return CDL_ERR_INPUT;
-    static const char *const outputs[] = {"ao", "cylindrical", "semicylindrical", "luminance", NULL};
-    int *wants[] = {&out->want_ao, &out->want_cylindrical, &out->want_semicylindrical, &out->want_luminance};
+    static const char *const outputs[] = {"ao", "cylindrical", "semicylindrical", "luminance", "daylight_factor", NULL};
+    int *wants[] = {&out->want_ao, &out->want_cylindrical, &out->want_semicylindrical, &out->want_luminance,
+                    &out->want_daylight_factor};
     size_t i = 0;
     char item[CDL_SCENE_PATH_MAX];
     for (const cJSON *e = node->child; e; e = e->next, ++i) {
@@ -880,6 +905,8 @@ void cdl_scene_keys_collect(cdl_scene_keys *out)
     out->sets[n++] = (cdl_scene_key_set){"grid point", point_keys};
     out->sets[n++] = (cdl_scene_key_set){"array", cdl_scene_array_keys};
     out->sets[n++] = (cdl_scene_key_set){"requirements", cdl_scene_requirements_keys};
+    out->sets[n++] = (cdl_scene_key_set){"sun", cdl_scene_sun_keys};
+    out->sets[n++] = (cdl_scene_key_set){"site", cdl_scene_site_keys};
     out->sets[n++] = (cdl_scene_key_set){"observer", cdl_scene_observer_keys};
     out->sets[n++] = (cdl_scene_key_set){"grid observers", cdl_scene_observer_grid_keys};
     out->sets[n++] = (cdl_scene_key_set){"observer requirements", cdl_scene_observer_requirements_keys};

@@ -136,6 +136,18 @@ void cdl_scene_surface_spec_free(cdl_surface_spec *spec);
  * many were added. */
 size_t cdl_scene_surface_key_sets(cdl_scene_keys *keys, size_t first);
 
+/* ---- daylight skies (scene_daylight.c) ------------------------------------------ */
+
+/* The keys of a "sun" and of a "site" object. */
+extern const char *const cdl_scene_sun_keys[];
+extern const char *const cdl_scene_site_keys[];
+
+/* An environment with "sky": "cie" or "perez" (out->sky set): its up,
+ * north, the sky's inputs and its sun ("sun", or "site" and "time" by the
+ * SPA), into out->daylight. */
+cdl_status cdl_scene_json_read_daylight(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
+                                        cdl_luminaire_spec *out);
+
 /* ---- names (scene_json.c) ---------------------------------------------------------- */
 
 /* A name usable as a file name: 1 to 64 letters, digits, '.', '_', '-', not

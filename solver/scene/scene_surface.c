@@ -14,6 +14,7 @@
  * An area luminaire's shape takes the geometric keys only (rect, disk,
  * polygon, mesh); its material keys belong to the luminaire.
  */
+#include "radiometry/glass.h"
 #include "solver/scene/scene_parse.h"
 
 #include <math.h>
@@ -39,7 +40,38 @@ static const char *const geometry_keys[][5] = {
     {"center", "radius", "inward", NULL},
     {"file", "vertices", "triangles", NULL},
 };
-static const char *const material_keys[] = {"name", "reflectance", "two_sided", "luminance_cd_m2", "requirements", NULL};
+static const char *const material_keys[] = {"name",          "reflectance",  "two_sided", "luminance_cd_m2",
+                                            "transmittance", "requirements", NULL};
+
+/* "transmittance": a thin pane of glass (radiometry/glass.h). It transmits
+ * and reflects nothing diffusely, emits nothing: no "reflectance" or
+ * "luminance_cd_m2" with it. */
+static cdl_status read_glass(const cdl_scene_parse *ctx, const cJSON *node, const char *path, cdl_surface_spec *out)
+{
+    char p[CDL_SCENE_PATH_MAX];
+    const cJSON *t = cdl_scene_json_member(node, "transmittance");
+    if (!t) return CDL_OK;
+    cdl_scene_json_path_key(p, path, "transmittance");
+    double T = 0.0;
+    if (cdl_scene_json_read_number(ctx, t, p, CDL_RANGE_ANY, 1, &T) != CDL_OK) return CDL_ERR_INPUT;
+    cdl_glass glass;
+    cdl_error e;
+    if (cdl_glass_from_transmittance(T, &glass, &e) != CDL_OK)
+        return cdl_error_set(ctx->err, CDL_ERR_INPUT, "%s: %s: %s", ctx->file, p, e.message);
+    static const char *const not_glass[] = {"reflectance", "luminance_cd_m2", NULL};
+    for (int k = 0; not_glass[k]; ++k)
+        if (cdl_scene_json_member(node, not_glass[k])) {
+            cdl_scene_json_path_key(p, path, not_glass[k]);
+            return cdl_scene_json_failf(ctx, p,
+                                        "no \"reflectance\" or \"luminance_cd_m2\" on glass (\"transmittance\": a "
+                                        "pane that transmits; the light it reflects, specularly, is not modelled)",
+                                        "\"%s\"", not_glass[k]);
+        }
+    out->transmittance = T;
+    out->reflectance = 0.0;
+    for (int f = 0; f < CDL_BOX_FACES; ++f) out->face_reflectance[f] = 0.0;
+    return CDL_OK;
+}
 
 void cdl_scene_rings_free(cdl_ring3 *outer, cdl_ring3 *holes, size_t hole_count)
 {
@@ -475,6 +507,8 @@ cdl_status cdl_scene_json_read_surface(const cdl_scene_parse *ctx, const cJSON *
     cdl_scene_json_path_key(p, path, "name");
     if (cdl_scene_json_read_string(ctx, cdl_scene_json_member(node, "name"), p, 0, &out->name) != CDL_OK)
         return CDL_ERR_INPUT;
+    if (read_glass(ctx, node, path, out) != CDL_OK) return CDL_ERR_INPUT;
+    if (out->transmittance > 0.0) return CDL_OK;
     cdl_scene_json_path_key(p, path, "reflectance");
     const cJSON *rho = cdl_scene_json_member(node, "reflectance");
     if (out->kind == CDL_SURFACE_BOX) {

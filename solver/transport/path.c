@@ -36,6 +36,8 @@ void cdl_transport_path(const cdl_path_context *ctx, cdl_rng_key key, cdl_vec3 p
          * counted where the path started. */
         if (!cdl_transport_trace(ctx->geometry, origin, origin_n, dir, &hit)) break;
         if (depth == 1) out->distance = hit.distance;
+        /* what the panes of glass on the way let through, both ways (reciprocity) */
+        w *= hit.transmission;
         stats->vertices++;
         if ((uint64_t)depth > stats->longest) stats->longest = (uint64_t)depth;
         double rho = hit.reflectance;
@@ -45,7 +47,7 @@ void cdl_transport_path(const cdl_path_context *ctx, cdl_rng_key key, cdl_vec3 p
         double Ed = cdl_direct_estimate_point(ctx->direct, nee, hit.p, hit.n, &unoccluded, &stats->direct);
         double gained = w * rho * Ed;
         out->value += gained;
-        if (depth == 1) out->potential = rho * unoccluded;
+        if (depth == 1) out->potential = w * rho * unoccluded;
         if (depth == limit) out->last = gained;
         if (depth == limit - 1) out->before_last = gained;
         w *= rho;

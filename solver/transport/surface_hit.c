@@ -23,11 +23,27 @@ int cdl_transport_trace(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3
                         cdl_surface_hit *hit)
 {
     cdl_ray_hit h;
-    if (!cdl_scene_geometry_intersect(geometry, p, p_normal, dir, INFINITY, &h)) return 0;
-    const cdl_geometry_piece *piece = cdl_scene_geometry_piece(geometry, h.geom_id);
-    if (!piece) return 0;
+    double T = 1.0, travelled = 0.0;
+    const cdl_geometry_piece *piece = NULL;
+    for (int panes = 0;; ++panes) {
+        if (!cdl_scene_geometry_intersect(geometry, p, p_normal, dir, INFINITY, &h)) {
+            hit->transmission = T; /* out to the sky through the panes met */
+            return 0;
+        }
+        piece = cdl_scene_geometry_piece(geometry, h.geom_id);
+        hit->transmission = 0.0;
+        if (!piece) return 0;
+        if (!(piece->transmittance > 0.0)) break;
+        if (panes == CDL_GLASS_MAX_PANES) return 0;
+        /* through the pane at its angle of incidence, on from its far side */
+        T *= cdl_glass_transmittance(&piece->glass, cdl_vec3_dot(dir, h.normal));
+        p = cdl_vec3_madd(p, h.t, dir);
+        p_normal = h.normal;
+        travelled += h.t;
+    }
+    hit->transmission = T;
     hit->p = cdl_vec3_madd(p, h.t, dir);
-    hit->distance = h.t;
+    hit->distance = travelled + h.t;
     hit->piece = h.geom_id;
     cdl_vec3 front = cdl_transport_front_normal(geometry, h.geom_id, h.prim_id, hit->p);
     hit->front = cdl_vec3_dot(front, dir) < 0.0;

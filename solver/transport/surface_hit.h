@@ -27,11 +27,18 @@ typedef struct cdl_surface_hit {
     uint32_t piece;           /* the geometry piece (scene_geometry.h) */
     int front;                /* 1: the front side was hit */
     double reflectance;       /* of the side hit, [0, 1] */
+    double transmission;      /* the product of the transmittances of the panes of glass the ray passed
+                               * through on its way (1 without glass) */
 } cdl_surface_hit;
 
 /* Follow the ray from p (lying on a surface of unit normal p_normal, or the
  * zero vector when p is in free space) along unit `dir`; returns 0 when it
- * leaves the scene. */
+ * leaves the scene. Panes of glass ("transmittance") are passed through,
+ * their transmittance at the ray's angle multiplied into hit->transmission
+ * (the ray goes on undeviated: a thin pane's two faces refract it back);
+ * the hit is the first surface that is not glass, or none after
+ * CDL_GLASS_MAX_PANES panes. On 0, hit->transmission alone is set: what
+ * the panes on the way out let through to the sky (0 after too many). */
 int cdl_transport_trace(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 p_normal, cdl_vec3 dir,
                         cdl_surface_hit *hit);
 

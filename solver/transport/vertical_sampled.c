@@ -94,13 +94,17 @@ static sample_value radiance_along(const cdl_vertical_context *ctx, cdl_rng_key 
     cdl_ray_hit hit;
     int hit_any = ctx->path.geometry && cdl_scene_geometry_intersect(ctx->path.geometry, p, w, w, INFINITY, &hit);
     if (ctx->path.geometry) stats->rays++;
+    /* the sky through whatever panes of glass are in the way (none: 1 when nothing is) */
+    double sky_T = !hit_any ? 1.0 : cdl_scene_geometry_has_glass(ctx->path.geometry)
+                                        ? cdl_scene_geometry_transmission(ctx->path.geometry, p, w, INFINITY)
+                                        : 0.0;
     for (size_t l = 0; l < d->light_count; ++l) {
         const cdl_scene_light *light = &d->lights[l];
         if (!light->is_environment) continue; /* area emitters: emitter_samples */
         double L = cdl_emitter_radiance(light->emitter, p, w, w, NULL).cd_m2;
         if (!(L > 0.0)) continue;
         s.potential += CDL_PI * L;
-        if (!hit_any) s.L += L;
+        s.L += L * sky_T;
     }
     if (ctx->indirect && hit_any) {
         cdl_path_result r;
@@ -123,7 +127,8 @@ static void emitter_samples(const cdl_vertical_context *ctx, const receiver *r, 
         const cdl_scene_light *light = &d->lights[l];
         if (light->is_environment || cdl_emitter_is_delta(light->emitter) || !cdl_scene_light_applies(light, p))
             continue;
-        cdl_vec3 a = cdl_vec3_sub(cdl_bounds3_centre(light->bounds), p);
+        /* towards the emitter (the sun's disk: its axis; it has no bounds) */
+        cdl_vec3 a = light->is_sun_disk ? light->sun_dir : cdl_vec3_sub(cdl_bounds3_centre(light->bounds), p);
         double len = cdl_vec3_length(a);
         a = len > 0.0 ? cdl_vec3_scale(a, 1.0 / len) : cdl_vec3_make(0, 0, 1);
         for (int h = 0; h < 2; ++h) {
@@ -137,12 +142,14 @@ static void emitter_samples(const cdl_vertical_context *ctx, const receiver *r, 
             double gz = smp.L.cd_m2 * st / (CDL_PI * smp.pdf);
             double gsz = smp.L.cd_m2 * (st + w.x * facing.x + w.y * facing.y) / (CDL_PI * smp.pdf);
             *potential += gz;
+            double T = 1.0; /* through glass, a fraction */
             if (ctx->path.geometry) {
                 stats->rays++;
-                if (cdl_scene_geometry_ray_occluded(ctx->path.geometry, p, n, w, smp.distance)) continue;
+                T = cdl_scene_geometry_transmission(ctx->path.geometry, p, w, smp.distance);
+                if (!(T > 0.0)) continue;
             }
-            *fz += gz;
-            *fsz += gsz;
+            *fz += gz * T;
+            *fsz += gsz * T;
         }
     }
 }

@@ -71,7 +71,7 @@ check "all present: apt-get not called" '[ ! -s "$tmp/present.log" ]'
 
 # Every package the issue names is among those the script checks.
 for p in libopenexr-dev libopencolorio-dev libcgal-dev libembree-dev libtbb-dev pkg-config cmake \
-         build-essential libcjson-dev python3-jsonschema libopenmpi-dev openmpi-bin; do
+         build-essential libcjson-dev python3-jsonschema libopenmpi-dev openmpi-bin libopenblas-dev; do
   check "checks $p" 'grep -qx "$p" "$tmp/present.log.queried"'
 done
 

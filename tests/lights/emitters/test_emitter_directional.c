@@ -1,5 +1,10 @@
 /* Directional emitter: E = E_n cos(theta) on any plane; its "flux" (E_n
- * through 1 m^2 of beam section) three ways. */
+ * through 1 m^2 of beam section) three ways. With a disk (the sun, 0.533
+ * degrees): E_n cos(theta) while the whole disk is above the plane; where
+ * the plane cuts it, against a quadrature of L cos over the part above
+ * written here (in the disk's own polar coordinates, fine enough for 1e-10
+ * of E_n); its samples' mean L cos / pdf is that E; radiance and pdf agree
+ * with the samples; a diameter out of range is refused. */
 #include <math.h>
 #include <string.h>
 
@@ -10,7 +15,7 @@
 
 static cdl_emitter *make_sun(cdl_vec3 dir, double E)
 {
-    cdl_directional_params p = {dir, cdl_lux(E)};
+    cdl_directional_params p = {dir, cdl_lux(E), 0.0};
     cdl_emitter *e = NULL;
     cdl_error err;
     CHECK_OK(cdl_emitter_create_directional(&p, &e, &err), &err);
@@ -90,7 +95,7 @@ static void test_bad_parameters(void)
 {
     cdl_emitter *e = NULL;
     cdl_error err;
-    cdl_directional_params p = {{0, 0, 0}, cdl_lux(100.0)};
+    cdl_directional_params p = {{0, 0, 0}, cdl_lux(100.0), 0.0};
     CHECK(cdl_emitter_create_directional(&p, &e, &err) == CDL_ERR_INPUT);
     CHECK_MSG(strstr(err.message, "direction"), "%s", err.message);
     p.direction = cdl_vec3_make(0, 0, -1);
@@ -100,9 +105,86 @@ static void test_bad_parameters(void)
     CHECK(e == NULL);
 }
 
+/* E from the disk by brute force: L int over the cap of max(0, n.w) dw in
+ * polar coordinates (t from the axis, psi about it), 2000 x 4000 midpoints
+ * (the kink where n.w crosses 0 costs O(h^2) there: about 1e-9 E_n). */
+static double disk_reference(cdl_vec3 to_sun, double alpha, double E_n, cdl_vec3 n)
+{
+    cdl_frame f = cdl_frame_from_normal(to_sun);
+    double L = E_n / (CDL_PI * sin(alpha) * sin(alpha)), sum = 0.0;
+    const int NT = 2000, NP = 4000;
+    for (int i = 0; i < NT; ++i) {
+        double t = alpha * (i + 0.5) / NT;
+        for (int j = 0; j < NP; ++j) {
+            double psi = CDL_TWO_PI * (j + 0.5) / NP;
+            cdl_vec3 w = cdl_frame_to_world(&f, cdl_vec3_make(sin(t) * cos(psi), sin(t) * sin(psi), cos(t)));
+            double c = cdl_vec3_dot(n, w);
+            if (c > 0.0) sum += c * sin(t);
+        }
+    }
+    return L * sum * (alpha / NT) * (CDL_TWO_PI / NP);
+}
+
+static void test_disk(void)
+{
+    cdl_vec3 travel = cdl_vec3_make(-0.2, 0.5, -0.7);
+    cdl_directional_params p = {travel, cdl_lux(90000.0), 0.533};
+    cdl_emitter *e = NULL;
+    cdl_error err;
+    CHECK_OK(cdl_emitter_create_directional(&p, &e, &err), &err);
+    if (!e) return;
+    CHECK(!cdl_emitter_is_delta(e) && cdl_emitter_has_exact_illuminance(e));
+    cdl_vec3 to_sun = cdl_vec3_normalize(cdl_vec3_neg(travel)), axis;
+    double alpha = 0.5 * 0.533 * CDL_DEG_TO_RAD, half;
+    CHECK(cdl_emitter_directional_disk(e, &axis, &half) && cdl_vec3_dot(axis, to_sun) > 1.0 - 1e-15);
+    CHECK_REL(half, alpha, 1e-15);
+    cdl_frame f = cdl_frame_from_normal(to_sun);
+    /* angles from the axis: whole disk above (0, 60, 89.7), cut (89.8 ..
+     * 90.2 degrees), wholly below (90.3) */
+    const double angles[] = {0.0, 60.0, 89.7, 89.8, 89.9, 90.0, 90.1, 90.2, 90.3};
+    for (size_t k = 0; k < sizeof angles / sizeof angles[0]; ++k) {
+        double t = angles[k] * CDL_DEG_TO_RAD;
+        cdl_vec3 n = cdl_frame_to_world(&f, cdl_vec3_make(sin(t) * 0.8, sin(t) * 0.6, cos(t)));
+        cdl_illuminance E;
+        CHECK_OK(cdl_emitter_exact_illuminance(e, cdl_vec3_make(3, 4, 5), n, &E, &err), &err);
+        double want = t + alpha <= 0.5 * CDL_PI ? 90000.0 * cos(t) : disk_reference(to_sun, alpha, 90000.0, n);
+        /* full view: E_n cos theta to rounding; cut: the brute force's 1e-9 E_n */
+        CHECK_MSG(fabs(E.lx - want) <= 2e-9 * 90000.0, "%g deg: %.12g vs %.12g", angles[k], E.lx, want);
+        if (angles[k] >= 90.3) CHECK(E.lx == 0.0);
+        /* the plane through the axis: L x 2 (alpha / 2 - sin(2 alpha) / 4) = E_n 2 alpha / (3 pi) to O(alpha^2) */
+        if (angles[k] == 90.0) CHECK_REL(E.lx, 90000.0 * 2.0 * alpha / (3.0 * CDL_PI), 1e-4);
+        /* samples: stratified mean of L cos / pdf is E (to 1e-4 of E_n at 64 x 64) */
+        double sum = 0.0;
+        const int N = 64;
+        for (int i = 0; i < N; ++i)
+            for (int j = 0; j < N; ++j) {
+                cdl_light_sample s;
+                if (!cdl_emitter_sample(e, cdl_vec3_make(0, 0, 0), n, (i + 0.5) / N, (j + 0.5) / N, &s)) continue;
+                double pdf;
+                cdl_luminance L = cdl_emitter_radiance(e, cdl_vec3_make(0, 0, 0), n, s.to_light, &pdf);
+                CHECK_REL(L.cd_m2, s.L.cd_m2, 1e-12);
+                CHECK_REL(pdf, s.pdf, 1e-12);
+                sum += s.L.cd_m2 * cdl_vec3_dot(n, s.to_light) / s.pdf;
+            }
+        CHECK_MSG(fabs(sum / (N * N) - E.lx) <= 1e-4 * 90000.0, "%g deg: samples %.9g vs %.9g", angles[k],
+                  sum / (N * N), E.lx);
+    }
+    /* outside the disk: no light */
+    double pdf = 1.0;
+    cdl_vec3 off = cdl_frame_to_world(&f, cdl_vec3_make(sin(2 * alpha), 0.0, cos(2 * alpha)));
+    CHECK(cdl_emitter_radiance(e, cdl_vec3_make(0, 0, 0), to_sun, off, &pdf).cd_m2 == 0.0 && pdf == 0.0);
+    CHECK_REL(cdl_emitter_flux(e).lm, 90000.0, 1e-15);
+    cdl_emitter_release(e);
+    p.angular_diameter_deg = 12.0;
+    CHECK(cdl_emitter_create_directional(&p, &e, &err) == CDL_ERR_INPUT && strstr(err.message, "angular_diameter"));
+    p.angular_diameter_deg = -1.0;
+    CHECK(cdl_emitter_create_directional(&p, &e, &err) == CDL_ERR_INPUT);
+}
+
 int main(void)
 {
     test_cosine_law();
+    test_disk();
     test_flux_three_ways();
     test_bad_parameters();
     return check_finish();

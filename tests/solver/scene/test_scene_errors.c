@@ -243,14 +243,16 @@ static const error_case cases[] = {
     {LUMINAIRE("\"type\": \"environment\", \"luminance_cd_m2\": 1, \"up\": [0,0,0]"),
      "luminaires[1].up: expected a non-zero vector"},
     {LUMINAIRE("\"type\": \"environment\", \"sky\": \"cie_clear\", \"zenith_luminance_cd_m2\": 1"),
-     "luminaires[1].sky: expected one of the strings \"uniform\", \"cie_overcast\", found the string \"cie_clear\""},
+     "luminaires[1].sky: expected one of the strings \"uniform\", \"cie_overcast\", \"cie\", \"perez\", found the "
+     "string \"cie_clear\""},
     {LUMINAIRE("\"type\": \"environment\", \"sky\": \"cie_overcast\", \"luminance_cd_m2\": 1"),
      "luminaires[1].luminance_cd_m2: expected no \"luminance_cd_m2\", \"file\", \"scale\" or \"hemisphere\" with "
      "\"sky\": \"cie_overcast\""},
     {LUMINAIRE("\"type\": \"environment\", \"sky\": \"cie_overcast\""),
      "luminaires[1].zenith_luminance_cd_m2: expected"},
     {LUMINAIRE("\"type\": \"environment\", \"luminance_cd_m2\": 1, \"zenith_luminance_cd_m2\": 1"),
-     "luminaires[1].zenith_luminance_cd_m2: expected \"zenith_luminance_cd_m2\" only with \"sky\": \"cie_overcast\""},
+     "luminaires[1].zenith_luminance_cd_m2: expected \"zenith_luminance_cd_m2\" only with \"sky\": \"cie_overcast\" "
+     "or \"cie\""},
     {LUMINAIRE("\"type\": \"environment\", \"luminance_cd_m2\": 1, \"scale\": 2"),
      "luminaires[1].scale: expected \"scale\" only with an image \"file\""},
     {LUMINAIRE("\"type\": \"environment\", \"file\": \"sky.exr\", \"scale\": -2"), "luminaires[1].scale: expected a number >= 0"},
@@ -289,7 +291,8 @@ static const error_case cases[] = {
     {GRID_CASE("\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1], \"w\": 1}]"),
      "grids[1].points[0].w: expected a key of a calculation point (p, n)"},
     {GRID_CASE("\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1]}], \"outputs\": [\"lux\"]"),
-     "grids[1].outputs[0]: expected one of the strings \"ao\", \"cylindrical\", \"semicylindrical\", \"luminance\", found the string \"lux\""},
+     "grids[1].outputs[0]: expected one of the strings \"ao\", \"cylindrical\", \"semicylindrical\", \"luminance\", "
+     "\"daylight_factor\", found the string \"lux\""},
     {GRID_CASE("\"name\": \"p\", \"type\": \"points\", \"points\": [{\"p\": [0,0,0], \"n\": [0,0,1]}], \"spacing\": 1"),
      "grids[1].spacing: expected a key of a points grid (name, type, points, outputs, requirements)"},
     /* solver */

@@ -1,0 +1,527 @@
+/* annual.c - an annual daylight study, from the weather file to the files (see the header). */
+#include "daylight/annual.h"
+
+#include <cblas.h>
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/atomic_file.h"
+#include "base/error_report.h"
+#include "base/strings.h"
+#include "daylight/annual_output.h"
+#include "daylight/epw.h"
+#include "daylight/occupancy.h"
+#include "solver/daylight/daylight_coefficients.h"
+#include "solver/output/solution_write.h"
+#include "solver/pool.h"
+#include "solver/solve_internal.h"
+
+/* Most paths a point's coefficients take (the cost's bound). */
+#define ANNUAL_MAX_PATHS 65536.0
+
+/* Everything a run holds. */
+typedef struct annual_state {
+    const cdl_scene *scene;
+    cdl_annual_options o;
+    const char *weather;
+    const char *out_dir;
+    int threads;
+    double target;
+    cdl_epw epw;
+    unsigned char *occupied, *daylight;
+    char occupancy[300];
+    cdl_reinhart_patches patches;
+    cdl_annual_skies skies;
+    int *row_of_hour;                     /* per hour: its row of the hourly arrays, -1 for none */
+    size_t *hour_of_row;                  /* per row: its hour */
+    cdl_daylight_scene ds;
+    cdl_solution overcast;                /* cie_overcast: the solve under the overcast sky */
+    int has_overcast;
+    cJSON *grids;                         /* the summary's "grids" */
+    uint64_t paths, rays;
+    size_t exact_points, sampled_points;
+    cdl_annual_result *result;
+} annual_state;
+
+void cdl_annual_product(const float *sky, size_t rows, const float *coef, size_t points, size_t patches, float *out)
+{
+    if (rows == 0 || points == 0) return;
+    /* out (rows x points) = sky (rows x patches) coef^T (patches x points) */
+    cblas_sgemm(CblasRowMajor, CblasNoTrans, CblasTrans, (int)rows, (int)points, (int)patches, 1.0f, sky, (int)patches,
+                coef, (int)patches, 0.0f, out, (int)points);
+}
+
+/* ---- the year --------------------------------------------------------------------- */
+
+static cdl_status read_year(annual_state *s, cdl_error *err)
+{
+    cdl_status st = cdl_epw_read(s->weather, &s->epw, err);
+    if (st != CDL_OK) return st;
+    size_t H = s->epw.count;
+    s->occupied = calloc(H, 1);
+    s->daylight = calloc(H, 1);
+    double *diffuse = malloc(H * sizeof *diffuse);
+    if (!s->occupied || !s->daylight || !diffuse) {
+        free(diffuse);
+        return cdl_error_out_of_memory(err);
+    }
+    st = cdl_occupancy_read(s->o.occupancy, &s->epw, s->occupied, s->occupancy, sizeof s->occupancy, err);
+    if (st != CDL_OK) {
+        free(diffuse);
+        return cdl_error_prefix(err, "--occupancy: ");
+    }
+    /* the daylight hours by the file's diffuse horizontal illuminance, or
+     * its irradiance where any illuminance is missing (the ranking is the same
+     * but for the efficacy's variation) */
+    int all = 1;
+    for (size_t h = 0; h < H; ++h) all &= !isnan(s->epw.hours[h].diffuse_horizontal_lx);
+    for (size_t h = 0; h < H; ++h)
+        diffuse[h] = all ? s->epw.hours[h].diffuse_horizontal_lx : s->epw.hours[h].diffuse_horizontal_w_m2;
+    st = cdl_annual_daylight_hours(diffuse, H, s->daylight, err);
+    free(diffuse);
+    return st;
+}
+
+static cdl_status make_skies(annual_state *s, cdl_error *err)
+{
+    cdl_status st = cdl_reinhart_init(&s->patches, s->o.mf, cdl_vec3_make(0.0, 0.0, 1.0), s->o.north, err);
+    if (st != CDL_OK) return cdl_error_prefix(err, "--north: ");
+    cdl_annual_sky_options so = {s->o.sky, s->o.ground_reflectance, s->threads};
+    st = cdl_annual_skies_compute(&s->epw, &so, &s->patches, &s->skies, err);
+    if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", s->weather);
+    s->row_of_hour = malloc(s->epw.count * sizeof *s->row_of_hour);
+    if (!s->row_of_hour) return cdl_error_out_of_memory(err);
+    s->hour_of_row = malloc((s->skies.rows ? s->skies.rows : 1) * sizeof *s->hour_of_row);
+    if (!s->hour_of_row) return cdl_error_out_of_memory(err);
+    for (size_t h = 0; h < s->epw.count; ++h) {
+        s->row_of_hour[h] = s->skies.hour[h].row;
+        if (s->row_of_hour[h] >= 0) s->hour_of_row[s->row_of_hour[h]] = h;
+    }
+    return CDL_OK;
+}
+
+/* ---- cie_overcast: one solve ------------------------------------------------------- */
+
+/* The scene under the CIE overcast sky of 10 klx unobstructed horizontal
+ * illuminance (L_z = 9 E_h / (7 pi)), every grid asking for its daylight
+ * factor: a luminaire made by the loader itself (its defaults), lent to a
+ * copy of the scene. */
+static cdl_status solve_overcast(annual_state *s, cdl_error *err)
+{
+    char json[256];
+    snprintf(json, sizeof json,
+             "{\"version\": 1, \"luminaires\": [{\"type\": \"environment\", \"sky\": \"cie_overcast\", "
+             "\"zenith_luminance_cd_m2\": %.17g}], \"grids\": [{\"name\": \"g\", \"type\": \"points\", \"points\": "
+             "[{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}]}]}",
+             9.0 * 10000.0 / (7.0 * 3.14159265358979323846));
+    cdl_scene *sky = NULL;
+    cdl_status st = cdl_scene_load_string(json, s->scene->path, &sky, err);
+    if (st != CDL_OK) return st;
+    cdl_scene copy = *s->scene;
+    copy.luminaires = sky->luminaires;
+    copy.luminaire_count = 1;
+    copy.observer_count = 0;
+    copy.grids = malloc(s->scene->grid_count * sizeof *copy.grids);
+    if (!copy.grids) {
+        cdl_scene_release(sky);
+        return cdl_error_out_of_memory(err);
+    }
+    for (size_t g = 0; g < s->scene->grid_count; ++g) {
+        copy.grids[g] = s->scene->grids[g];
+        copy.grids[g].want_daylight_factor = 1;
+    }
+    cdl_solve_options so = CDL_SOLVE_OPTIONS_INIT;
+    so.threads = s->threads;
+    so.progress = s->o.progress;
+    st = cdl_solve_scene_into(&copy, &so, NULL, &s->overcast, err);
+    s->has_overcast = st == CDL_OK;
+    free(copy.grids);
+    cdl_scene_release(sky);
+    return st;
+}
+
+/* ---- perez: the coefficients and the hours ------------------------------------------ */
+
+typedef struct sun_job {
+    const annual_state *s;
+    size_t g, points;
+    float *E_sun;
+} sun_job;
+
+/* The direct sun of each row's hour: E_dn max(0, n.s) T at every point. */
+static cdl_status direct_suns(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
+{
+    (void)local;
+    (void)err;
+    const sun_job *jb = shared;
+    for (size_t r = begin; r < end; ++r) {
+        const cdl_annual_hour *hr = &jb->s->skies.hour[jb->s->hour_of_row[r]];
+        float *row = jb->E_sun + r * jb->points;
+        if (!(hr->direct_normal_lx > 0.0)) {
+            memset(row, 0, jb->points * sizeof *row);
+            continue;
+        }
+        cdl_daylight_direct_sun(&jb->s->ds, jb->g, hr->to_sun, row);
+        for (size_t i = 0; i < jb->points; ++i) row[i] = (float)(hr->direct_normal_lx * row[i]);
+    }
+    return CDL_OK;
+}
+
+/* Grid g's hours under the Perez skies: E (rows x points), E_sun likewise. */
+static cdl_status perez_hours(annual_state *s, size_t g, float **E_out, float **E_sun_out, double *rel_stderr,
+                              cdl_daylight_grid_coefficients *c, cdl_error *err)
+{
+    size_t N = s->ds.grids[g].count, R = s->skies.rows, K = (size_t)s->patches.count;
+    cdl_daylight_coefficient_options co = {.patches = &s->patches, .suns = s->skies.suns,
+                                           .sun_count = s->skies.sun_count, .target = s->target,
+                                           .seed = s->scene->settings.seed, .threads = s->threads,
+                                           .max_paths = ANNUAL_MAX_PATHS, .progress = s->o.progress};
+    double t0 = cdl_pool_now_seconds();
+    cdl_status st = cdl_daylight_coefficients_compute(&s->ds, g, &co, c, err);
+    if (st != CDL_OK) return st;
+    s->result->seconds_coefficients += cdl_pool_now_seconds() - t0;
+    memcpy(rel_stderr, c->sky_rel_stderr, N * sizeof *rel_stderr);
+    float *E = malloc((R ? R : 1) * (N ? N : 1) * sizeof *E), *E_sun = malloc((R ? R : 1) * (N ? N : 1) * sizeof *E);
+    if (!E || !E_sun) {
+        free(E);
+        free(E_sun);
+        return cdl_error_out_of_memory(err);
+    }
+    t0 = cdl_pool_now_seconds();
+    sun_job jb = {s, g, N, E_sun};
+    cdl_pool_task task = {.count = R, .chunk = 16, .run = direct_suns, .shared = &jb, .stage = "direct sun"};
+    st = cdl_pool_run(&task, s->threads, &s->o.progress, err);
+    s->result->seconds_suns += cdl_pool_now_seconds() - t0;
+    t0 = cdl_pool_now_seconds();
+    if (st == CDL_OK) cdl_annual_product(s->skies.patch, R, c->sky, N, K, E);
+    /* each hour's sun: its direct light traced, its interreflection by its bin */
+    for (size_t h = 0; st == CDL_OK && h < s->skies.hours; ++h) {
+        const cdl_annual_hour *hr = &s->skies.hour[h];
+        if (hr->row < 0 || hr->sun < 0) continue;
+        float *e = E + (size_t)hr->row * N;
+        const float *d = E_sun + (size_t)hr->row * N;
+        float dn = (float)hr->direct_normal_lx;
+        for (size_t i = 0; i < N; ++i) e[i] += d[i] + dn * c->sun[i * c->suns + (size_t)hr->sun];
+    }
+    s->result->seconds_hours += cdl_pool_now_seconds() - t0;
+    if (st != CDL_OK) {
+        free(E);
+        free(E_sun);
+        return st;
+    }
+    *E_out = E;
+    *E_sun_out = E_sun;
+    return CDL_OK;
+}
+
+/* Grid g's hours under the overcast sky: E = DF / 100 x the hour's diffuse horizontal illuminance. */
+static cdl_status overcast_hours(annual_state *s, size_t g, float **E_out, double *rel_stderr, double *DF,
+                                 cdl_error *err)
+{
+    const cdl_grid_solution *gs = &s->overcast.grids[g];
+    size_t N = gs->grid.count, R = s->skies.rows;
+    for (size_t i = 0; i < N; ++i) {
+        DF[i] = gs->DF[i];
+        rel_stderr[i] = gs->E[i] > 0.0 ? gs->E_stderr[i] / gs->E[i] : 0.0;
+    }
+    float *E = malloc((R ? R : 1) * (N ? N : 1) * sizeof *E);
+    if (!E) return cdl_error_out_of_memory(err);
+    for (size_t h = 0; h < s->skies.hours; ++h) {
+        const cdl_annual_hour *hr = &s->skies.hour[h];
+        if (hr->row < 0) continue;
+        for (size_t i = 0; i < N; ++i) E[(size_t)hr->row * N + i] = (float)(DF[i] / 100.0 * hr->diffuse_lx);
+    }
+    *E_out = E;
+    return CDL_OK;
+}
+
+/* ---- one grid ----------------------------------------------------------------------- */
+
+/* Numbers into o under their keys. */
+typedef struct named_number {
+    const char *key;
+    double value;
+} named_number;
+
+static void add_numbers(cJSON *o, const named_number *v, size_t count)
+{
+    for (size_t i = 0; i < count; ++i) cJSON_AddNumberToObject(o, v[i].key, v[i].value);
+}
+
+static cJSON *grid_summary(const cdl_annual_grid_result *r, const cdl_daylight_grid_coefficients *c)
+{
+    const cdl_grid_annual_metrics *m = &r->metrics;
+    cJSON *o = cJSON_CreateObject();
+    const named_number values[] = {{"count", (double)r->points},
+                                   {"sDA300_percent", m->sDA300},
+                                   {"ASE1000_percent", m->ASE1000},
+                                   {"DA300_mean_percent", m->DA300_mean},
+                                   {"UDI_fell_short_percent", m->UDI_fell_short},
+                                   {"UDI_percent", m->UDI},
+                                   {"UDI_exceeded_percent", m->UDI_exceeded}};
+    add_numbers(o, values, sizeof values / sizeof values[0]);
+    cJSON *en = cJSON_AddObjectToObject(o, "EN17037");
+    cJSON_AddStringToObject(en, "level", m->en_level);
+    for (int l = 0; l < CDL_EN17037_LEVELS; ++l) {
+        cJSON *lv = cJSON_AddObjectToObject(en, cdl_en17037_levels[l].name);
+        cJSON_AddNumberToObject(lv, "target_lx", cdl_en17037_levels[l].target_lx);
+        cJSON_AddNumberToObject(lv, "minimum_target_lx", cdl_en17037_levels[l].minimum_lx);
+        cJSON_AddNumberToObject(lv, "target_hours_percent", m->en_target_hours[l]);
+        cJSON_AddNumberToObject(lv, "minimum_hours_percent", m->en_minimum_hours[l]);
+        cJSON_AddBoolToObject(lv, "met", m->en_met[l]);
+    }
+    cJSON *co = cJSON_AddObjectToObject(o, "coefficients");
+    cJSON_AddNumberToObject(co, "stderr_mean_rel", r->stderr_mean_rel);
+    cJSON_AddNumberToObject(co, "stderr_max_rel", r->stderr_max_rel);
+    if (c) {
+        cJSON_AddNumberToObject(co, "exact_direct_points", (double)c->routes.exact);
+        cJSON_AddNumberToObject(co, "through_glass_direct_points", (double)c->routes.through_glass);
+        size_t sampled = 0;
+        for (int k = 0; k < CDL_ROUTE_COUNT; ++k) sampled += c->routes.sampled[k];
+        cJSON_AddNumberToObject(co, "sampled_direct_points", (double)sampled);
+        cJSON_AddNumberToObject(co, "paths", (double)c->paths);
+        cJSON_AddNumberToObject(co, "rays", (double)c->rays);
+    }
+    return o;
+}
+
+/* Grid g: its hours, metrics and files. */
+static cdl_status run_grid(annual_state *s, size_t g, cdl_error *err)
+{
+    const cdl_grid *grid = s->has_overcast ? &s->overcast.grids[g].grid : &s->ds.grids[g];
+    size_t N = grid->count;
+    cdl_annual_grid_result *r = &s->result->grids[g];
+    r->points = N;
+    if (!(r->name = cdl_string_copy(s->scene->grids[g].name))) return cdl_error_out_of_memory(err);
+    double *rel = calloc(N ? N : 1, sizeof *rel), *DF = calloc(N ? N : 1, sizeof *DF);
+    cdl_point_metrics *pm = calloc(N ? N : 1, sizeof *pm);
+    float *E = NULL, *E_sun = NULL;
+    cdl_daylight_grid_coefficients c;
+    memset(&c, 0, sizeof c);
+    cdl_status st = rel && DF && pm ? CDL_OK : cdl_error_out_of_memory(err);
+    if (st == CDL_OK)
+        st = s->has_overcast ? overcast_hours(s, g, &E, rel, DF, err) : perez_hours(s, g, &E, &E_sun, rel, &c, err);
+    double t0 = cdl_pool_now_seconds();
+    cdl_annual_input in = {s->epw.count, N, E, E_sun, s->row_of_hour, s->occupied, s->daylight, grid->weights};
+    if (st == CDL_OK) st = cdl_annual_metrics_compute(&in, pm, &r->metrics, err);
+    s->result->seconds_metrics += cdl_pool_now_seconds() - t0;
+    for (size_t i = 0; i < N; ++i) {
+        r->stderr_mean_rel += rel[i] / (double)N;
+        if (rel[i] > r->stderr_max_rel) r->stderr_max_rel = rel[i];
+    }
+    double ase_max = 0.0;
+    for (size_t i = 0; i < N; ++i) ase_max = fmax(ase_max, pm[i].ASE_hours);
+    cdl_annual_grid_files files = {r->name, s->scene->grids[g].kind == CDL_GRID_POLYGON, grid, pm, rel,
+                                   s->has_overcast ? DF : NULL, ase_max};
+    const char *ocio = s->o.ocio_config ? s->o.ocio_config : cdl_default_ocio_config();
+    if (st == CDL_OK) st = cdl_annual_write_grid(s->out_dir, &files, ocio, err);
+    char name[128];
+    snprintf(name, sizeof name, "%s.hourly", r->name);
+    char *path = st == CDL_OK ? cdl_path_join(s->out_dir, name, ".bin") : NULL;
+    if (st == CDL_OK && !path) st = cdl_error_out_of_memory(err);
+    if (st == CDL_OK)
+        st = cdl_annual_write_hourly(path, CDL_HOURLY_ILLUMINANCE, s->epw.count, N, s->row_of_hour, E, err);
+    free(path);
+    if (st == CDL_OK && E_sun) {
+        snprintf(name, sizeof name, "%s.sun", r->name);
+        path = cdl_path_join(s->out_dir, name, ".bin");
+        st = path ? cdl_annual_write_hourly(path, CDL_HOURLY_DIRECT_SUN, s->epw.count, N, s->row_of_hour, E_sun, err)
+                  : cdl_error_out_of_memory(err);
+        free(path);
+    }
+    if (st == CDL_OK) cJSON_AddItemToObject(s->grids, r->name, grid_summary(r, s->has_overcast ? NULL : &c));
+    cdl_daylight_coefficients_release(&c);
+    free(E);
+    free(E_sun);
+    free(rel);
+    free(DF);
+    free(pm);
+    return st;
+}
+
+/* ---- summary.json ------------------------------------------------------------------- */
+
+static void add_vec3(cJSON *o, const char *key, cdl_vec3 v)
+{
+    const double a[3] = {v.x, v.y, v.z};
+    cJSON_AddItemToObject(o, key, cJSON_CreateDoubleArray(a, 3));
+}
+
+static cJSON *weather_summary(const annual_state *s)
+{
+    cJSON *w = cJSON_CreateObject();
+    cJSON_AddStringToObject(w, "file", s->weather);
+    cJSON_AddStringToObject(w, "city", s->epw.city);
+    cJSON_AddStringToObject(w, "country", s->epw.country);
+    cJSON_AddNumberToObject(w, "latitude_deg", s->epw.latitude_deg);
+    cJSON_AddNumberToObject(w, "longitude_deg", s->epw.longitude_deg);
+    cJSON_AddNumberToObject(w, "time_zone_h", s->epw.time_zone_h);
+    cJSON_AddNumberToObject(w, "elevation_m", s->epw.elevation_m);
+    cJSON_AddNumberToObject(w, "hours", (double)s->epw.count);
+    cJSON_AddNumberToObject(w, "sun_year", s->epw.year);
+    cJSON_AddBoolToObject(w, "sun_year_from_file", s->epw.year_from_file);
+    cJSON_AddNumberToObject(w, "dew_point_missing_hours", (double)s->epw.dew_point_missing);
+    return w;
+}
+
+static cJSON *sky_summary(const annual_state *s)
+{
+    const cdl_annual_skies *k = &s->skies;
+    cJSON *o = cJSON_CreateObject();
+    int perez = s->o.sky == CDL_ANNUAL_SKY_PEREZ;
+    cJSON_AddStringToObject(o, "model", perez ? "perez" : "cie_overcast");
+    cJSON_AddStringToObject(o, "words",
+                            perez ? "Perez all-weather sky (1993) of each hour's direct normal and diffuse horizontal "
+                                    "irradiance and dew point, Perez 1990 efficacies; the sun at the hour's middle by "
+                                    "the SPA, its direct light traced each hour, its interreflection by sun bins"
+                                  : "CIE standard overcast sky scaled to each hour's diffuse horizontal illuminance "
+                                    "(the file's field 19); no sun: every hour is the daylight factor times it");
+    cJSON_AddNumberToObject(o, "hours_with_light", (double)k->rows);
+    if (perez) {
+        cJSON *pt = cJSON_AddObjectToObject(o, "patches");
+        cJSON_AddNumberToObject(pt, "mf", s->patches.mf);
+        cJSON_AddNumberToObject(pt, "sky_patches", s->patches.count - 1);
+        cJSON_AddStringToObject(pt, "convention",
+                                "Reinhart (reinhartb.cal): 144 MF^2 + 1 sky patches, rows of 90 / (7 MF + 0.5) degrees "
+                                "from the horizon, the cap last, each row from north eastwards; column 0 the ground");
+        cJSON_AddNumberToObject(o, "ground_reflectance", s->o.ground_reflectance);
+        cJSON_AddNumberToObject(o, "sun_bins", (double)k->sun_count);
+        cJSON_AddNumberToObject(o, "clamped_hours", (double)k->clamped_hours);
+        cJSON_AddNumberToObject(o, "fallback_hours", (double)k->fallback_hours);
+        cJSON_AddNumberToObject(o, "dew_point_default_hours", (double)k->dew_point_default_hours);
+        cJSON_AddNumberToObject(o, "left_out_hours", (double)k->left_out_hours);
+        cJSON_AddNumberToObject(o, "left_out_irradiation_wh_m2", k->left_out_wh_m2);
+    }
+    add_vec3(o, "north", s->patches.frame.s);
+    add_vec3(o, "up", s->patches.frame.n);
+    return o;
+}
+
+static cdl_status write_summary(annual_state *s, cdl_error *err)
+{
+    cdl_annual_result *r = s->result;
+    cJSON *root = cJSON_CreateObject();
+    cJSON *a = cJSON_AddObjectToObject(root, "annual");
+    cJSON_AddStringToObject(root, "candela_version", CANDELA_VERSION);
+    cJSON_AddItemToObject(a, "weather", weather_summary(s));
+    cJSON_AddItemToObject(a, "sky", sky_summary(s));
+    cJSON_AddStringToObject(a, "occupancy", s->occupancy);
+    cJSON_AddNumberToObject(a, "occupied_hours", (double)r->occupied_hours);
+    cJSON_AddNumberToObject(a, "daylight_hours", (double)r->daylight_hours);
+    cJSON_AddStringToObject(a, "daylight_hours_words",
+                            "EN 17037: the half of the year's hours with the greatest diffuse horizontal illuminance");
+    cJSON *co = cJSON_AddObjectToObject(a, "coefficients");
+    cJSON_AddNumberToObject(co, "target_error", s->target);
+    cJSON_AddStringToObject(co, "stderr_words",
+                            s->o.sky == CDL_ANNUAL_SKY_PEREZ
+                                ? "per point, the relative standard error of the sampled part under a uniform sky "
+                                  "(direct sky exact where the exact route sees it; interreflection by paths); the "
+                                  "patches' discretisation is not included"
+                                : "per point, the relative standard error of E under the overcast sky (the solve's)");
+    cJSON_AddNumberToObject(co, "seed", (double)s->scene->settings.seed);
+    cJSON_AddNumberToObject(co, "threads", s->threads);
+    const named_number seconds[] = {{"skies", r->seconds_skies},
+                                    {"coefficients", r->seconds_coefficients},
+                                    {"direct_sun", r->seconds_suns},
+                                    {"hours", r->seconds_hours},
+                                    {"metrics", r->seconds_metrics}};
+    add_numbers(cJSON_AddObjectToObject(a, "seconds"), seconds, sizeof seconds / sizeof seconds[0]);
+    cJSON_AddItemToObject(root, "grids", s->grids);
+    s->grids = NULL;
+    char *text = cJSON_Print(root);
+    cJSON_Delete(root);
+    if (!text) return cdl_error_out_of_memory(err);
+    char *path = cdl_path_join(s->out_dir, "summary", ".json");
+    cdl_status st = path ? CDL_OK : cdl_error_out_of_memory(err);
+    cdl_atomic_file f;
+    if (st == CDL_OK) st = cdl_atomic_file_open(&f, path, err);
+    if (st == CDL_OK) {
+        fputs(text, f.fp);
+        fputc('\n', f.fp);
+        st = cdl_atomic_file_commit(&f, err);
+    }
+    free(path);
+    free(text);
+    return st;
+}
+
+/* ---- the run ------------------------------------------------------------------------ */
+
+static void state_release(annual_state *s)
+{
+    cdl_epw_release(&s->epw);
+    free(s->occupied);
+    free(s->daylight);
+    cdl_annual_skies_release(&s->skies);
+    free(s->row_of_hour);
+    free(s->hour_of_row);
+    cdl_daylight_scene_release(&s->ds);
+    if (s->has_overcast) cdl_solution_clear(&s->overcast);
+    cJSON_Delete(s->grids);
+}
+
+static cdl_status check_options(const cdl_annual_options *o, cdl_error *err)
+{
+    if (o->mf != 1 && o->mf != 2 && o->mf != 4)
+        return cdl_error_set(err, CDL_ERR_USAGE, "--mf: expected 1, 2 or 4, found %d", o->mf);
+    if (!(o->ground_reflectance >= 0.0 && o->ground_reflectance <= 1.0))
+        return cdl_error_set(err, CDL_ERR_USAGE, "--ground-reflectance: expected a number in [0, 1], found %g",
+                             o->ground_reflectance);
+    return CDL_OK;
+}
+
+cdl_status cdl_annual_run(const cdl_scene *scene, const char *weather, const cdl_annual_options *options,
+                          const char *out_dir, cdl_annual_result *result, cdl_error *err)
+{
+    memset(result, 0, sizeof *result);
+    double t_start = cdl_pool_now_seconds();
+    annual_state s;
+    memset(&s, 0, sizeof s);
+    s.scene = scene;
+    s.o = *options;
+    s.weather = weather;
+    s.out_dir = out_dir;
+    s.result = result;
+    s.target = cdl_solver_settings_target(&scene->settings);
+    s.threads = options->threads >= 0 ? options->threads : scene->settings.threads;
+    if (s.threads <= 0) s.threads = cdl_pool_cpu_count();
+    cdl_status st = check_options(options, err);
+    /* the scene first: a scene an annual study cannot take is said before the weather is read */
+    if (st == CDL_OK) st = cdl_daylight_scene_build(scene, &s.ds, err);
+    if (st == CDL_OK) st = read_year(&s, err);
+    double t0 = cdl_pool_now_seconds();
+    if (st == CDL_OK) st = make_skies(&s, err);
+    result->seconds_skies = cdl_pool_now_seconds() - t0;
+    if (st == CDL_OK && s.o.sky == CDL_ANNUAL_SKY_CIE_OVERCAST) {
+        t0 = cdl_pool_now_seconds();
+        st = solve_overcast(&s, err);
+        result->seconds_coefficients = cdl_pool_now_seconds() - t0;
+    }
+    result->grid_count = scene->grid_count;
+    result->grids = calloc(scene->grid_count ? scene->grid_count : 1, sizeof *result->grids);
+    s.grids = cJSON_CreateObject();
+    if (st == CDL_OK && (!result->grids || !s.grids)) st = cdl_error_out_of_memory(err);
+    for (size_t g = 0; st == CDL_OK && g < scene->grid_count; ++g) st = run_grid(&s, g, err);
+    if (st == CDL_OK) {
+        result->hours = s.epw.count;
+        result->lit_hours = s.skies.rows;
+        result->occupied_hours = scene->grid_count ? result->grids[0].metrics.occupied_hours : 0;
+        result->daylight_hours = scene->grid_count ? result->grids[0].metrics.daylight_hours : 0;
+        result->seconds_total = cdl_pool_now_seconds() - t_start;
+        st = write_summary(&s, err);
+    }
+    state_release(&s);
+    if (st != CDL_OK) cdl_annual_result_release(result);
+    return st;
+}
+
+void cdl_annual_result_release(cdl_annual_result *result)
+{
+    if (!result) return;
+    for (size_t g = 0; result->grids && g < result->grid_count; ++g) free(result->grids[g].name);
+    free(result->grids);
+    memset(result, 0, sizeof *result);
+}

@@ -1,0 +1,83 @@
+/* annual_sky.h - each hour of a weather file as a sky over the patches (not public).
+ *
+ * The sun of each hour is placed by the SPA (lights/environment/
+ * solar_position.h) at the hour's middle, h - 0.5 local standard time (the
+ * file's time zone; its site's latitude, longitude and elevation; the
+ * standard pressure and temperature for refraction).
+ *
+ * --sky perez: an hour with the sun above the horizon and diffuse light is
+ * the Perez all-weather sky of its direct normal and diffuse horizontal
+ * irradiance and dew point (11 C where the file has none) with the Perez
+ * 1990 efficacies (perez_sky.h; inputs outside the model clamped to it, as
+ * gendaymtx does, and counted). Each sky patch k takes the mean luminance
+ * over it weighted by the cosine of the zenith angle,
+ *     L_k = int_k L cos(Z) dw / int_k cos(Z) dw,
+ * by a 3 x 3 Gauss-Legendre rule in (sin altitude, azimuth) over the patch,
+ * so that the patches give the sky's horizontal illuminance (what the
+ * model was scaled to) to the rule's accuracy; the ground patch takes
+ * rho_g (E_dh + E_dn sin(altitude)) / pi, the light of a ground of
+ * reflectance rho_g (default 0: the scene's own surfaces are its ground).
+ * The sun's direct normal illuminance is kept apart: its direct light is
+ * traced hour by hour, its interreflection goes through the sun bins (the
+ * Tregenza patches the year's sun crosses, each at the direct-normal-
+ * weighted mean direction of its hours).
+ * Hours with the sun below the horizon at their middle give nothing; any
+ * light the file holds for them is counted as left out (as are hours
+ * whose Perez sky has no valid form even clamped, b >= 0, and no diffuse
+ * illuminance in the file; with one, such an hour is a uniform sky of it,
+ * and counted as a fallback).
+ *
+ * --sky cie_overcast: every hour is the CIE standard overcast sky scaled to
+ * the file's diffuse horizontal illuminance (field 19), the sun left out:
+ * the hour's illuminance at a point is its daylight factor times that.
+ *
+ * Thread safety: pure; the work runs on `threads` workers.
+ */
+#ifndef CANDELA_DAYLIGHT_ANNUAL_SKY_H
+#define CANDELA_DAYLIGHT_ANNUAL_SKY_H
+
+#include <stddef.h>
+
+#include "base/error.h"
+#include "daylight/epw.h"
+#include "lights/environment/reinhart_patches.h"
+
+typedef enum cdl_annual_sky_kind { CDL_ANNUAL_SKY_PEREZ, CDL_ANNUAL_SKY_CIE_OVERCAST } cdl_annual_sky_kind;
+
+/* Default dew point where the weather file has none (gendaymtx's). */
+#define CDL_ANNUAL_DEW_POINT_C 11.0
+
+typedef struct cdl_annual_hour {
+    double altitude_deg, azimuth_deg;     /* the sun at the hour's middle: apparent altitude, azimuth east of north */
+    cdl_vec3 to_sun;                      /* unit, world */
+    int row;                              /* its row of patch luminances, -1 when the hour gives no light */
+    double diffuse_lx;                    /* the sky's horizontal illuminance */
+    double direct_normal_lx;              /* the sun's (Perez), 0 without */
+    int sun;                              /* its sun bin, -1 without */
+    int clamped;                          /* the Perez inputs were clamped */
+} cdl_annual_hour;
+
+typedef struct cdl_annual_skies {
+    cdl_annual_sky_kind kind;
+    size_t hours;
+    cdl_annual_hour *hour;                /* hours */
+    size_t rows;                          /* the hours that give light */
+    float *patch;                         /* perez: rows x patches->count, cd/m^2 (ground first) */
+    cdl_vec3 *suns;                       /* perez: the sun bins' directions */
+    size_t sun_count;
+    size_t clamped_hours, dew_point_default_hours, left_out_hours, fallback_hours;
+    double left_out_wh_m2;                /* their diffuse horizontal and direct normal irradiation, summed */
+} cdl_annual_skies;
+
+typedef struct cdl_annual_sky_options {
+    cdl_annual_sky_kind kind;
+    double ground_reflectance;            /* [0, 1] */
+    int threads;                          /* >= 1 */
+} cdl_annual_sky_options;
+
+/* The year's skies over the patches p (their frame gives up and north). */
+cdl_status cdl_annual_skies_compute(const cdl_epw *epw, const cdl_annual_sky_options *o,
+                                    const cdl_reinhart_patches *p, cdl_annual_skies *out, cdl_error *err);
+void cdl_annual_skies_release(cdl_annual_skies *s);
+
+#endif
