@@ -35,7 +35,7 @@ from typing import Optional
 # The ABI version these declarations are written for: the N of
 # libcandela.so.N. It moves whenever a public struct or signature changes,
 # and so must this file (tests/python holds it to CMakeLists.txt's).
-ABI_VERSION = 7
+ABI_VERSION = 8
 
 LIBRARY_NAME = f"libcandela.so.{ABI_VERSION}"
 
@@ -210,6 +210,7 @@ class cdl_solution_info(Structure):
         ("installed_w", c_double),
         ("luminaires_with_watts", c_size_t),
         ("luminaires_without_watts", c_size_t),
+        ("ranks", c_int),
     ]
 
 
