@@ -1,5 +1,5 @@
 // ctest-labels: slow no-sanitize
-// ctest-timeout: 900
+// ctest-timeout: 1500
 /* The irradiance cache in rooms: no light through thin walls or table tops,
  * agreement with the path-traced reference, what gradients buy, and the
  * same bytes whatever the threads or the other grids. */
