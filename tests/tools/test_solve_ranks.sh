@@ -13,11 +13,10 @@
 # Then a run with two threads per rank against one thread alone (the EXR
 # records the thread count, so EXR apart), the per-rank report, and the
 # report's cover.
-# ctest-labels: mpi
+# ctest-labels: mpi;slow
 # ctest-timeout: 300
 source "$(dirname "$0")/harness.sh"
-[ -n "${CANDELA_MPIEXEC:-}" ] || { echo "built without MPI (CANDELA_MPI off): skipped"; exit 77; }
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+source "$(dirname "$0")/mpi_env.sh"
 scenes="$CANDELA_SOURCE_DIR/tests/data/scene"
 cd "$tmp" || exit 1
 
