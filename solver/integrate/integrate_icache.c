@@ -34,14 +34,13 @@ static cdl_status run_icache(cdl_solve_state *state, cdl_grid_job *job, cdl_erro
                                     .var_direct = job->var_direct,
                                     .E_indirect = gs->E_indirect,
                                     .var_indirect = job->var_indirect,
-                                    .ao = NULL,
                                     .workers = &workers,
                                     .stage = stage,
                                     .stats = &state->icache_stats};
         st = cdl_icache_solve_shared(&state->icache, state->shared_cache, &target, err);
     } else {
         st = cdl_icache_solve_grid(&state->icache, &gs->grid, (size_t)job->plan->key, gs->E_direct, job->var_direct,
-                                   gs->E_indirect, job->var_indirect, NULL, records, &workers, stage,
+                                   gs->E_indirect, job->var_indirect, records, &workers, stage,
                                    &state->icache_stats, err);
     }
     state->out->compute_seconds += cdl_pool_now_seconds() - t0;
