@@ -102,8 +102,12 @@ static void cover(cdl_report_builder *b, const cdl_report_input *in)
     cdl_report_cell(b, t, r, 0, "Seed");
     cdl_report_cell(b, t, r++, 1, "%.0f", cdl_report_summary_number(in, "settings.seed", 0.0));
     cdl_report_cell(b, t, r, 0, "Threads");
-    cdl_report_cell(b, t, r++, 1, "%.0f (results do not depend on it)",
-                    cdl_report_summary_number(in, "settings.threads", 0.0));
+    double threads = cdl_report_summary_number(in, "settings.threads", 0.0);
+    double ranks = cdl_report_summary_number(in, "ranks.count", 1.0); /* MPI ranks sharing the solve */
+    if (ranks > 1.0)
+        cdl_report_cell(b, t, r++, 1, "%.0f on each of %.0f ranks (results depend on neither)", threads, ranks);
+    else
+        cdl_report_cell(b, t, r++, 1, "%.0f (results do not depend on it)", threads);
     cdl_report_cell(b, t, r, 0, "Solve time");
     cdl_report_cell(b, t, r++, 1, "%.1f s, %.4g rays", cdl_report_summary_number(in, "seconds", 0.0),
                     cdl_report_summary_number(in, "rays", 0.0));

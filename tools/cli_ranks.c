@@ -9,17 +9,29 @@
 
 #include "base/error_report.h"
 
+/* A launcher's count of ranks, from its environment (0: none said):
+ * Open MPI's mpirun, PMI's (MPICH's hydra, srun --mpi=pmi2), or srun's
+ * step of several tasks (with or without an MPI plugin). */
+static int launched_count(void)
+{
+    static const char *const names[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "SLURM_STEP_NUM_TASKS"};
+    for (size_t i = 0; i < sizeof names / sizeof *names; ++i) {
+        const char *v = getenv(names[i]);
+        if (v && atoi(v) > 0) return atoi(v);
+    }
+    return 0;
+}
+
 #ifdef CANDELA_WITH_MPI
 #include "candela/candela_mpi.h"
 
 /* Started by a launcher: Open MPI's mpirun, PMI (MPICH's hydra, Slurm's
- * srun --mpi=pmi2) or PMIx (Slurm's srun --mpi=pmix, prterun). */
+ * srun --mpi=pmi2), PMIx (Slurm's srun --mpi=pmix, prterun), or srun
+ * with several tasks. */
 static int launched(void)
 {
-    static const char *const names[] = {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"};
-    for (size_t i = 0; i < sizeof names / sizeof *names; ++i)
-        if (getenv(names[i])) return 1;
-    return 0;
+    return getenv("OMPI_COMM_WORLD_SIZE") || getenv("PMIX_RANK") || getenv("PMI_RANK") || getenv("PMI_SIZE") ||
+           launched_count() > 1;
 }
 
 /* Ranks but 0 say nothing: rank 0 prints what the ranks agreed on. */
@@ -61,10 +73,10 @@ int cdl_cli_ranks_begin(const char *command, cdl_cli_ranks *ranks)
     ranks->transport = r;
     /* srun without an MPI plugin starts lone processes that would each
      * solve everything into the same folder. */
-    const char *tasks = getenv("SLURM_NTASKS");
-    if (ranks->group.count == 1 && tasks && atoi(tasks) > 1) {
-        fprintf(stderr, "candela %s: Slurm started %s tasks but MPI sees one: start them with srun --mpi=pmix (or "
-                        "pmi2), as the README shows\n", command, tasks);
+    int tasks = launched_count();
+    if (ranks->group.count == 1 && tasks > 1) {
+        fprintf(stderr, "candela %s: started as one of %d tasks but MPI sees one: start them with mpirun, or srun "
+                        "--mpi=pmix (or pmi2), as the README shows\n", command, tasks);
         MPI_Abort(MPI_COMM_WORLD, 2);
         return 2;
     }
@@ -97,10 +109,17 @@ void cdl_cli_ranks_end(cdl_cli_ranks *ranks)
 
 int cdl_cli_ranks_begin(const char *command, cdl_cli_ranks *ranks)
 {
-    (void)command;
     memset(ranks, 0, sizeof *ranks);
     ranks->stderr_copy = -1;
     cdl_rank_group_init(&ranks->group, NULL, NULL);
+    /* Without MPI, N processes a launcher started would each solve all of
+     * it into the same folder. */
+    int n = launched_count();
+    if (n > 1) {
+        fprintf(stderr, "candela %s: started as one of %d ranks, but this candela was built without MPI "
+                        "(CMake option CANDELA_MPI): run it alone, or build it with MPI\n", command, n);
+        return 2;
+    }
     return 0;
 }
 

@@ -11,9 +11,8 @@
 # ctest-timeout: 180
 set -u
 : "${CANDELA_TEST_PREFIX:?}" "${CANDELA_INSTALL_LIBDIR:?}" "${CANDELA_SOURCE_DIR:?}" "${CC:?}"
-[ -n "${CANDELA_MPIEXEC:-}" ] || { echo "built without MPI (CANDELA_MPI off): skipped"; exit 77; }
+source "$CANDELA_SOURCE_DIR/tests/tools/mpi_env.sh"
 command -v mpicc > /dev/null || { echo "no mpicc: skipped"; exit 77; }
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 san=${CANDELA_SANITIZE_FLAGS:-}
 fail=0
 check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }

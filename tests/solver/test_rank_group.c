@@ -22,143 +22,29 @@
 #include "solver/rank_group.h"
 
 #define RANKS 3
+#include "solver/thread_ranks.h"
 
-/* ---- ranks as threads ------------------------------------------------------------ */
+/* The bodies below take a rank group: made from the thread's ranks. */
+typedef void (*group_body)(cdl_rank_group *group, void *user);
 
-typedef struct thread_world {
-    pthread_barrier_t barrier;
-    void *published[RANKS];
-    int fail_call;            /* the collective (counted from 1) at which rank fail_rank's transport fails; 0: none */
-    int fail_rank;
-} thread_world;
-
-typedef struct thread_rank {
-    thread_world *world;
-    int rank, calls;
-} thread_rank;
-
-/* Whether this call fails on this rank (it still takes part in the
- * collective, so that the other threads are not left at the barrier). */
-static int failing(thread_rank *t, char *message)
-{
-    ++t->calls;
-    if (t->world->fail_call && t->calls == t->world->fail_call && t->rank == t->world->fail_rank) {
-        snprintf(message, CDL_ERROR_MESSAGE_SIZE, "the wire is cut");
-        return 1;
-    }
-    return 0;
-}
-
-/* Every rank shows its buffer to the others (NULL: nothing to show). */
-static void publish(thread_rank *t, void *buffer)
-{
-    t->world->published[t->rank] = buffer;
-    pthread_barrier_wait(&t->world->barrier);
-}
-
-static int exchange(void *user, void *buffer, const size_t *offsets, char *message, int to_all)
-{
-    thread_rank *t = user;
-    int failed = failing(t, message);
-    /* What an MPI transport needs: byte ranges in rank order, each an int
-     * count, the whole call within the 2^30 bytes solve_ranks.h promises. */
-    int sane = offsets[0] == 0 && offsets[RANKS] <= ((size_t)1 << 30);
-    for (int k = 0; k < RANKS; ++k) sane &= offsets[k + 1] >= offsets[k];
-    if (!sane) {
-        snprintf(message, CDL_ERROR_MESSAGE_SIZE, "offsets out of order or too large");
-        failed = 1;
-        offsets = NULL;
-    }
-    thread_world *w = t->world;
-    publish(t, offsets ? buffer : NULL);
-    if (offsets && (to_all || t->rank == 0))
-        for (int k = 0; k < RANKS; ++k)
-            if (k != t->rank && w->published[k])
-                memcpy((char *)buffer + offsets[k], (char *)w->published[k] + offsets[k], offsets[k + 1] - offsets[k]);
-    pthread_barrier_wait(&w->barrier);
-    return failed;
-}
-
-static int allgather(void *user, void *buffer, const size_t *offsets, char *message)
-{
-    return exchange(user, buffer, offsets, message, 1);
-}
-
-static int gather(void *user, void *buffer, const size_t *offsets, char *message)
-{
-    return exchange(user, buffer, offsets, message, 0);
-}
-
-static int reduce_u64(void *user, uint64_t *values, size_t n, int op, char *message)
-{
-    thread_rank *t = user;
-    int failed = failing(t, message);
-    thread_world *w = t->world;
-    publish(t, values);
-    uint64_t result[64];
-    for (size_t i = 0; i < n && i < 64; ++i) {
-        result[i] = 0;
-        for (int k = 0; k < RANKS; ++k) {
-            uint64_t v = ((const uint64_t *)w->published[k])[i];
-            result[i] = op == CDL_RANKS_MAX ? (v > result[i] ? v : result[i]) : result[i] + v;
-        }
-    }
-    pthread_barrier_wait(&w->barrier);
-    memcpy(values, result, (n < 64 ? n : 64) * sizeof *values);
-    return failed || n > 64;
-}
-
-static int broadcast(void *user, void *buffer, size_t bytes, int root, char *message)
-{
-    thread_rank *t = user;
-    int failed = failing(t, message);
-    thread_world *w = t->world;
-    publish(t, buffer);
-    if (t->rank != root) memcpy(buffer, w->published[root], bytes);
-    pthread_barrier_wait(&w->barrier);
-    return failed;
-}
-
-/* Run body(group, rank) on RANKS threads, each with its group. */
-typedef void (*rank_body)(cdl_rank_group *group, void *user);
-
-typedef struct rank_thread {
-    thread_rank transport;
-    cdl_rank_group group;
-    rank_body body;
+typedef struct group_call {
+    group_body body;
     void *user;
-} rank_thread;
+} group_call;
 
-static void *rank_main(void *arg)
+static void with_group(const cdl_ranks *ranks, void *user)
 {
-    rank_thread *r = arg;
-    r->body(&r->group, r->user);
-    return NULL;
+    const group_call *call = user;
+    cdl_rank_group group;
+    cdl_error err;
+    CHECK_OK(cdl_rank_group_init(&group, ranks, &err), &err);
+    call->body(&group, call->user);
 }
 
-static void run_ranks(thread_world *world, rank_body body, void *user)
+static void run_groups(thread_world *world, group_body body, void *user)
 {
-    rank_thread threads[RANKS];
-    pthread_t ids[RANKS];
-    pthread_barrier_init(&world->barrier, NULL, RANKS);
-    for (int k = 0; k < RANKS; ++k) {
-        threads[k].transport = (thread_rank){world, k, 0};
-        cdl_ranks ranks = CDL_RANKS_INIT;
-        ranks.rank = k;
-        ranks.count = RANKS;
-        ranks.user = &threads[k].transport;
-        ranks.allgather = allgather;
-        ranks.gather = gather;
-        ranks.reduce_u64 = reduce_u64;
-        ranks.broadcast = broadcast;
-        cdl_error err;
-        CHECK_OK(cdl_rank_group_init(&threads[k].group, &ranks, &err), &err);
-        threads[k].body = body;
-        threads[k].user = user;
-    }
-    for (int k = 0; k < RANKS; ++k) pthread_create(&ids[k], NULL, rank_main, &threads[k]);
-    for (int k = 0; k < RANKS; ++k) pthread_join(ids[k], NULL);
-    pthread_barrier_destroy(&world->barrier);
+    group_call call = {body, user};
+    run_ranks(world, with_group, &call);
 }
 
 /* ---- blocks ------------------------------------------------------------------------ */
@@ -259,17 +145,17 @@ static void check_agreement(void)
 {
     thread_world world = {0};
     agreement a = {.failing_mask = 0};
-    run_ranks(&world, agree_body, &a);
+    run_groups(&world, agree_body, &a);
     for (int r = 0; r < RANKS; ++r) CHECK(a.got[r] == CDL_OK && !a.agreed[r]);
 
     a = (agreement){.failing_mask = 1 << 1 | 1 << 2};
-    run_ranks(&world, agree_body, &a);
+    run_groups(&world, agree_body, &a);
     for (int r = 0; r < RANKS; ++r) {
         CHECK(a.got[r] == CDL_ERR_INPUT && a.agreed[r]);
         CHECK_MSG(strcmp(a.message[r], "rank 1 of 3: file 1 unreadable") == 0, "rank %d: '%s'", r, a.message[r]);
     }
     a = (agreement){.failing_mask = 7};
-    run_ranks(&world, agree_body, &a);
+    run_groups(&world, agree_body, &a);
     for (int r = 0; r < RANKS; ++r)
         CHECK_MSG(a.got[r] == CDL_ERR_INPUT && strcmp(a.message[r], "file 0 unreadable") == 0, "rank %d: '%s'", r,
                   a.message[r]);
@@ -298,7 +184,7 @@ static void check_broken_transport(void)
     thread_world world = {.fail_call = 1, .fail_rank = 1};
     broken b;
     memset(&b, 0, sizeof b);
-    run_ranks(&world, broken_body, &b);
+    run_groups(&world, broken_body, &b);
     CHECK(b.got[0] == CDL_OK && b.got[1] == CDL_ERR_INTERNAL && b.got[2] == CDL_OK);
     CHECK_MSG(strcmp(b.message[1], "exchange among ranks (sum): the wire is cut") == 0, "'%s'", b.message[1]);
 }
@@ -356,7 +242,7 @@ static void check_pool(void)
         t.everywhere = everywhere;
         t.fail_at = SIZE_MAX;
         thread_world world = {0};
-        run_ranks(&world, pool_body, &t);
+        run_groups(&world, pool_body, &t);
         int once = 1;
         for (size_t i = 0; i < ITEMS; ++i) once &= atomic_load(&t.visits[i]) == 1;
         CHECK_MSG(once, "everywhere %d: an item done other than once", everywhere);
@@ -373,7 +259,7 @@ static void check_pool(void)
         /* A failure on the rank that holds item 990 (the last) fails every rank. */
         memset(t.visits, 0, sizeof t.visits);
         t.fail_at = 990;
-        run_ranks(&world, pool_body, &t);
+        run_groups(&world, pool_body, &t);
         for (int r = 0; r < RANKS; ++r) {
             CHECK(t.got[r] == CDL_ERR_INPUT);
             CHECK_MSG(strcmp(t.message[r], "rank 2 of 3: item 990 refused") == 0, "rank %d: '%s'", r, t.message[r]);
@@ -392,7 +278,7 @@ int main(void)
     exchanges x;
     for (int r = 0; r < RANKS; ++r) x.data[r] = malloc(BIG * sizeof(double));
     thread_world world = {0};
-    run_ranks(&world, exchange_body, &x);
+    run_groups(&world, exchange_body, &x);
     for (int r = 0; r < RANKS; ++r) {
         CHECK_MSG(x.ok[r], "rank %d: an exchange gave the wrong bytes", r);
         free(x.data[r]);

@@ -11,12 +11,12 @@
 # path traced, with the sampled vertical outputs, luminance and an observer
 # (glare); a room whose surfaces are mapped (the maps' CSV and scene.glb).
 # Then a run with two threads per rank against one thread alone (the EXR
-# records the thread count, so EXR apart), and the per-rank report.
-# ctest-labels: mpi
+# records the thread count, so EXR apart), the per-rank report, and the
+# report's cover.
+# ctest-labels: mpi;slow
 # ctest-timeout: 300
 source "$(dirname "$0")/harness.sh"
-[ -n "${CANDELA_MPIEXEC:-}" ] || { echo "built without MPI (CANDELA_MPI off): skipped"; exit 77; }
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+source "$(dirname "$0")/mpi_env.sh"
 scenes="$CANDELA_SOURCE_DIR/tests/data/scene"
 cd "$tmp" || exit 1
 
@@ -95,4 +95,7 @@ check "summary.json: ranks count, threads, seconds, work, CPU, bytes and memory 
   'ranks_report paths.np3/summary.json paths.alone/summary.json'
 check "stdout: rank 0 alone prints the results, naming the ranks" \
   '[ "$(grep -c "^method" paths.np3.txt)" = 1 ] && grep -q ", 3 ranks; results in" paths.np3.txt'
+"$CANDELA" report paths.np3 > report.txt 2>&1; st=$?
+check "candela report of a solve on 3 ranks: exit 0, the cover names the ranks" \
+  '[ $st -eq 0 ] && grep -q "1 on each of 3 ranks (results depend on neither)" paths.np3/report.html'
 exit $fail

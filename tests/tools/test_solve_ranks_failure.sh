@@ -14,8 +14,7 @@
 # ctest-labels: mpi
 # ctest-timeout: 240
 source "$(dirname "$0")/harness.sh"
-[ -n "${CANDELA_MPIEXEC:-}" ] || { echo "built without MPI (CANDELA_MPI off): skipped"; exit 77; }
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+source "$(dirname "$0")/mpi_env.sh"
 mpi() { "$CANDELA_MPIEXEC" "$@"; }
 cd "$tmp" || exit 1
 
