@@ -150,7 +150,9 @@ static cdl_status maps(cdl_report_builder *b, const cdl_report_input *in, cdl_er
             cdl_report_format(v[2], sizeof v[2], f->max, f->max * rx);
             cdl_report_format(v[3], sizeof v[3], f->U0, f->U0 * (rm + rx));
             const char *u = f->unit[0] ? " " : "";
+            /* a heading per map, so that its caption and its figure stay together on a page */
             if (k == 0) cdl_report_text(b, CDL_BLOCK_HEADING, 3, "%s", grid->spec->name);
+            else cdl_report_text(b, CDL_BLOCK_HEADING, 3, "%s: %s", grid->spec->name, f->symbol);
             cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0,
                             "%s grid, %zu points, %s %s: mean %s%s%s, min %s%s%s, max %s%s%s, min / mean %s.",
                             grid->spec->kind == CDL_GRID_RECT ? "Rectangular" : "Polygon", grid->count, f->what,
