@@ -3,10 +3,13 @@
 #include <string.h>
 
 #include "base/error_report.h"
+#include "base/sized_struct.h"
 #include "glare/position_index.h"
 #include "glare/room_flux.h"
 #include "glare/ugr.h"
 #include "glare/ugr_table.h"
+#include "glare/ugr_table_conditions.h"
+
 #include "lights/photometry/photometry_metadata.h"
 #include "radiometry/constants.h"
 
@@ -142,8 +145,9 @@ static cdl_status check_rateable(const cdl_photometry *p, cdl_error *err)
 cdl_status cdl_ugr_table_compute(const cdl_photometry *photometry, const cdl_ugr_table_options *options,
                                  cdl_ugr_table *table, cdl_error *err)
 {
-    cdl_ugr_table_options defaults = CDL_UGR_TABLE_OPTIONS_DEFAULT;
-    const cdl_ugr_table_options *o = options ? options : &defaults;
+    cdl_ugr_table_options given = CDL_UGR_TABLE_OPTIONS_INIT;
+    cdl_sized_struct_read(&given, sizeof given, options);
+    const cdl_ugr_table_options *o = &given;
     cdl_status st = check_options(o, err);
     if (st == CDL_OK) st = check_rateable(photometry, err);
     if (st != CDL_OK) return st;
@@ -162,13 +166,15 @@ cdl_status cdl_ugr_table_compute(const cdl_photometry *photometry, const cdl_ugr
         return cdl_error_set(err, CDL_ERR_INPUT, "cannot rate glare: the table gives no light (flux %g lm)", flux);
     cdl_ugr_table t;
     memset(&t, 0, sizeof t);
+    t.size = sizeof t;
     t.spacing_to_height = o->spacing_to_height;
     t.output_factor = lum.scale;
     t.flux_lm = flux;
+    memcpy(t.reflectances, cdl_ugr_table_reflectances, sizeof t.reflectances);
     for (size_t i = 0; i < CDL_UGR_TABLE_ROOMS; ++i) {
         st = table_room(&lum, o->spacing_to_height, i, &t.rooms[i], err);
         if (st != CDL_OK) return st;
     }
-    *table = t;
+    cdl_sized_struct_fill(table, &t, sizeof t);
     return CDL_OK;
 }

@@ -63,18 +63,17 @@
 #define CDL_UGR_TABLE_REFLECTANCE_SETS 5
 #define CDL_UGR_TABLE_HEIGHT_M 2.0 /* H: luminaires above the eye (CIE 190 4.2) */
 
-/* The rooms, X and Y in multiples of H, in the catalogue's order. */
-extern const double cdl_ugr_table_rooms[CDL_UGR_TABLE_ROOMS][2];
-/* The reflectance sets: ceiling, walls, floor. */
-extern const double cdl_ugr_table_reflectances[CDL_UGR_TABLE_REFLECTANCE_SETS][3];
 
+/* Set `size` to sizeof(cdl_ugr_table_options) (CDL_UGR_TABLE_OPTIONS_INIT):
+ * fields past an older program's size keep their defaults. */
 typedef struct cdl_ugr_table_options {
+    size_t size;
     double spacing_to_height; /* SHR, luminaire spacing / H: 0.25 (catalogues), 1 (CIE 190's
                                * worked example); 1 / SHR times every room's side in H must be
                                * whole (1/SHR in {1, 2, 4, 8, ...} or any divisor of all of them) */
 } cdl_ugr_table_options;
 
-#define CDL_UGR_TABLE_OPTIONS_DEFAULT {0.25}
+#define CDL_UGR_TABLE_OPTIONS_INIT {.size = sizeof(cdl_ugr_table_options), .spacing_to_height = 0.25}
 
 typedef struct cdl_ugr_table_room {
     double x_h, y_h;          /* X across the line of sight, Y along it, in multiples of H */
@@ -88,14 +87,21 @@ typedef struct cdl_ugr_table_room {
     double ugr[2][CDL_UGR_TABLE_REFLECTANCE_SETS];
 } cdl_ugr_table_room;
 
+/* The table. Set `size` to sizeof(cdl_ugr_table) before the call
+ * (CDL_UGR_TABLE_INIT): the library fills only the fields that size covers. */
 typedef struct cdl_ugr_table {
+    size_t size;
     double spacing_to_height;
     double output_factor;     /* applied to flux and luminance */
     double flux_lm;           /* the luminaire's flux, output factor applied */
+    double reflectances[CDL_UGR_TABLE_REFLECTANCE_SETS][3]; /* each set's ceiling, walls, floor */
     cdl_ugr_table_room rooms[CDL_UGR_TABLE_ROOMS];
 } cdl_ugr_table;
 
-/* Fill *table (caller's) for the photometry. */
+#define CDL_UGR_TABLE_INIT {.size = sizeof(cdl_ugr_table)}
+
+/* Fill *table (caller's, its size set) for the photometry; options NULL for
+ * the defaults (SHR 0.25). */
 cdl_status cdl_ugr_table_compute(const cdl_photometry *photometry, const cdl_ugr_table_options *options,
                                  cdl_ugr_table *table, cdl_error *err);
 

@@ -10,6 +10,7 @@
 #include "base/file_bytes.h"
 #include "base/strings.h"
 #include "glare/ugr_table.h"
+#include "glare/ugr_table_conditions.h"
 #include "graphics/text.h"
 #include "radiometry/constants.h"
 #include "report/report_numbers.h"
@@ -431,7 +432,7 @@ cdl_status cdl_report_glare_tables(cdl_report_builder *b, const cdl_report_input
     for (size_t k = 0; k < in->type_count; ++k) {
         const cdl_photometry *ph = in->types[k].photometry;
         if (!ph || !cdl_luminous_opening_is_spread(cdl_photometry_opening(ph))) continue;
-        cdl_ugr_table u;
+        cdl_ugr_table u = CDL_UGR_TABLE_INIT;
         cdl_status st = cdl_ugr_table_compute(ph, NULL, &u, err);
         if (st == CDL_ERR_INPUT) continue; /* not rated (radiant data, no light): the schedule says what it is */
         if (st != CDL_OK) return st;

@@ -255,6 +255,14 @@ static void row_of(const cdl_report_surface *m, cdl_report_row *row)
     g.U0 = m->U0;
     g.stderr_mean_rel = m->stderr_mean_rel;
     g.stderr_max_rel = m->stderr_max_rel;
+    /* the vertices of Emin and Emax, whose stated errors theirs are */
+    g.E = m->E;
+    g.E_stderr = m->E_stderr;
+    for (size_t v = 1; v < m->vertex_count; ++v) {
+        if (m->E[v] < m->E[g.min_index]) g.min_index = v;
+        if (m->E[v] > m->E[g.max_index]) g.max_index = v;
+    }
+    if (m->vertex_count == 0) g.E_stderr = NULL;
     g.required_Em_lx = m->spec->required_Em_lx;
     g.required_U0 = m->spec->required_U0;
     cdl_report_row_of(&g, row);

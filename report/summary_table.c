@@ -14,12 +14,20 @@ void cdl_report_row_of(const cdl_report_grid *g, cdl_report_row *row)
 {
     memset(row, 0, sizeof *row);
     double r_mean = g->stderr_mean_rel, r_max = g->stderr_max_rel;
-    double u_Em = g->Em * r_mean, u_U0 = g->U0 * (r_max + r_mean);
+    /* Emin and Emax carry the stated errors of the points they come from
+     * when the points are known (the worst relative error otherwise: a
+     * surface map's vertex beside a hard shadow edge can state 13 times its
+     * value, which says nothing of the darkest vertex elsewhere). U0 = Emin /
+     * Em and Ud = Emin / Emax: relative errors add (first order, worst case). */
+    double u_min = g->E_stderr ? g->E_stderr[g->min_index] : g->Emin * r_max;
+    double u_max = g->E_stderr ? g->E_stderr[g->max_index] : g->Emax * r_max;
+    double rel_min = g->Emin > 0.0 ? u_min / g->Emin : r_max, rel_max = g->Emax > 0.0 ? u_max / g->Emax : r_max;
+    double u_Em = g->Em * r_mean, u_U0 = g->U0 * (rel_min + r_mean);
     cdl_report_format(row->Em, sizeof row->Em, g->Em, u_Em);
-    cdl_report_format(row->Emin, sizeof row->Emin, g->Emin, g->Emin * r_max);
-    cdl_report_format(row->Emax, sizeof row->Emax, g->Emax, g->Emax * r_max);
+    cdl_report_format(row->Emin, sizeof row->Emin, g->Emin, u_min);
+    cdl_report_format(row->Emax, sizeof row->Emax, g->Emax, u_max);
     cdl_report_format(row->U0, sizeof row->U0, g->U0, u_U0);
-    cdl_report_format(row->Ud, sizeof row->Ud, g->Ud, g->Ud * 2.0 * r_max);
+    cdl_report_format(row->Ud, sizeof row->Ud, g->Ud, g->Ud * (rel_min + rel_max));
     snprintf(row->count, sizeof row->count, "%zu", g->count);
     if (g->spec->kind == CDL_GRID_POINTS) snprintf(row->spacing, sizeof row->spacing, "-");
     else snprintf(row->spacing, sizeof row->spacing, "%.3g", g->spacing_m);

@@ -13,6 +13,7 @@ packages=(
   clang libclang-rt-14-dev
   libxml2-utils
   python3-jsonschema
+  python3-numpy python3-pytest python3-pip python3-setuptools python3-wheel python3-venv python3-matplotlib
   libcairo2-dev libpango1.0-dev
   fonts-dejavu-core chromium poppler-utils
 )

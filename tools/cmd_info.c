@@ -286,7 +286,7 @@ static int run(int argc, char **argv)
     const cdl_cli_option *plot = cdl_cli_find(options, count, "plot");
     int ugr = cdl_cli_find(options, count, "ugr")->present;
     const cdl_cli_option *shr = cdl_cli_find(options, count, "ugr-shr");
-    cdl_ugr_table_options uo = CDL_UGR_TABLE_OPTIONS_DEFAULT;
+    cdl_ugr_table_options uo = CDL_UGR_TABLE_OPTIONS_INIT;
     if (shr->present && !ugr) {
         fprintf(stderr, "candela info: --ugr-shr: goes with --ugr\n(see 'candela info --help')\n");
         return CDL_EXIT_USAGE;
@@ -333,7 +333,7 @@ static int run(int argc, char **argv)
         return CDL_EXIT_INTERNAL;
     }
     int rc = CDL_EXIT_OK;
-    cdl_ugr_table table;
+    cdl_ugr_table table = CDL_UGR_TABLE_INIT;
     if (ugr && (st = cdl_ugr_table_compute(p, &uo, &table, &err)) != CDL_OK) {
         fprintf(stderr, "candela info: %s: %s\n", path, err.message);
         cdl_photometry_release(p);

@@ -4,6 +4,8 @@
 
 #include "info_ugr.h"
 
+#include "glare/ugr_table_conditions.h"
+
 static const char *const set_rows[3] = {"ceiling", "walls", "floor"};
 
 void cdl_info_ugr_print(const cdl_ugr_table *t, FILE *out)

@@ -16,6 +16,7 @@
  *   lights/photometry/photometry.h           photometric files: read (IES LM-63, EULUMDAT), summarise,
  *                                 convert (remap, resample), write
  *   lights/emitters/emitter.h              point, spot, goniometric, area, directional and sky emitters
+ *   glare/ugr_table.h             a luminaire's CIE 190 UGR table (19 standard rooms, 5 reflectance sets)
  *   solver/scene/scene.h          a scene from a file or a JSON string
  *   solver/progress.h             progress reports and cancelling of long calls
  *   solver/solution.h             results in memory: E, direct, indirect, stderr per point
@@ -103,6 +104,7 @@ extern "C" {
 #include "radiometry/spectrum.h"
 #include "lights/photometry/photometry.h"
 #include "lights/emitters/emitter.h"
+#include "glare/ugr_table.h"
 #include "solver/scene/scene.h"
 #include "solver/progress.h"
 #include "solver/solution.h"

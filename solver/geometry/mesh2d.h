@@ -3,7 +3,10 @@
  * Used to turn `polygon` surfaces into triangles (constrained Delaunay
  * triangulation, no new vertices) and to mesh `polygon` calculation grids
  * into well-shaped triangles no longer than a target edge (Delaunay
- * refinement, Ruppert/Shewchuk style, CGAL 2D Conforming Meshes).
+ * refinement, Ruppert/Shewchuk style, CGAL 2D Conforming Meshes); and, kept
+ * live (cdl_cdt2d), to carry the surface maps' planar faces, whose meshes
+ * keep refining where the light changes and whose vertices hold the solve's
+ * irradiance cache records (solver/geometry/surface_mesh.h).
  *
  * Coordinates are 2D (the caller projects the polygon into its plane). The
  * outer ring and the holes may be given in either orientation; a hole must

@@ -137,7 +137,6 @@ static void lookup_release(lookup *lk)
 
 typedef struct interpolation {
     double E, var;            /* the interpolated E_ind and its stated variance */
-    double open;              /* the interpolated open fraction (ambient occlusion) */
     double interp_var;        /* the interpolation's share of var */
     size_t used;              /* records with w > 0 */
     double reach;             /* smallest reach among them (reach_max when none) */
@@ -157,7 +156,7 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
         lk->w = grown;
         lk->w_capacity = m;
     }
-    double W = 0.0, open = 0.0, sum = 0.0, noise = 0.0, noise_mean = 0.0, sum2 = 0.0, change2 = 0.0;
+    double W = 0.0, sum = 0.0, noise = 0.0, noise_mean = 0.0, sum2 = 0.0, change2 = 0.0;
     cdl_vec3 gbar = cdl_vec3_make(0, 0, 0);
     const cdl_icache_record *own = NULL;
     const cdl_scene_geometry *geometry = ctx->path.geometry;
@@ -186,7 +185,6 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
         lk->w[c] = w;
         gbar = cdl_vec3_add(gbar, cdl_vec3_scale(r->grad_t, w));
         W += w;
-        open += w * r->open;
         sum += w * x;
         sum2 += w * x * x;
         noise += w * w * r->var;
@@ -203,14 +201,12 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
         /* A point with a record of its own: that record alone. */
         out->E = own->E;
         out->var = own->var;
-        out->open = own->open;
         out->interp_var = 0.0;
         out->used = 1;
         return 1;
     }
     if (out->used == 0) return 1;
     out->E = sum / W;
-    out->open = fmin(1.0, fmax(0.0, open / W));
     double spread = fmax(0.0, sum2 / W - out->E * out->E);
     if (out->used >= 2)
         out->interp_var = fmax(0.0, spread - noise_mean / W);
@@ -427,7 +423,6 @@ typedef struct point_job {
     int final;                /* 1: write E and var; 0: flag points that need a record */
     int sweep;                /* with final 0: flag only the points no record serves */
     double *E, *var;
-    double *ao;               /* NULL, or the points' ambient occlusion (final) */
     double *ask;              /* per point: the separation a new record there keeps, or 0 */
 } point_job;
 
@@ -443,7 +438,6 @@ static cdl_status visit_points(void *shared, void *local, size_t begin, size_t e
         if (job->final) {
             job->E[i] = it.E;
             job->var[i] = it.var;
-            if (job->ao) job->ao[i] = it.open;
             continue;
         }
         if (job->sweep) {
@@ -519,7 +513,7 @@ typedef struct serve_request {
     const cdl_grid *grid;
     size_t grid_index;
     const double *E_direct, *var_direct;
-    double *E_indirect, *var_indirect, *ao;
+    double *E_indirect, *var_indirect;
     const double *floors;
     const cdl_grid *gather_at; /* where records for the points are gathered (the same indices), or NULL: at them */
     int place, seed, passes, own;
@@ -553,7 +547,7 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
                              has, &lk, q->threads, q->progress, q->stage, q->stats, err);
     }
     point_job job = {q->ctx, l, q->recs, q->tree, grid, q->E_direct, q->var_direct, 1e-3 * brightest, q->floors,
-                     0, 0, q->E_indirect, q->var_indirect, q->ao, ask};
+                     0, 0, q->E_indirect, q->var_indirect, ask};
     for (int pass = 1; st == CDL_OK && q->place && q->passes && pass <= MAX_PASSES; ++pass) {
         st = visit(&job, q->threads, q->progress, q->stage, q->recs->count, err);
         size_t count = 0;
@@ -602,7 +596,7 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
 
 cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *grid, size_t grid_index,
                                  const double *E_direct, const double *var_direct, double *E_indirect,
-                                 double *var_indirect, double *ao, cdl_icache_records *recs, int threads,
+                                 double *var_indirect, cdl_icache_records *recs, int threads,
                                  const cdl_progress_sink *progress, const char *stage, cdl_icache_stats *stats,
                                  cdl_error *err)
 {
@@ -617,9 +611,8 @@ cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *
     /* Records read from a cache file keep the radii they were made with. */
     for (size_t id = 0; st == CDL_OK && reuse && id < recs->count; ++id)
         st = cdl_record_octree_insert(tree, (uint32_t)id, recs->items[id].p, tree_reach(&l, &recs->items[id]), err);
-    serve_request q = {ctx,  &l,   recs,   tree,   grid, grid_index, E_direct, var_direct, E_indirect, var_indirect,
-                       ao,   NULL, NULL,   !reuse, !reuse, 1,    1,          threads,  progress,   stage,
-                       stats};
+    serve_request q = {ctx,     &l,      recs,    tree,     grid, grid_index, E_direct, var_direct, E_indirect,
+                       var_indirect, NULL, NULL, !reuse, !reuse, 1, 1, threads, progress, stage, stats};
     if (st == CDL_OK) st = serve(&q, box, err);
     stats->records += recs->count;
     cdl_record_octree_release(tree);
@@ -684,7 +677,6 @@ cdl_status cdl_icache_solve_shared(const cdl_icache_context *ctx, cdl_icache_sha
                        target->var_direct,
                        target->E_indirect,
                        target->var_indirect,
-                       target->ao,
                        target->floors,
                        target->gather_at,
                        1,

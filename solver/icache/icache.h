@@ -66,20 +66,17 @@ typedef struct cdl_icache_stats {
 } cdl_icache_stats;
 
 /* The interreflected illuminance at every point of a grid and its variance,
- * given the points' direct illuminance and its variance; and, when `ao` is
- * not NULL, each point's ambient occlusion (the cosine-weighted fraction of
- * its hemisphere from which rays leave the scene) from the same gathers:
- * the records' open fractions interpolated with the same weights (no
- * gradient). It costs no ray, but records are placed for irradiance, not
- * for the sharp edges of occlusion: against a plate's configuration factor
- * (tests/solver/direct/test_ambient_occlusion.c) the worst error is 0.09
- * at normal, where a point's own 256 rays give 0.03. When `records`
+ * given the points' direct illuminance and its variance. (Ambient
+ * occlusion is not interpolated from the records' open fractions: placed
+ * for irradiance, not for occlusion's sharp edges, they erred by up to 0.09
+ * against a plate's configuration factor where a point's own 256 rays give
+ * 0.03; each point takes its own, solver/direct/.) When `records`
  * holds records (read from a cache file), they are used as they are and
  * none is gathered; otherwise the records made are left in it (the caller
  * releases them). grid_index keys the random numbers. */
 cdl_status cdl_icache_solve_grid(const cdl_icache_context *ctx, const cdl_grid *grid, size_t grid_index,
                                  const double *E_direct, const double *var_direct, double *E_indirect,
-                                 double *var_indirect, double *ao, cdl_icache_records *records, int threads,
+                                 double *var_indirect, cdl_icache_records *records, int threads,
                                  const cdl_progress_sink *progress, const char *stage, cdl_icache_stats *stats,
                                  cdl_error *err);
 
@@ -111,7 +108,6 @@ typedef struct cdl_icache_target {
     size_t key;                       /* keys the random numbers of records made at its points */
     const double *E_direct, *var_direct;
     double *E_indirect, *var_indirect;
-    double *ao;                       /* NULL, or the points' ambient occlusion */
     const double *floors;             /* NULL, or per point the least E its target is relative to (lux) */
     const cdl_grid *gather_at;        /* NULL, or where a record asked for by point i is gathered (point i
                                          of this grid; normals the same): a point where two surfaces meet

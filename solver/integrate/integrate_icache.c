@@ -33,7 +33,6 @@ static cdl_status run_icache(cdl_solve_state *state, cdl_grid_job *job, cdl_erro
                                     .var_direct = job->var_direct,
                                     .E_indirect = gs->E_indirect,
                                     .var_indirect = job->var_indirect,
-                                    .ao = NULL,
                                     .threads = state->threads,
                                     .progress = &state->options.progress,
                                     .stage = stage,
@@ -41,7 +40,7 @@ static cdl_status run_icache(cdl_solve_state *state, cdl_grid_job *job, cdl_erro
         st = cdl_icache_solve_shared(&state->icache, state->shared_cache, &target, err);
     } else {
         st = cdl_icache_solve_grid(&state->icache, &gs->grid, (size_t)job->plan->key, gs->E_direct, job->var_direct,
-                                   gs->E_indirect, job->var_indirect, NULL, records, state->threads,
+                                   gs->E_indirect, job->var_indirect, records, state->threads,
                                    &state->options.progress, stage, &state->icache_stats, err);
     }
     state->out->compute_seconds += cdl_pool_now_seconds() - t0;

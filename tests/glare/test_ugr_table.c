@@ -11,6 +11,7 @@
 #include "glare/position_index.h"
 #include "glare/room_flux.h"
 #include "glare/ugr_table.h"
+#include "glare/ugr_table_conditions.h"
 #include "polygon_factor.h"
 #include "radiometry/constants.h"
 
@@ -103,7 +104,7 @@ static void test_lambertian_opening(const char *folder)
     cdl_photometry *p = read_photometry(path), *p2 = read_photometry(path2);
     CHECK(p && p2);
     if (!p || !p2) return;
-    cdl_ugr_table t, t2;
+    cdl_ugr_table t = CDL_UGR_TABLE_INIT, t2 = CDL_UGR_TABLE_INIT;
     cdl_error err;
     CHECK_OK(cdl_ugr_table_compute(p, NULL, &t, &err), &err);
     CHECK_OK(cdl_ugr_table_compute(p2, NULL, &t2, &err), &err);
@@ -168,9 +169,10 @@ static void compare_table(const char *ldt, const char *csv, double shr, double c
     CHECK(p != NULL);
     CHECK_MSG(read_reference(csv, ref), "%s", csv);
     if (!p) return;
-    cdl_ugr_table t;
+    cdl_ugr_table t = CDL_UGR_TABLE_INIT;
     cdl_error err;
-    cdl_ugr_table_options o = {shr};
+    cdl_ugr_table_options o = CDL_UGR_TABLE_OPTIONS_INIT;
+    o.spacing_to_height = shr;
     CHECK_OK(cdl_ugr_table_compute(p, &o, &t, &err), &err);
     double ss = 0.0, worst = 0.0, bias = 0.0;
     for (int i = 0; i < 19; ++i)

@@ -75,5 +75,35 @@ int main(void)
     CHECK(!row.pass);
     CHECK_MSG(strcmp(row.verdict, "FAIL: Em -0.2 % (within the stated error)") == 0, "%s", row.verdict);
     CHECK_MSG(strcmp(row.requirements, "Em >= 513.34 lx") == 0, "%s", row.requirements);
+
+    /* With the points known, Emin and Emax carry their own points' errors
+     * and U0 the darkest point's: a point beside a hard shadow edge stating
+     * 13 times its value (a surface map's vertex) no longer blurs U0 to "0".
+     * Darkest point 23.24 +- 4.0 lx (17.2 %), Em 102 +- 0.4 lx: u(U0) =
+     * 0.2278 x (0.172 + 0.004) = 0.040, two decimals. */
+    double E[4] = {23.24, 82.6, 102.0, 200.0}, E_stderr[4] = {4.0, 1074.0, 0.4, 2.0};
+    cdl_report_grid m = {0};
+    m.spec = &spec;
+    m.count = 4;
+    m.Em = 102.0;
+    m.Emin = 23.24;
+    m.Emax = 200.0;
+    m.U0 = 23.24 / 102.0;
+    m.Ud = 23.24 / 200.0;
+    m.stderr_mean_rel = 0.004;
+    m.stderr_max_rel = 13.0;
+    m.E = E;
+    m.E_stderr = E_stderr;
+    m.min_index = 0;
+    m.max_index = 3;
+    m.required_U0 = 0.1;
+    cdl_report_row_of(&m, &row);
+    CHECK_MSG(strcmp(row.U0, "0.23") == 0, "U0 %s, expected 0.23", row.U0);
+    CHECK_MSG(strcmp(row.Emin, "23") == 0 && strcmp(row.Emax, "200") == 0, "Emin %s Emax %s", row.Emin, row.Emax);
+    CHECK_MSG(strcmp(row.verdict, "pass: U0 +0.13") == 0, "%s", row.verdict);
+    /* Without the points, the worst relative error stands for Emin's. */
+    m.E = m.E_stderr = NULL;
+    cdl_report_row_of(&m, &row);
+    CHECK_MSG(strcmp(row.U0, "0") == 0, "U0 %s without the points", row.U0);
     return check_finish();
 }

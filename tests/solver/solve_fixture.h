@@ -133,9 +133,10 @@ typedef struct calibration {
     double worst;             /* largest |error| / sigma */
     double sigma_over_target_min, sigma_over_target_max;
     double zsum;              /* of signed errors in sigmas: a bias shows as a mean away from 0 */
+    double z2sum;             /* of their squares: sqrt(z2sum / count) near 1 when the stated sigma is right */
 } calibration;
 
-#define CALIBRATION_INIT {0, 0, 0, 0.0, INFINITY, 0.0, 0.0}
+#define CALIBRATION_INIT {0, 0, 0, 0.0, INFINITY, 0.0, 0.0, 0.0}
 
 /* One point with a known answer: its error in stated sigmas; also how the
  * stated sigma compares with the target (relative to `expected`). */
@@ -144,6 +145,7 @@ static inline void calibration_add(calibration *c, double value, double expected
     double z = sigma > 0.0 ? fabs(value - expected) / sigma : (value == expected ? 0.0 : INFINITY);
     c->count++;
     if (sigma > 0.0) c->zsum += (value - expected) / sigma;
+    if (sigma > 0.0) c->z2sum += z * z;
     c->within1 += z <= 1.0;
     c->within2 += z <= 2.0;
     if (z > c->worst) c->worst = z;

@@ -2,13 +2,14 @@
 """Checks of a report against the summary.json it was made from (used by
 test_report.sh): every grid's Em and U0 as the HTML table and the PDF text
 print them equal summary.json's values rounded to the printed decimals, and
-those decimals are what the stated error justifies (the last printed unit
+those decimals are what the stated error justifies (U0's: the darkest
+point's relative error plus Em's) (the last printed unit
 is the decade of the uncertainty: 10^-d <= u < 10^(1-d), unless d is 0, or
 the value is exact (u = 0) and carries 4 significant digits).
 
 usage: report_check.py OUTDIR PDF_TEXT  -> prints one line per check, "ok ..." or "FAIL ..."
 """
-import html, math, re, sys
+import csv, html, math, re, sys
 
 from report_files import Report
 
@@ -45,13 +46,21 @@ for tr in re.findall(r"<tr>(.*?)</tr>", summary_table, re.S)[1:]:
     rows[cells[0]] = cells
 say(sorted(rows) == sorted(summary["grids"]), "the HTML summary has a row per grid: %s" % sorted(rows))
 
+def min_point_error(name):
+    """The stated error of the grid's darkest point (the first of them), from NAME.csv."""
+    points = [(float(r["E_lx"]), float(r["E_stderr_lx"])) for r in csv.DictReader(open("%s/%s.csv" % (out, name)))]
+    return min(points, key=lambda p: p[0])[1]
+
+
 for name, g in summary["grids"].items():
-    r_mean, r_max = g["stderr_mean_rel"], g["stderr_max_rel"]
+    r_mean = g["stderr_mean_rel"]
     cells = rows.get(name)
     if not cells:
         continue
     justified(cells[1], g["E_avg_lx"], g["E_avg_lx"] * r_mean, "HTML %s Em" % name)
-    justified(cells[4], g["U0"], g["U0"] * (r_max + r_mean), "HTML %s U0" % name)
+    # U0 = Emin / Em: the relative errors of the darkest point and of Em add
+    rel_min = min_point_error(name) / g["E_min_lx"] if g["E_min_lx"] > 0 else g["stderr_max_rel"]
+    justified(cells[4], g["U0"], g["U0"] * (rel_min + r_mean), "HTML %s U0" % name)
     # The PDF's summary row: the grid's name at the start of a line, then the same numbers.
     m = re.search(r"^%s +(\S+) +(\S+) +(\S+) +(\S+)" % re.escape(name), pdf, re.M)
     say(m is not None, "PDF: a summary row for %s" % name)

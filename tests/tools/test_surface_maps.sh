@@ -124,6 +124,26 @@ check "report: exit 0" '[ $st -eq 0 ]'
 check "report: a Surfaces section" 'grep -q ">Surfaces</h2>" out/report.html'
 check "report: the desk's requirements checked" 'grep -q "Em &gt;= 300 lx, U0 &gt;= 0.4\|Em >= 300 lx, U0 >= 0.4" out/report.html'
 check "report: the room in 3D" 'grep -q "The surfaces in 3D" out/report.html'
+# U0 in the Surfaces table carries the error of its darkest vertex and of
+# Em, not the worst vertex's (the spot's penumbra states several times its
+# value there): printed with decimals, equal to summary.json's rounded.
+python3 - out > u0.txt <<'PY'
+import csv, html, json, re, sys
+out = sys.argv[1]
+maps = {m["name"]: m for m in json.load(open(out + "/summary.json"))["surfaces"]}
+page = open(out + "/report.html", encoding="utf-8").read()
+for name in ("room", "desk"):
+    row = re.search(r"<tr><td>%s</td>(.*?)</tr>" % name, page, re.S)
+    assert row, "no row for %s" % name
+    cells = [html.unescape(c) for c in re.findall(r"<td[^>]*>(.*?)</td>", row.group(1), re.S)]
+    printed, value = cells[4], maps[name]["U0"]
+    d = len(printed.split(".")[1]) if "." in printed else 0
+    assert d >= 1, "%s: U0 %.3f printed as %s" % (name, value, printed)
+    assert abs(float(printed) - value) <= 0.5 * 10 ** -d + 1e-12, "%s: U0 %s against %.6f" % (name, printed, value)
+    print("%s U0 %s (%.4f)" % (name, printed, value))
+PY
+st=$?
+check "report: the maps' U0 printed to their stated error ($(tr '\n' ' ' < u0.txt))" '[ $st -eq 0 ]' || cat u0.txt
 
 # The same bytes on one thread and on three.
 "$CANDELA" solve room.json -o t1 --threads 1 --quiet > /dev/null 2>&1 &&
