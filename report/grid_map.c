@@ -13,6 +13,7 @@
 #include "graphics/palette.h"
 #include "report/plan_symbols.h"
 #include "report/report_numbers.h"
+#include "report/summary_table.h"
 
 /* Layout, points. */
 #define MAP_MAX_W 380.0
@@ -167,9 +168,11 @@ static cdl_status place_labels(cdl_grid_map *m, cdl_error *err)
     double centres[CDL_GRID_MAP_MAX_LABELS][2 * LEVEL_CANDIDATES];
     const char *space = f->unit[0] ? " " : "";
     char text[64], v[32];
+    double u[2];
+    cdl_report_field_extreme_errors(f, &u[0], &u[1]);
     const double extreme[2] = {f->min, f->max}, ex[2] = {m->min_x, m->max_x}, ey[2] = {m->min_y, m->max_y};
     for (int k = 0; k < 2; ++k) {
-        cdl_report_format(v, sizeof v, extreme[k], extreme[k] * f->stderr_max_rel);
+        cdl_report_format(v, sizeof v, extreme[k], u[k]);
         snprintf(text, sizeof text, "%s %s%s%s", k ? "max" : "min", v, space, f->unit);
         label_text(&m->labels[k], 8.5, text, &requests[k].width, &requests[k].height);
         around(ex[k], ey[k], requests[k].width, requests[k].height, centres[k]);

@@ -15,8 +15,8 @@
 #include "report/grid_map.h"
 #include "report/report_builder.h"
 #include "report/report_glare.h"
-#include "report/report_numbers.h"
 #include "report/report_sections.h"
+#include "report/summary_table.h"
 
 int cdl_report_cell_verdict(const char *cell)
 {
@@ -147,18 +147,16 @@ static cdl_status maps(cdl_report_builder *b, const cdl_report_input *in, cdl_er
             cdl_status st = cdl_grid_map_prepare(m, in, grid, k, err);
             if (st != CDL_OK) return cdl_error_prefix(err, "the map of grid %s: ", grid->spec->name);
             ++d->map_count;
-            char v[4][32];
-            double rm = f->stderr_mean_rel, rx = f->stderr_max_rel;
-            cdl_report_format(v[0], sizeof v[0], f->avg, f->avg * rm);
-            cdl_report_format(v[1], sizeof v[1], f->min, f->min * rx);
-            cdl_report_format(v[2], sizeof v[2], f->max, f->max * rx);
-            cdl_report_format(v[3], sizeof v[3], f->U0, f->U0 * (rm + rx));
+            cdl_report_field_text v;
+            cdl_report_field_text_of(f, &v);
             const char *u = f->unit[0] ? " " : "";
+            /* a heading per map, so that its caption and its figure stay together on a page */
             if (k == 0) cdl_report_text(b, CDL_BLOCK_HEADING, 3, "%s", grid->spec->name);
+            else cdl_report_text(b, CDL_BLOCK_HEADING, 3, "%s: %s", grid->spec->name, f->symbol);
             cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0,
                             "%s grid, %zu points, %s %s: mean %s%s%s, min %s%s%s, max %s%s%s, min / mean %s.",
                             grid->spec->kind == CDL_GRID_RECT ? "Rectangular" : "Polygon", grid->count, f->what,
-                            f->symbol, v[0], u, f->unit, v[1], u, f->unit, v[2], u, f->unit, v[3]);
+                            f->symbol, v.mean, u, f->unit, v.min, u, f->unit, v.max, u, f->unit, v.ratio);
             cdl_report_figure(b, cdl_grid_map_figure(m), 1.0);
         }
     }

@@ -12,7 +12,8 @@
 #define ROUTE_GRIDS_MAX 64
 
 /* The plan's light label with what the scene calls it: "luminaires[0]
- * (downlight.ies)", "luminaires[2] desk lamp (point)". */
+ * (Row A, 1 of 4) linear.ies (goniometric)", "luminaires[2] desk lamp
+ * (point)". */
 static void light_name(const cdl_report_input *in, const cJSON *light, char *out, size_t size)
 {
     const cJSON *label = cJSON_GetObjectItemCaseSensitive(light, "light");
@@ -24,8 +25,11 @@ static void light_name(const cdl_report_input *in, const cJSON *light, char *out
     if (sscanf(text, "luminaires[%zu]", &entry) == 1)
         for (size_t k = 0; k < in->scene->luminaire_count && !l; ++k)
             if (in->scene->luminaires[k].entry == entry) l = &in->scene->luminaires[k];
-    if (l && l->name) snprintf(out, size, "%s %s (%s)", text, l->name, what);
-    else if (l && l->file) snprintf(out, size, "%s %s (%s)", text, cdl_report_file_name(l->file), what);
+    /* the name, unless the plan's label has it already, else the file */
+    const char *also = l && l->name && !strstr(text, l->name) ? l->name
+                       : l && l->file                        ? cdl_report_file_name(l->file)
+                                                             : NULL;
+    if (also) snprintf(out, size, "%s %s (%s)", text, also, what);
     else snprintf(out, size, "%s (%s)", text, what);
 }
 

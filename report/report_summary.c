@@ -64,28 +64,28 @@ static void outputs_table(cdl_report_builder *b, const cdl_report_input *in)
     for (size_t g = 0; g < in->grid_count; ++g)
         for (size_t k = 1; k < in->grids[g].field_count; ++k, ++r) {
             const cdl_report_field *f = &in->grids[g].fields[k];
-            char name[48], v[4][32];
+            char name[48], mean_error[32], worst_error[32];
             quantity_name(name, sizeof name, f);
-            double rm = f->stderr_mean_rel, rx = f->stderr_max_rel;
-            cdl_report_format(v[0], sizeof v[0], f->avg, f->avg * rm);
-            cdl_report_format(v[1], sizeof v[1], f->min, f->min * rx);
-            cdl_report_format(v[2], sizeof v[2], f->max, f->max * rx);
-            cdl_report_format(v[3], sizeof v[3], f->U0, f->U0 * (rm + rx));
+            cdl_report_field_text v;
+            cdl_report_field_text_of(f, &v);
             cdl_report_cell(b, t, r, 0, "%s", in->grids[g].spec->name);
             cdl_report_cell(b, t, r, 1, "%s", name);
-            for (size_t c = 0; c < 4; ++c) cdl_report_cell(b, t, r, c + 2, "%s", v[c]);
+            cdl_report_cell(b, t, r, 2, "%s", v.mean);
+            cdl_report_cell(b, t, r, 3, "%s", v.min);
+            cdl_report_cell(b, t, r, 4, "%s", v.max);
+            cdl_report_cell(b, t, r, 5, "%s", v.ratio);
             cdl_report_cell(b, t, r, 6, "%s", f->what);
-            cdl_report_format_percent(v[0], sizeof v[0], rm);
-            cdl_report_format_percent(v[1], sizeof v[1], rx);
-            cdl_report_cell(b, t, r, 7, "%s", v[0]);
-            cdl_report_cell(b, t, r, 8, "%s", v[1]);
+            cdl_report_format_percent(mean_error, sizeof mean_error, f->stderr_mean_rel);
+            cdl_report_format_percent(worst_error, sizeof worst_error, f->stderr_max_rel);
+            cdl_report_cell(b, t, r, 7, "%s", mean_error);
+            cdl_report_cell(b, t, r, 8, "%s", worst_error);
         }
     cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0,
                     "Ez: cylindrical illuminance, the mean vertical illuminance around the point (EN 12464-1); Esz: "
                     "semicylindrical illuminance towards the point's normal; L: the luminance rho E / pi of the "
                     "surface the grid lies on; AO: the cosine-weighted share of the hemisphere no surface hides. "
-                    "Each is printed to the decimal place of its stated error as E is (L's error is E's, relative); "
-                    "a quantity computed exactly states none.");
+                    "Each is printed to the decimal place of its stated error as E is (min and max to their points' "
+                    "own; L's error is E's, relative); a quantity computed exactly states none.");
 }
 
 static void power_table(cdl_report_builder *b, const cdl_report_input *in)

@@ -40,8 +40,10 @@ static void matrix(cdl_report_builder *b, const cdl_report_grid *g, const cdl_re
 {
     const cdl_grid *grid = &g->grid;
     int w = grid->raster_width, h = grid->raster_height;
-    for (int first = 0; first < w; first += VALUES_COLUMNS) {
-        int columns = w - first < VALUES_COLUMNS ? w - first : VALUES_COLUMNS;
+    /* blocks of at most VALUES_COLUMNS columns, as even as they can be */
+    int blocks = (w + VALUES_COLUMNS - 1) / VALUES_COLUMNS, per_block = (w + blocks - 1) / blocks;
+    for (int first = 0; first < w; first += per_block) {
+        int columns = w - first < per_block ? w - first : per_block;
         cdl_report_block *t = cdl_report_table(b, (size_t)columns + 1, (size_t)h + 1, 1);
         char across[16], up[16];
         double coordinate = 0.0;

@@ -58,3 +58,20 @@ void cdl_report_row_of(const cdl_report_grid *g, cdl_report_row *row)
     snprintf(row->verdict, sizeof row->verdict, "%s: %s%s%s%s", pass ? "pass" : "FAIL", em, em[0] && u0[0] ? ", " : "",
              u0, close ? " (within the stated error)" : "");
 }
+
+void cdl_report_field_extreme_errors(const cdl_report_field *f, double *u_min, double *u_max)
+{
+    *u_min = f->stderr_values ? f->stderr_values[f->min_index] : f->min * f->stderr_max_rel;
+    *u_max = f->stderr_values ? f->stderr_values[f->max_index] : f->max * f->stderr_max_rel;
+}
+
+void cdl_report_field_text_of(const cdl_report_field *f, cdl_report_field_text *out)
+{
+    double u_min, u_max;
+    cdl_report_field_extreme_errors(f, &u_min, &u_max);
+    double rel_min = f->min > 0.0 ? u_min / f->min : f->stderr_max_rel;
+    cdl_report_format(out->mean, sizeof out->mean, f->avg, f->avg * f->stderr_mean_rel);
+    cdl_report_format(out->min, sizeof out->min, f->min, u_min);
+    cdl_report_format(out->max, sizeof out->max, f->max, u_max);
+    cdl_report_format(out->ratio, sizeof out->ratio, f->U0, f->U0 * (rel_min + f->stderr_mean_rel));
+}

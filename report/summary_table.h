@@ -24,6 +24,20 @@ typedef struct cdl_report_row {
 
 void cdl_report_row_of(const cdl_report_grid *grid, cdl_report_row *row);
 
+/* Any quantity of a grid (report_input.h's fields: E, Ez, Esz, L, AO)
+ * as text: its mean, min, max and min / mean, each to its stated error as
+ * the grid's row prints E's (min and max to their points' own errors, the
+ * mean to the mean relative error, min / mean to the sum of both relative
+ * errors). */
+typedef struct cdl_report_field_text {
+    char mean[32], min[32], max[32], ratio[32];
+} cdl_report_field_text;
+
+void cdl_report_field_text_of(const cdl_report_field *field, cdl_report_field_text *out);
+
+/* The stated errors (absolute) of a field's min and max: their points' own. */
+void cdl_report_field_extreme_errors(const cdl_report_field *field, double *u_min, double *u_max);
+
 /* The columns' headings, in the order of the row's fields above. */
 extern const char *const cdl_report_row_headings[10];
 

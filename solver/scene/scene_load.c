@@ -536,6 +536,15 @@ static cdl_status read_grid(const cdl_scene_parse *ctx, const cJSON *node, const
     return CDL_OK;
 }
 
+static void grid_spec_free(cdl_grid_spec *g)
+{
+    free(g->name);
+    cdl_scene_rings_free(&g->outer, g->holes, g->hole_count);
+    free(g->points);
+    free(g->normals);
+    memset(g, 0, sizeof *g);
+}
+
 /* ---- solver settings --------------------------------------------------------------- */
 
 static cdl_status read_settings(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
@@ -753,6 +762,7 @@ static cdl_status read_document(const cdl_scene_parse *ctx, const cJSON *root, c
         } else {
             st = read_grid(ctx, e, item, &scene->grids[scene->grid_count]);
             if (st == CDL_OK) names[i] = scene->grids[scene->grid_count++].name;
+            else grid_spec_free(&scene->grids[scene->grid_count]); /* what it read before it failed */
         }
         for (size_t k = 0; st == CDL_OK && k < i; ++k)
             if (names[k] && names_equal_ignoring_case(names[k], names[i])) {
@@ -875,13 +885,7 @@ void cdl_scene_release(cdl_scene *scene)
         cdl_scene_surface_spec_free(&scene->luminaires[i].shape);
     }
     free(scene->luminaires);
-    for (size_t i = 0; i < scene->grid_count; ++i) {
-        cdl_grid_spec *g = &scene->grids[i];
-        free(g->name);
-        cdl_scene_rings_free(&g->outer, g->holes, g->hole_count);
-        free(g->points);
-        free(g->normals);
-    }
+    for (size_t i = 0; i < scene->grid_count; ++i) grid_spec_free(&scene->grids[i]);
     free(scene->grids);
     for (size_t i = 0; i < scene->observer_count; ++i) free(scene->observers[i].name);
     free(scene->observers);
