@@ -83,6 +83,18 @@ static cdl_status fill_rows(void *shared, void *local, size_t begin, size_t end,
     return CDL_OK;
 }
 
+void cdl_annual_overcast_patches(const cdl_reinhart_patches *p, double *out)
+{
+    double Lz = 9.0 / (7.0 * CDL_PI);
+    out[CDL_REINHART_GROUND] = 0.0;
+    for (int k = 1; k < p->count; ++k) {
+        double a0, a1, z0, z1;
+        cdl_reinhart_patch_bounds(p, k, &a0, &a1, &z0, &z1);
+        double s0 = sin(a0), s1 = sin(a1), q = s1 * s1 - s0 * s0;
+        out[k] = Lz * (0.5 * q + 2.0 * (s1 * s1 * s1 - s0 * s0 * s0) / 3.0) / (1.5 * q);
+    }
+}
+
 /* The sun at the middle of hour h of the file. */
 static cdl_status place_sun(const cdl_epw *epw, const cdl_reinhart_patches *p, size_t h, cdl_annual_hour *out,
                             cdl_error *err)

@@ -75,6 +75,15 @@ typedef struct cdl_annual_sky_options {
     int threads;                          /* >= 1 */
 } cdl_annual_sky_options;
 
+/* The CIE standard overcast sky, L = L_z (1 + 2 sin a) / 3 at altitude a
+ * (Moon and Spencer 1942; CIE 110-1994), over the patches of p, scaled to 1
+ * lx of unobstructed horizontal illuminance (L_z = 9 / (7 pi) cd/m^2):
+ * each patch the cosine-weighted mean over it, in closed form
+ *     L_k = L_z [ (s1^2 - s0^2) / 2 + 2 (s1^3 - s0^3) / 3 ] / (3 (s1^2 - s0^2) / 2),
+ * s = sin a over the patch's rows (exact: the patches then give 1 lx on a
+ * horizontal plane); the ground 0. out[p->count]. */
+void cdl_annual_overcast_patches(const cdl_reinhart_patches *p, double *out);
+
 /* The year's skies over the patches p (their frame gives up and north). */
 cdl_status cdl_annual_skies_compute(const cdl_epw *epw, const cdl_annual_sky_options *o,
                                     const cdl_reinhart_patches *p, cdl_annual_skies *out, cdl_error *err);
