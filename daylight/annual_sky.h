@@ -55,6 +55,8 @@ typedef struct cdl_annual_hour {
     double direct_normal_lx;              /* the sun's (Perez), 0 without */
     int sun;                              /* its sun bin, -1 without */
     int clamped;                          /* the Perez inputs were clamped */
+    double perez[5];                      /* its Perez coefficients a..e */
+    int uniform;                          /* 1: a uniform sky of diffuse_lx / pi instead (the model failed) */
 } cdl_annual_hour;
 
 typedef struct cdl_annual_skies {
@@ -83,6 +85,11 @@ typedef struct cdl_annual_sky_options {
  * s = sin a over the patch's rows (exact: the patches then give 1 lx on a
  * horizontal plane); the ground 0. out[p->count]. */
 void cdl_annual_overcast_patches(const cdl_reinhart_patches *p, double *out);
+
+/* A lit Perez hour's sky over any patches p: out[p->count] (cd/m^2, the
+ * ground first), as the year's rows are made. */
+cdl_status cdl_annual_sky_patches(const cdl_annual_hour *hour, const cdl_reinhart_patches *p, double ground_reflectance,
+                                  float *out, cdl_error *err);
 
 /* The year's skies over the patches p (their frame gives up and north). */
 cdl_status cdl_annual_skies_compute(const cdl_epw *epw, const cdl_annual_sky_options *o,

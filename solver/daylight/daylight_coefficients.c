@@ -396,12 +396,15 @@ static void point_coefficients(const job *jb, worker *w, size_t i)
     cdl_vec3 p = jb->grid->points[i], n = jb->grid->normals[i];
     uint64_t stream = cdl_rng_stream_id(jb->grid_key, (uint64_t)i, 0x636f6566 /* "coef" */);
     int exact = direct_exact(jb, w, stream, p, n);
+    out->exact[i] = (unsigned char)exact;
+    if (out->direct)
+        for (size_t k = 0; k < K; ++k) out->direct[i * K + k] = (float)w->direct[k];
     double E_direct = 0.0;
     for (size_t k = 0; k < K; ++k) E_direct += w->direct[k] * reference(o, (int)k);
     memset(w->acc, 0, K * sizeof *w->acc);
     if (S) memset(w->sun_acc, 0, S * sizeof *w->sun_acc);
     double sky_var = 0.0, sun_mean = 0.0, sun_var = 0.0, stage = 0.0;
-    if (jb->ds->geometry && cdl_scene_geometry_piece_count(jb->ds->geometry) > 0) {
+    if (!o->direct_only && jb->ds->geometry && cdl_scene_geometry_piece_count(jb->ds->geometry) > 0) {
         /* The pilot only plans (estimate.h): how many paths the point needs
          * for the sampled part under a uniform sky to meet the target. */
         cdl_estimate ps = {0.0, 0.0, 0.0, 0}, pu = {0.0, 0.0, 0.0, 0};
@@ -482,12 +485,15 @@ cdl_status cdl_daylight_coefficients_compute(const cdl_daylight_scene *ds, size_
     out->suns = S;
     out->sky = malloc((N ? N : 1) * out->patches * sizeof *out->sky);
     out->sky_rel_stderr = calloc(N ? N : 1, sizeof *out->sky_rel_stderr);
+    out->exact = calloc(N ? N : 1, sizeof *out->exact);
+    if (o->keep_direct) out->direct = malloc((N ? N : 1) * K * sizeof *out->direct);
     if (S) {
         out->sun = malloc((N ? N : 1) * S * sizeof *out->sun);
         out->sun_rel_stderr = calloc(N ? N : 1, sizeof *out->sun_rel_stderr);
     }
     worker *w = calloc((size_t)threads, sizeof *w);
-    int ok = out->sky && out->sky_rel_stderr && (!S || (out->sun && out->sun_rel_stderr)) && w;
+    int ok = out->sky && out->sky_rel_stderr && out->exact && (!o->keep_direct || out->direct) &&
+             (!S || (out->sun && out->sun_rel_stderr)) && w;
     for (int t = 0; ok && t < threads; ++t) {
         w[t].direct = malloc(K * sizeof(double));
         w[t].acc = malloc(K * sizeof(double));
@@ -527,6 +533,8 @@ void cdl_daylight_coefficients_release(cdl_daylight_grid_coefficients *c)
     free(c->sky);
     free(c->sun);
     free(c->sky_rel_stderr);
+    free(c->direct);
+    free(c->exact);
     free(c->sun_rel_stderr);
     memset(c, 0, sizeof *c);
 }

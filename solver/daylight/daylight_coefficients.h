@@ -86,6 +86,9 @@ typedef struct cdl_daylight_coefficient_options {
                                            * a uniform sky of 1 cd/m^2 */
     int collapse;                         /* 1: keep only each point's E under the reference sky (sky is points x
                                            * 1): a sky whose shape never changes needs no more */
+    int keep_direct;                      /* 1: the direct part apart too (direct) */
+    int direct_only;                      /* 1: no paths: the direct part alone, exact where the exact route is
+                                           * (sampled points get 0 and exact[i] 0) */
     uint64_t seed;
     int threads;                          /* >= 1 */
     double max_paths;                     /* most paths a point */
@@ -106,6 +109,8 @@ typedef struct cdl_daylight_grid_coefficients {
     float *sun;                           /* points x suns: lx per lx of direct normal illuminance (NULL without suns) */
     double *sky_rel_stderr;               /* per point, under the reference sky (0 where E is 0) */
     double *sun_rel_stderr;               /* per point, of the suns' coefficients summed (NULL without suns) */
+    float *direct;                        /* keep_direct: points x patches, the direct part (NULL otherwise) */
+    unsigned char *exact;                 /* per point: 1 where the direct part took the exact route */
     cdl_daylight_routes routes;
     uint64_t paths, rays;
 } cdl_daylight_grid_coefficients;
