@@ -459,6 +459,7 @@ static cdl_status write_summary(annual_state *s, cdl_error *err)
     cJSON *root = cJSON_CreateObject();
     cJSON *a = cJSON_AddObjectToObject(root, "annual");
     cJSON_AddStringToObject(root, "candela_version", CANDELA_VERSION);
+    cJSON_AddStringToObject(root, "scene", s->scene->path);
     cJSON_AddItemToObject(a, "weather", weather_summary(s));
     cJSON_AddItemToObject(a, "sky", sky_summary(s));
     cJSON_AddStringToObject(a, "occupancy", s->occupancy);

@@ -58,6 +58,8 @@ typedef struct cdl_report_document {
     struct cdl_polar_diagram *diagrams;
     size_t diagram_count;
     struct cdl_glare_plan *glare_plan; /* the observers on the plan (report_glare.c), or NULL */
+    struct cdl_report_image **images;  /* pictures read from the folder (report_daylight.c) */
+    size_t image_count;
 } cdl_report_document;
 
 /* Build the report of `input`; title NULL for the default ("Lighting
