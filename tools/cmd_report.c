@@ -67,5 +67,5 @@ static int run(int argc, char **argv)
     return CDL_EXIT_OK;
 }
 
-const cdl_command cdl_command_report = {"report", "lighting-design report (HTML and PDF) from a solve", run,
+const cdl_command cdl_command_report = {"report", "lighting-design report (HTML and PDF) from a solve or an annual study", run,
                                         print_help};
