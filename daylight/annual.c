@@ -15,6 +15,7 @@
 #include "daylight/epw.h"
 #include "daylight/occupancy.h"
 #include "solver/daylight/daylight_coefficients.h"
+#include "solver/output/grid_result.h"
 #include "solver/output/solution_write.h"
 #include "solver/pool.h"
 
@@ -505,6 +506,38 @@ static cdl_status write_summary(annual_state *s, cdl_error *err)
     return st;
 }
 
+/* annual.csv: a row per grid, the grid's metrics as summary.json has them. */
+static cdl_status write_grid_table(const annual_state *s, cdl_error *err)
+{
+    char *path = cdl_path_join(s->out_dir, "annual", ".csv");
+    if (!path) return cdl_error_out_of_memory(err);
+    cdl_atomic_file f;
+    cdl_status st = cdl_atomic_file_open(&f, path, err);
+    free(path);
+    if (st != CDL_OK) return st;
+    fputs("grid,points,sDA300_percent,ASE1000_percent,DA300_mean_percent,UDI_fell_short_percent,UDI_percent,"
+          "UDI_exceeded_percent,EN17037_level,EN17037_minimum_met,EN17037_medium_met,EN17037_high_met,"
+          "stderr_mean_rel,stderr_max_rel\n",
+          f.fp);
+    for (size_t g = 0; g < s->result->grid_count; ++g) {
+        const cdl_annual_grid_result *r = &s->result->grids[g];
+        const cdl_grid_annual_metrics *m = &r->metrics;
+        fprintf(f.fp, "%s,%zu", r->name, r->points);
+        const double v[6] = {m->sDA300, m->ASE1000, m->DA300_mean, m->UDI_fell_short, m->UDI, m->UDI_exceeded};
+        for (int k = 0; k < 6; ++k) {
+            char num[CDL_CSV_NUMBER_SIZE];
+            cdl_csv_format_number(v[k], num);
+            fprintf(f.fp, ",%s", num);
+        }
+        fprintf(f.fp, ",%s,%d,%d,%d", m->en_level, m->en_met[0], m->en_met[1], m->en_met[2]);
+        char a[CDL_CSV_NUMBER_SIZE], b[CDL_CSV_NUMBER_SIZE];
+        cdl_csv_format_number(r->stderr_mean_rel, a);
+        cdl_csv_format_number(r->stderr_max_rel, b);
+        fprintf(f.fp, ",%s,%s\n", a, b);
+    }
+    return cdl_atomic_file_commit(&f, err);
+}
+
 /* ---- the run ------------------------------------------------------------------------ */
 
 static void state_release(annual_state *s)
@@ -567,7 +600,8 @@ cdl_status cdl_annual_run(const cdl_scene *scene, const char *weather, const cdl
         result->occupied_hours = scene->grid_count ? result->grids[0].metrics.occupied_hours : 0;
         result->daylight_hours = scene->grid_count ? result->grids[0].metrics.daylight_hours : 0;
         result->seconds_total = cdl_pool_now_seconds() - t_start;
-        st = write_summary(&s, err);
+        st = write_grid_table(&s, err);
+        if (st == CDL_OK) st = write_summary(&s, err);
     }
     state_release(&s);
     if (st != CDL_OK) cdl_annual_result_release(result);

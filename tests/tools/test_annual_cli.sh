@@ -30,12 +30,22 @@ printf '{"version": 1, %s}\n' "$room" > "$tmp/room.json"
 
 "$CANDELA" annual "$tmp/room.json" --weather "$tmp/w.epw" --sky cie_overcast -o "$tmp/ov" --quiet > "$tmp/ov.out" 2> "$tmp/ov.err"; st=$?
 check "overcast: exit 0 (got $st)" '[ $st -eq 0 ]' || cat "$tmp/ov.err"
-for f in desk.csv desk.hourly.bin desk_DA300.png desk_UDI.png desk_ASE.png desk_EN17037.png summary.json; do
+for f in desk.csv desk.hourly.bin desk_DA300.png desk_UDI.png desk_ASE.png desk_EN17037.png annual.csv summary.json; do
   check "overcast: $f written" '[ -s "$tmp/ov/$f" ]'
 done
 check "overcast: no temporary file left" '[ -z "$(ls "$tmp/ov" | grep tmp)" ]'
 check "overcast: every hour is DF x E_dh, the metrics recomputed (8-18)" \
   'python3 "$py" overcast "$tmp/ov" desk "$tmp/w.epw" 8-18 > "$tmp/ov.check"' || cat "$tmp/ov.check"
+check "overcast: annual.csv's row as summary.json has it" 'python3 - "$tmp/ov" <<EOF
+import csv, json, sys
+row = list(csv.DictReader(open(sys.argv[1] + "/annual.csv")))[0]
+g = json.load(open(sys.argv[1] + "/summary.json"))["grids"]["desk"]
+ok = row["grid"] == "desk" and int(row["points"]) == g["count"]
+for k in ["sDA300_percent", "ASE1000_percent", "DA300_mean_percent", "UDI_fell_short_percent", "UDI_percent", "UDI_exceeded_percent"]:
+    ok &= float(row[k]) == g[k]
+ok &= row["EN17037_level"] == g["EN17037"]["level"]
+sys.exit(0 if ok else 1)
+EOF'
 check "overcast: 3650 occupied hours, 4380 daylight hours" \
   'grep -q "\"occupied_hours\":	3650" "$tmp/ov/summary.json" && grep -q "\"daylight_hours\":	4380" "$tmp/ov/summary.json"'
 
