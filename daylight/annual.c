@@ -15,9 +15,9 @@
 #include "daylight/epw.h"
 #include "daylight/occupancy.h"
 #include "solver/daylight/daylight_coefficients.h"
+#include "solver/output/grid_result.h"
 #include "solver/output/solution_write.h"
 #include "solver/pool.h"
-#include "solver/solve_internal.h"
 
 /* Most paths a point's coefficients take (the cost's bound). */
 #define ANNUAL_MAX_PATHS 65536.0
@@ -38,8 +38,7 @@ typedef struct annual_state {
     int *row_of_hour;                     /* per hour: its row of the hourly arrays, -1 for none */
     size_t *hour_of_row;                  /* per row: its hour */
     cdl_daylight_scene ds;
-    cdl_solution overcast;                /* cie_overcast: the solve under the overcast sky */
-    int has_overcast;
+    double *overcast;                     /* cie_overcast: the sky of 1 lx horizontal over the patches */
     cJSON *grids;                         /* the summary's "grids" */
     uint64_t paths, rays;
     size_t exact_points, sampled_points;
@@ -87,7 +86,10 @@ static cdl_status read_year(annual_state *s, cdl_error *err)
 
 static cdl_status make_skies(annual_state *s, cdl_error *err)
 {
-    cdl_status st = cdl_reinhart_init(&s->patches, s->o.mf, cdl_vec3_make(0.0, 0.0, 1.0), s->o.north, err);
+    /* the overcast sky's single column over the finest patches (its luminance
+     * taken as each patch's mean: 1.5-degree rows) */
+    int mf = s->o.sky == CDL_ANNUAL_SKY_CIE_OVERCAST ? CDL_REINHART_MAX_MF : s->o.mf;
+    cdl_status st = cdl_reinhart_init(&s->patches, mf, cdl_vec3_make(0.0, 0.0, 1.0), s->o.north, err);
     if (st != CDL_OK) return cdl_error_prefix(err, "--north: ");
     cdl_annual_sky_options so = {s->o.sky, s->o.ground_reflectance, s->threads};
     st = cdl_annual_skies_compute(&s->epw, &so, &s->patches, &s->skies, err);
@@ -101,46 +103,6 @@ static cdl_status make_skies(annual_state *s, cdl_error *err)
         if (s->row_of_hour[h] >= 0) s->hour_of_row[s->row_of_hour[h]] = h;
     }
     return CDL_OK;
-}
-
-/* ---- cie_overcast: one solve ------------------------------------------------------- */
-
-/* The scene under the CIE overcast sky of 10 klx unobstructed horizontal
- * illuminance (L_z = 9 E_h / (7 pi)), every grid asking for its daylight
- * factor: a luminaire made by the loader itself (its defaults), lent to a
- * copy of the scene. */
-static cdl_status solve_overcast(annual_state *s, cdl_error *err)
-{
-    char json[256];
-    snprintf(json, sizeof json,
-             "{\"version\": 1, \"luminaires\": [{\"type\": \"environment\", \"sky\": \"cie_overcast\", "
-             "\"zenith_luminance_cd_m2\": %.17g}], \"grids\": [{\"name\": \"g\", \"type\": \"points\", \"points\": "
-             "[{\"p\": [0, 0, 0], \"n\": [0, 0, 1]}]}]}",
-             9.0 * 10000.0 / (7.0 * 3.14159265358979323846));
-    cdl_scene *sky = NULL;
-    cdl_status st = cdl_scene_load_string(json, s->scene->path, &sky, err);
-    if (st != CDL_OK) return st;
-    cdl_scene copy = *s->scene;
-    copy.luminaires = sky->luminaires;
-    copy.luminaire_count = 1;
-    copy.observer_count = 0;
-    copy.grids = malloc(s->scene->grid_count * sizeof *copy.grids);
-    if (!copy.grids) {
-        cdl_scene_release(sky);
-        return cdl_error_out_of_memory(err);
-    }
-    for (size_t g = 0; g < s->scene->grid_count; ++g) {
-        copy.grids[g] = s->scene->grids[g];
-        copy.grids[g].want_daylight_factor = 1;
-    }
-    cdl_solve_options so = CDL_SOLVE_OPTIONS_INIT;
-    so.threads = s->threads;
-    so.progress = s->o.progress;
-    st = cdl_solve_scene_into(&copy, &so, NULL, &s->overcast, err);
-    s->has_overcast = st == CDL_OK;
-    free(copy.grids);
-    cdl_scene_release(sky);
-    return st;
 }
 
 /* ---- perez: the coefficients and the hours ------------------------------------------ */
@@ -170,13 +132,83 @@ static cdl_status direct_suns(void *shared, void *local, size_t begin, size_t en
     return CDL_OK;
 }
 
+/* Probe hours for the patches' discretisation: each month's lit hour of the
+ * greatest direct normal illuminance (of the greatest diffuse where none has
+ * sun); their rows into rows[12], how many returned. */
+static size_t probe_rows(const annual_state *s, size_t rows[12])
+{
+    size_t count = 0;
+    for (int month = 1; month <= 12; ++month) {
+        int best = -1;
+        double score = 0.0;
+        for (size_t h = 0; h < s->skies.hours; ++h) {
+            const cdl_annual_hour *hr = &s->skies.hour[h];
+            if (s->epw.hours[h].month != month || hr->row < 0) continue;
+            double v = hr->direct_normal_lx * 1e6 + hr->diffuse_lx;
+            if (best < 0 || v > score) {
+                best = hr->row;
+                score = v;
+            }
+        }
+        if (best >= 0) rows[count++] = (size_t)best;
+    }
+    return count;
+}
+
+/* The patches' discretisation at each point, estimated: the direct light of
+ * the probe hours' skies through these patches and through patches half
+ * their size (MF doubled; the direct part exact both ways), the difference
+ * times 1.5 (the error falls at least threefold when the patches halve:
+ * measured 3.4 and 4.4 times from MF 1 to 2 and 2 to 4 on a window room),
+ * relative to the hour's E at the point; the largest over the probes (hours
+ * where the point gets less than 1 % of its brightest probe left out).
+ * 0 where the direct part was sampled, or MF 8 cannot be halved. */
+static cdl_status discretisation(annual_state *s, size_t g, const cdl_daylight_grid_coefficients *c, const float *E,
+                                 double *disc, cdl_error *err)
+{
+    size_t N = c->points, K = c->patches;
+    memset(disc, 0, N * sizeof *disc);
+    if (2 * s->patches.mf > CDL_REINHART_MAX_MF) return CDL_OK;
+    cdl_reinhart_patches fine;
+    cdl_status st = cdl_reinhart_init(&fine, 2 * s->patches.mf, s->patches.frame.n, s->patches.frame.s, err);
+    if (st != CDL_OK) return st;
+    cdl_daylight_coefficient_options co = {.patches = &fine, .target = s->target, .direct_only = 1,
+                                           .seed = s->scene->settings.seed, .threads = s->threads, .max_paths = 1.0};
+    cdl_daylight_grid_coefficients f;
+    st = cdl_daylight_coefficients_compute(&s->ds, g, &co, &f, err);
+    if (st != CDL_OK) return st;
+    size_t rows[12], P = probe_rows(s, rows), KF = (size_t)fine.count;
+    float *sky = malloc(KF * sizeof *sky);
+    double *top = calloc(N ? N : 1, sizeof *top);
+    if (!sky || !top) st = cdl_error_out_of_memory(err);
+    for (size_t q = 0; st == CDL_OK && q < P; ++q)
+        for (size_t i = 0; i < N; ++i) top[i] = fmax(top[i], E[rows[q] * N + i]);
+    for (size_t q = 0; st == CDL_OK && q < P; ++q) {
+        const cdl_annual_hour *hr = &s->skies.hour[s->hour_of_row[rows[q]]];
+        st = cdl_annual_sky_patches(hr, &fine, s->o.ground_reflectance, sky, err);
+        const float *coarse = s->skies.patch + rows[q] * K;
+        for (size_t i = 0; st == CDL_OK && i < N; ++i) {
+            double Et = E[rows[q] * N + i];
+            if (!c->exact[i] || !f.exact[i] || !(Et > 0.01 * top[i])) continue;
+            double Em = 0.0, Ef = 0.0;
+            for (size_t k = 0; k < K; ++k) Em += (double)c->direct[i * K + k] * coarse[k];
+            for (size_t k = 0; k < KF; ++k) Ef += (double)f.sky[i * KF + k] * sky[k];
+            disc[i] = fmax(disc[i], 1.5 * fabs(Em - Ef) / Et);
+        }
+    }
+    free(sky);
+    free(top);
+    cdl_daylight_coefficients_release(&f);
+    return st;
+}
+
 /* Grid g's hours under the Perez skies: E (rows x points), E_sun likewise. */
 static cdl_status perez_hours(annual_state *s, size_t g, float **E_out, float **E_sun_out, double *rel_stderr,
                               cdl_daylight_grid_coefficients *c, cdl_error *err)
 {
     size_t N = s->ds.grids[g].count, R = s->skies.rows, K = (size_t)s->patches.count;
     cdl_daylight_coefficient_options co = {.patches = &s->patches, .suns = s->skies.suns,
-                                           .sun_count = s->skies.sun_count, .target = s->target,
+                                           .sun_count = s->skies.sun_count, .target = s->target, .keep_direct = 1,
                                            .seed = s->scene->settings.seed, .threads = s->threads,
                                            .max_paths = ANNUAL_MAX_PATHS, .progress = s->o.progress};
     double t0 = cdl_pool_now_seconds();
@@ -207,6 +239,16 @@ static cdl_status perez_hours(annual_state *s, size_t g, float **E_out, float **
         for (size_t i = 0; i < N; ++i) e[i] += d[i] + dn * c->sun[i * c->suns + (size_t)hr->sun];
     }
     s->result->seconds_hours += cdl_pool_now_seconds() - t0;
+    /* the stated error: the sampling's and the patches' (estimated) */
+    double *disc = malloc((N ? N : 1) * sizeof *disc);
+    if (st == CDL_OK && !disc) st = cdl_error_out_of_memory(err);
+    if (st == CDL_OK) st = discretisation(s, g, c, E, disc, err);
+    for (size_t i = 0; st == CDL_OK && i < N; ++i) {
+        s->result->grids[g].discretisation_mean_rel += disc[i] / (double)N;
+        s->result->grids[g].discretisation_max_rel = fmax(s->result->grids[g].discretisation_max_rel, disc[i]);
+        rel_stderr[i] = hypot(rel_stderr[i], disc[i]);
+    }
+    free(disc);
     if (st != CDL_OK) {
         free(E);
         free(E_sun);
@@ -217,15 +259,24 @@ static cdl_status perez_hours(annual_state *s, size_t g, float **E_out, float **
     return CDL_OK;
 }
 
-/* Grid g's hours under the overcast sky: E = DF / 100 x the hour's diffuse horizontal illuminance. */
+/* Grid g's hours under the overcast sky: its one coefficient per point, E
+ * under the sky of 1 lx horizontal (the daylight factor / 100, interreflection
+ * included), times each hour's diffuse horizontal illuminance. */
 static cdl_status overcast_hours(annual_state *s, size_t g, float **E_out, double *rel_stderr, double *DF,
-                                 cdl_error *err)
+                                 cdl_daylight_grid_coefficients *c, cdl_error *err)
 {
-    const cdl_grid_solution *gs = &s->overcast.grids[g];
-    size_t N = gs->grid.count, R = s->skies.rows;
+    size_t N = s->ds.grids[g].count, R = s->skies.rows;
+    cdl_daylight_coefficient_options co = {.patches = &s->patches, .target = s->target,
+                                           .reference_sky = s->overcast, .collapse = 1,
+                                           .seed = s->scene->settings.seed, .threads = s->threads,
+                                           .max_paths = ANNUAL_MAX_PATHS, .progress = s->o.progress};
+    double t0 = cdl_pool_now_seconds();
+    cdl_status st = cdl_daylight_coefficients_compute(&s->ds, g, &co, c, err);
+    if (st != CDL_OK) return st;
+    s->result->seconds_coefficients += cdl_pool_now_seconds() - t0;
     for (size_t i = 0; i < N; ++i) {
-        DF[i] = gs->DF[i];
-        rel_stderr[i] = gs->E[i] > 0.0 ? gs->E_stderr[i] / gs->E[i] : 0.0;
+        DF[i] = 100.0 * (double)c->sky[i];
+        rel_stderr[i] = c->sky_rel_stderr[i];
     }
     float *E = malloc((R ? R : 1) * (N ? N : 1) * sizeof *E);
     if (!E) return cdl_error_out_of_memory(err);
@@ -276,6 +327,8 @@ static cJSON *grid_summary(const cdl_annual_grid_result *r, const cdl_daylight_g
     cJSON *co = cJSON_AddObjectToObject(o, "coefficients");
     cJSON_AddNumberToObject(co, "stderr_mean_rel", r->stderr_mean_rel);
     cJSON_AddNumberToObject(co, "stderr_max_rel", r->stderr_max_rel);
+    cJSON_AddNumberToObject(co, "discretisation_mean_rel", r->discretisation_mean_rel);
+    cJSON_AddNumberToObject(co, "discretisation_max_rel", r->discretisation_max_rel);
     if (c) {
         cJSON_AddNumberToObject(co, "exact_direct_points", (double)c->routes.exact);
         cJSON_AddNumberToObject(co, "through_glass_direct_points", (double)c->routes.through_glass);
@@ -291,7 +344,8 @@ static cJSON *grid_summary(const cdl_annual_grid_result *r, const cdl_daylight_g
 /* Grid g: its hours, metrics and files. */
 static cdl_status run_grid(annual_state *s, size_t g, cdl_error *err)
 {
-    const cdl_grid *grid = s->has_overcast ? &s->overcast.grids[g].grid : &s->ds.grids[g];
+    int overcast = s->o.sky == CDL_ANNUAL_SKY_CIE_OVERCAST;
+    const cdl_grid *grid = &s->ds.grids[g];
     size_t N = grid->count;
     cdl_annual_grid_result *r = &s->result->grids[g];
     r->points = N;
@@ -303,7 +357,7 @@ static cdl_status run_grid(annual_state *s, size_t g, cdl_error *err)
     memset(&c, 0, sizeof c);
     cdl_status st = rel && DF && pm ? CDL_OK : cdl_error_out_of_memory(err);
     if (st == CDL_OK)
-        st = s->has_overcast ? overcast_hours(s, g, &E, rel, DF, err) : perez_hours(s, g, &E, &E_sun, rel, &c, err);
+        st = overcast ? overcast_hours(s, g, &E, rel, DF, &c, err) : perez_hours(s, g, &E, &E_sun, rel, &c, err);
     double t0 = cdl_pool_now_seconds();
     cdl_annual_input in = {s->epw.count, N, E, E_sun, s->row_of_hour, s->occupied, s->daylight, grid->weights};
     if (st == CDL_OK) st = cdl_annual_metrics_compute(&in, pm, &r->metrics, err);
@@ -315,7 +369,7 @@ static cdl_status run_grid(annual_state *s, size_t g, cdl_error *err)
     double ase_max = 0.0;
     for (size_t i = 0; i < N; ++i) ase_max = fmax(ase_max, pm[i].ASE_hours);
     cdl_annual_grid_files files = {r->name, s->scene->grids[g].kind == CDL_GRID_POLYGON, grid, pm, rel,
-                                   s->has_overcast ? DF : NULL, ase_max};
+                                   overcast ? DF : NULL, ase_max};
     const char *ocio = s->o.ocio_config ? s->o.ocio_config : cdl_default_ocio_config();
     if (st == CDL_OK) st = cdl_annual_write_grid(s->out_dir, &files, ocio, err);
     char name[128];
@@ -332,7 +386,7 @@ static cdl_status run_grid(annual_state *s, size_t g, cdl_error *err)
                   : cdl_error_out_of_memory(err);
         free(path);
     }
-    if (st == CDL_OK) cJSON_AddItemToObject(s->grids, r->name, grid_summary(r, s->has_overcast ? NULL : &c));
+    if (st == CDL_OK) cJSON_AddItemToObject(s->grids, r->name, grid_summary(r, &c));
     cdl_daylight_coefficients_release(&c);
     free(E);
     free(E_sun);
@@ -373,6 +427,12 @@ static cJSON *sky_summary(const annual_state *s)
     cJSON *o = cJSON_CreateObject();
     int perez = s->o.sky == CDL_ANNUAL_SKY_PEREZ;
     cJSON_AddStringToObject(o, "model", perez ? "perez" : "cie_overcast");
+    cJSON *pt = cJSON_AddObjectToObject(o, "patches");
+    cJSON_AddNumberToObject(pt, "mf", s->patches.mf);
+    cJSON_AddNumberToObject(pt, "sky_patches", s->patches.count - 1);
+    cJSON_AddStringToObject(pt, "convention",
+                            "Reinhart (reinhartb.cal): 144 MF^2 + 1 sky patches, rows of 90 / (7 MF + 0.5) degrees "
+                            "from the horizon, the cap last, each row from north eastwards; column 0 the ground");
     cJSON_AddStringToObject(o, "words",
                             perez ? "Perez all-weather sky (1993) of each hour's direct normal and diffuse horizontal "
                                     "irradiance and dew point, Perez 1990 efficacies; the sun at the hour's middle by "
@@ -381,12 +441,6 @@ static cJSON *sky_summary(const annual_state *s)
                                     "(the file's field 19); no sun: every hour is the daylight factor times it");
     cJSON_AddNumberToObject(o, "hours_with_light", (double)k->rows);
     if (perez) {
-        cJSON *pt = cJSON_AddObjectToObject(o, "patches");
-        cJSON_AddNumberToObject(pt, "mf", s->patches.mf);
-        cJSON_AddNumberToObject(pt, "sky_patches", s->patches.count - 1);
-        cJSON_AddStringToObject(pt, "convention",
-                                "Reinhart (reinhartb.cal): 144 MF^2 + 1 sky patches, rows of 90 / (7 MF + 0.5) degrees "
-                                "from the horizon, the cap last, each row from north eastwards; column 0 the ground");
         cJSON_AddNumberToObject(o, "ground_reflectance", s->o.ground_reflectance);
         cJSON_AddNumberToObject(o, "sun_bins", (double)k->sun_count);
         cJSON_AddNumberToObject(o, "clamped_hours", (double)k->clamped_hours);
@@ -406,6 +460,7 @@ static cdl_status write_summary(annual_state *s, cdl_error *err)
     cJSON *root = cJSON_CreateObject();
     cJSON *a = cJSON_AddObjectToObject(root, "annual");
     cJSON_AddStringToObject(root, "candela_version", CANDELA_VERSION);
+    cJSON_AddStringToObject(root, "scene", s->scene->path);
     cJSON_AddItemToObject(a, "weather", weather_summary(s));
     cJSON_AddItemToObject(a, "sky", sky_summary(s));
     cJSON_AddStringToObject(a, "occupancy", s->occupancy);
@@ -418,9 +473,12 @@ static cdl_status write_summary(annual_state *s, cdl_error *err)
     cJSON_AddStringToObject(co, "stderr_words",
                             s->o.sky == CDL_ANNUAL_SKY_PEREZ
                                 ? "per point, the relative standard error of the sampled part under a uniform sky "
-                                  "(direct sky exact where the exact route sees it; interreflection by paths); the "
-                                  "patches' discretisation is not included"
-                                : "per point, the relative standard error of E under the overcast sky (the solve's)");
+                                  "(direct sky exact where the exact route sees it; interreflection by paths) and the "
+                                  "patches' discretisation (estimated from the direct light of each month's sunniest "
+                                  "hour through patches half the size, 1.5 x the difference), added in quadrature"
+                                : "per point, the relative standard error of E under the overcast sky (its "
+                                  "interreflection by paths; direct light exact where the exact route sees the sky); "
+                                  "the sky's luminance taken as its mean over patches of 1.5 degrees (MF 8)");
     cJSON_AddNumberToObject(co, "seed", (double)s->scene->settings.seed);
     cJSON_AddNumberToObject(co, "threads", s->threads);
     const named_number seconds[] = {{"skies", r->seconds_skies},
@@ -448,6 +506,38 @@ static cdl_status write_summary(annual_state *s, cdl_error *err)
     return st;
 }
 
+/* annual.csv: a row per grid, the grid's metrics as summary.json has them. */
+static cdl_status write_grid_table(const annual_state *s, cdl_error *err)
+{
+    char *path = cdl_path_join(s->out_dir, "annual", ".csv");
+    if (!path) return cdl_error_out_of_memory(err);
+    cdl_atomic_file f;
+    cdl_status st = cdl_atomic_file_open(&f, path, err);
+    free(path);
+    if (st != CDL_OK) return st;
+    fputs("grid,points,sDA300_percent,ASE1000_percent,DA300_mean_percent,UDI_fell_short_percent,UDI_percent,"
+          "UDI_exceeded_percent,EN17037_level,EN17037_minimum_met,EN17037_medium_met,EN17037_high_met,"
+          "stderr_mean_rel,stderr_max_rel\n",
+          f.fp);
+    for (size_t g = 0; g < s->result->grid_count; ++g) {
+        const cdl_annual_grid_result *r = &s->result->grids[g];
+        const cdl_grid_annual_metrics *m = &r->metrics;
+        fprintf(f.fp, "%s,%zu", r->name, r->points);
+        const double v[6] = {m->sDA300, m->ASE1000, m->DA300_mean, m->UDI_fell_short, m->UDI, m->UDI_exceeded};
+        for (int k = 0; k < 6; ++k) {
+            char num[CDL_CSV_NUMBER_SIZE];
+            cdl_csv_format_number(v[k], num);
+            fprintf(f.fp, ",%s", num);
+        }
+        fprintf(f.fp, ",%s,%d,%d,%d", m->en_level, m->en_met[0], m->en_met[1], m->en_met[2]);
+        char a[CDL_CSV_NUMBER_SIZE], b[CDL_CSV_NUMBER_SIZE];
+        cdl_csv_format_number(r->stderr_mean_rel, a);
+        cdl_csv_format_number(r->stderr_max_rel, b);
+        fprintf(f.fp, ",%s,%s\n", a, b);
+    }
+    return cdl_atomic_file_commit(&f, err);
+}
+
 /* ---- the run ------------------------------------------------------------------------ */
 
 static void state_release(annual_state *s)
@@ -459,7 +549,7 @@ static void state_release(annual_state *s)
     free(s->row_of_hour);
     free(s->hour_of_row);
     cdl_daylight_scene_release(&s->ds);
-    if (s->has_overcast) cdl_solution_clear(&s->overcast);
+    free(s->overcast);
     cJSON_Delete(s->grids);
 }
 
@@ -496,9 +586,8 @@ cdl_status cdl_annual_run(const cdl_scene *scene, const char *weather, const cdl
     if (st == CDL_OK) st = make_skies(&s, err);
     result->seconds_skies = cdl_pool_now_seconds() - t0;
     if (st == CDL_OK && s.o.sky == CDL_ANNUAL_SKY_CIE_OVERCAST) {
-        t0 = cdl_pool_now_seconds();
-        st = solve_overcast(&s, err);
-        result->seconds_coefficients = cdl_pool_now_seconds() - t0;
+        if (!(s.overcast = malloc((size_t)s.patches.count * sizeof *s.overcast))) st = cdl_error_out_of_memory(err);
+        else cdl_annual_overcast_patches(&s.patches, s.overcast);
     }
     result->grid_count = scene->grid_count;
     result->grids = calloc(scene->grid_count ? scene->grid_count : 1, sizeof *result->grids);
@@ -511,7 +600,8 @@ cdl_status cdl_annual_run(const cdl_scene *scene, const char *weather, const cdl
         result->occupied_hours = scene->grid_count ? result->grids[0].metrics.occupied_hours : 0;
         result->daylight_hours = scene->grid_count ? result->grids[0].metrics.daylight_hours : 0;
         result->seconds_total = cdl_pool_now_seconds() - t_start;
-        st = write_summary(&s, err);
+        st = write_grid_table(&s, err);
+        if (st == CDL_OK) st = write_summary(&s, err);
     }
     state_release(&s);
     if (st != CDL_OK) cdl_annual_result_release(result);

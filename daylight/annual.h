@@ -21,10 +21,10 @@
  *
  * The stated error of the coefficients (summary.json "coefficients"): per
  * point the relative standard error of the sampled part under a uniform sky
- * (perez) or of E under the overcast sky (cie_overcast), its mean and worst
- * per grid; the sky's patches add a discretisation the error does not
- * include (a patch's luminance taken as its mean): README says what it came
- * to against direct solves.
+ * (perez) or of E under the overcast sky (cie_overcast), and for perez the
+ * patches' discretisation (a patch's luminance taken as its mean), estimated
+ * at each month's sunniest hour against patches half the size, the two in
+ * quadrature; its mean and worst per grid.
  *
  * Thread safety: a run owns everything it makes; the scene is only read.
  * BLAS runs on the threads its own library chooses (OPENBLAS_NUM_THREADS).
@@ -59,7 +59,8 @@ typedef struct cdl_annual_grid_result {
     char *name;
     size_t points;
     cdl_grid_annual_metrics metrics;
-    double stderr_mean_rel, stderr_max_rel; /* the coefficients' stated error */
+    double stderr_mean_rel, stderr_max_rel; /* the coefficients' stated error (sampling and discretisation) */
+    double discretisation_mean_rel, discretisation_max_rel; /* the patches' part of it (perez) */
 } cdl_annual_grid_result;
 
 typedef struct cdl_annual_result {

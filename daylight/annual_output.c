@@ -139,17 +139,18 @@ static cdl_status write_csv(const char *path, const cdl_annual_grid_files *g, cd
 /* ---- the maps ---------------------------------------------------------------------- */
 
 typedef struct metric_map {
-    const char *suffix, *what, *unit;
+    const char *suffix, *what, *unit, *label;
     size_t offset;                        /* in cdl_point_metrics */
 } metric_map;
 
 static const metric_map maps[] = {
     {"_DA300", "daylight autonomy DA300, % of occupied hours at 300 lx or more", "%",
-     offsetof(cdl_point_metrics, DA300)},
-    {"_UDI", "useful daylight illuminance UDI 100-3000 lx, % of occupied hours", "%", offsetof(cdl_point_metrics, UDI)},
-    {"_ASE", "annual sunlight exposure: occupied hours of direct sun at 1000 lx or more", "h",
+     "DA300", offsetof(cdl_point_metrics, DA300)},
+    {"_UDI", "useful daylight illuminance UDI 100-3000 lx, % of occupied hours", "%", "UDI 100-3000 lx",
+     offsetof(cdl_point_metrics, UDI)},
+    {"_ASE", "annual sunlight exposure: occupied hours of direct sun at 1000 lx or more", "h", "ASE hours",
      offsetof(cdl_point_metrics, ASE_hours)},
-    {"_EN17037", "EN 17037: % of the daylight hours at 300 lx or more", "%",
+    {"_EN17037", "EN 17037: % of the daylight hours at 300 lx or more", "%", "EN 17037 hours at 300 lx",
      offsetof(cdl_point_metrics, EN17037_target)},
 };
 
@@ -173,7 +174,8 @@ static cdl_status write_map(const char *out_dir, const cdl_annual_grid_files *g,
         hi = tick * ceil(most / tick);
     }
     cdl_map_quantity q = {m->what, m->unit, lo, hi, tick, ""};
-    snprintf(q.stats, sizeof q.stats, "mean %.4g %s over the grid", total > 0.0 ? sum / total : 0.0, m->unit);
+    snprintf(q.stats, sizeof q.stats, "%s: mean %.4g %s over the grid", m->label, total > 0.0 ? sum / total : 0.0,
+             m->unit);
     cdl_grid_result r = {0};
     r.name = g->name;
     r.grid = g->grid;

@@ -14,6 +14,11 @@
  *                     (rect and polygon grids): false-colour maps of the
  *                     metric (solver/output's maps, 0 to 100 % or to the
  *                     most ASE hours).
+ * And annual.csv, a row per grid: grid,points,sDA300_percent,
+ * ASE1000_percent,DA300_mean_percent,UDI_fell_short_percent,UDI_percent,
+ * UDI_exceeded_percent,EN17037_level,EN17037_minimum_met,
+ * EN17037_medium_met,EN17037_high_met,stderr_mean_rel,stderr_max_rel
+ * (annual.c), and summary.json.
  * The hourly files (little-endian):
  *   bytes 0-7    "CDLHOUR1"
  *   8-11         uint32 hours (the weather file's rows, 8760 or 8784)

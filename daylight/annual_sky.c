@@ -12,19 +12,12 @@
 #include "radiometry/constants.h"
 #include "solver/pool.h"
 
-/* Per lit hour, what its patches need: the Perez coefficients (or a uniform fallback). */
-typedef struct hour_sky {
-    double coefficients[5];
-    int uniform;                          /* 1: a uniform sky of diffuse_lx / pi (the model failed) */
-} hour_sky;
-
 typedef struct fill_job {
     const cdl_epw *epw;
     const cdl_reinhart_patches *p;
     const cdl_annual_sky_options *o;
     cdl_annual_skies *out;
     const size_t *row_hour;
-    const hour_sky *sky;
 } fill_job;
 
 /* Gauss-Legendre, 3 points on [0, 1]: nodes 1/2 +- sqrt(3/5)/2 and 1/2, weights 5/18, 8/18, 5/18. */
@@ -47,40 +40,59 @@ static double patch_mean(const cdl_reinhart_patches *p, const cdl_emitter *e, in
     return num / (0.5 * (s0 + s1));
 }
 
+cdl_status cdl_annual_sky_patches(const cdl_annual_hour *h, const cdl_reinhart_patches *p, double ground_reflectance,
+                                  float *out, cdl_error *err)
+{
+    size_t K = (size_t)p->count;
+    /* the ground lit by the sky and the sun, reflecting diffusely */
+    double global = h->diffuse_lx + h->direct_normal_lx * sin(h->altitude_deg * CDL_DEG_TO_RAD);
+    out[CDL_REINHART_GROUND] = (float)(ground_reflectance * global / CDL_PI);
+    if (h->uniform) {
+        for (size_t k = 1; k < K; ++k) out[k] = (float)(h->diffuse_lx / CDL_PI);
+        return CDL_OK;
+    }
+    cdl_environment_params ep = CDL_ENVIRONMENT_PARAMS_DEFAULT;
+    ep.up = p->frame.n;
+    ep.upper_hemisphere_only = 1;
+    ep.sky = CDL_SKY_PEREZ;
+    memcpy(ep.perez, h->perez, sizeof ep.perez);
+    ep.sun = h->to_sun;
+    ep.scale_to_horizontal = 1;
+    ep.horizontal = cdl_lux(h->diffuse_lx);
+    cdl_emitter *e = NULL;
+    cdl_status st = cdl_emitter_create_environment(&ep, &e, err);
+    if (st != CDL_OK) return st;
+    for (size_t k = 1; k < K; ++k) out[k] = (float)patch_mean(p, e, (int)k);
+    cdl_emitter_release(e);
+    return CDL_OK;
+}
+
 static cdl_status fill_rows(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
 {
     (void)local;
     const fill_job *jb = shared;
-    const cdl_reinhart_patches *p = jb->p;
-    size_t K = (size_t)p->count;
+    size_t K = (size_t)jb->p->count;
     for (size_t r = begin; r < end; ++r) {
-        const cdl_annual_hour *h = &jb->out->hour[jb->row_hour[r]];
-        float *row = jb->out->patch + r * K;
         const cdl_epw_hour *w = &jb->epw->hours[jb->row_hour[r]];
-        /* the ground lit by the sky and the sun, reflecting diffusely */
-        double global = h->diffuse_lx + h->direct_normal_lx * sin(h->altitude_deg * CDL_DEG_TO_RAD);
-        row[CDL_REINHART_GROUND] = (float)(jb->o->ground_reflectance * global / CDL_PI);
-        if (jb->sky[r].uniform) {
-            for (size_t k = 1; k < K; ++k) row[k] = (float)(h->diffuse_lx / CDL_PI);
-            continue;
-        }
-        cdl_environment_params ep = CDL_ENVIRONMENT_PARAMS_DEFAULT;
-        ep.up = p->frame.n;
-        ep.upper_hemisphere_only = 1;
-        ep.sky = CDL_SKY_PEREZ;
-        memcpy(ep.perez, jb->sky[r].coefficients, sizeof ep.perez);
-        ep.sun = h->to_sun;
-        ep.scale_to_horizontal = 1;
-        ep.horizontal = cdl_lux(h->diffuse_lx);
-        cdl_emitter *e = NULL;
-        cdl_status st = cdl_emitter_create_environment(&ep, &e, err);
+        cdl_status st = cdl_annual_sky_patches(&jb->out->hour[jb->row_hour[r]], jb->p, jb->o->ground_reflectance,
+                                               jb->out->patch + r * K, err);
         if (st != CDL_OK)
             return cdl_error_prefix(err, "line %d (month %d, day %d, hour %d): the Perez sky: ", w->line, w->month,
                                     w->day, w->hour);
-        for (size_t k = 1; k < K; ++k) row[k] = (float)patch_mean(p, e, (int)k);
-        cdl_emitter_release(e);
     }
     return CDL_OK;
+}
+
+void cdl_annual_overcast_patches(const cdl_reinhart_patches *p, double *out)
+{
+    double Lz = 9.0 / (7.0 * CDL_PI);
+    out[CDL_REINHART_GROUND] = 0.0;
+    for (int k = 1; k < p->count; ++k) {
+        double a0, a1, z0, z1;
+        cdl_reinhart_patch_bounds(p, k, &a0, &a1, &z0, &z1);
+        double s0 = sin(a0), s1 = sin(a1), q = s1 * s1 - s0 * s0;
+        out[k] = Lz * (0.5 * q + 2.0 * (s1 * s1 * s1 - s0 * s0 * s0) / 3.0) / (1.5 * q);
+    }
 }
 
 /* The sun at the middle of hour h of the file. */
@@ -110,7 +122,7 @@ static int day_of_year(size_t h)
 
 /* An hour's Perez sky: *sky its coefficients, or a uniform fallback; 0
  * when the hour can give no light (left out). */
-static int perez_hour(const cdl_epw *epw, size_t h, cdl_annual_hour *hr, hour_sky *sky, cdl_annual_skies *out)
+static int perez_hour(const cdl_epw *epw, size_t h, cdl_annual_hour *hr, cdl_annual_skies *out)
 {
     const cdl_epw_hour *w = &epw->hours[h];
     double dew = w->dew_point_c;
@@ -123,7 +135,7 @@ static int perez_hour(const cdl_epw *epw, size_t h, cdl_annual_hour *hr, hour_sk
     cdl_perez_sky ps;
     cdl_error ignored;
     if (cdl_perez_sky_compute(&in, &ps, &ignored) == CDL_OK) {
-        memcpy(sky->coefficients, ps.coefficients, sizeof sky->coefficients);
+        memcpy(hr->perez, ps.coefficients, sizeof hr->perez);
         hr->diffuse_lx = ps.diffuse_horizontal_lx;
         hr->direct_normal_lx = ps.direct_normal_lx;
         hr->clamped = ps.clamped;
@@ -133,7 +145,7 @@ static int perez_hour(const cdl_epw *epw, size_t h, cdl_annual_hour *hr, hour_sk
     /* the model has no sky here (b >= 0 even clamped): a uniform sky of the
      * file's diffuse horizontal illuminance, and no sun */
     if (!(w->diffuse_horizontal_lx > 0.0)) return 0;
-    sky->uniform = 1;
+    hr->uniform = 1;
     hr->diffuse_lx = w->diffuse_horizontal_lx;
     hr->direct_normal_lx = 0.0;
     out->fallback_hours++;
@@ -171,7 +183,7 @@ static cdl_status sun_bins(const cdl_reinhart_patches *p, cdl_annual_skies *out,
 
 /* Which hours give light, and what light (the rows); perez skies in *sky. */
 static cdl_status classify_hours(const cdl_epw *epw, const cdl_annual_sky_options *o, const cdl_reinhart_patches *p,
-                                 cdl_annual_skies *out, hour_sky *sky, size_t *row_hour, cdl_error *err)
+                                 cdl_annual_skies *out, size_t *row_hour, cdl_error *err)
 {
     for (size_t h = 0; h < epw->count; ++h) {
         const cdl_epw_hour *w = &epw->hours[h];
@@ -190,9 +202,7 @@ static cdl_status classify_hours(const cdl_epw *epw, const cdl_annual_sky_option
             hr->diffuse_lx = w->diffuse_horizontal_lx;
         } else {
             int light = w->diffuse_horizontal_w_m2 > 0.0 || w->direct_normal_w_m2 > 0.0;
-            memset(&sky[out->rows], 0, sizeof *sky);
-            if (!(hr->altitude_deg > 0.0) || !(w->diffuse_horizontal_w_m2 > 0.0) ||
-                !perez_hour(epw, h, hr, &sky[out->rows], out)) {
+            if (!(hr->altitude_deg > 0.0) || !(w->diffuse_horizontal_w_m2 > 0.0) || !perez_hour(epw, h, hr, out)) {
                 if (light) {
                     out->left_out_hours++;
                     out->left_out_wh_m2 += w->diffuse_horizontal_w_m2 + w->direct_normal_w_m2;
@@ -213,20 +223,18 @@ cdl_status cdl_annual_skies_compute(const cdl_epw *epw, const cdl_annual_sky_opt
     out->kind = o->kind;
     out->hours = epw->count;
     out->hour = calloc(epw->count, sizeof *out->hour);
-    hour_sky *sky = calloc(epw->count, sizeof *sky);
     size_t *row_hour = calloc(epw->count, sizeof *row_hour);
-    cdl_status st = out->hour && sky && row_hour ? CDL_OK : cdl_error_out_of_memory(err);
-    if (st == CDL_OK) st = classify_hours(epw, o, p, out, sky, row_hour, err);
+    cdl_status st = out->hour && row_hour ? CDL_OK : cdl_error_out_of_memory(err);
+    if (st == CDL_OK) st = classify_hours(epw, o, p, out, row_hour, err);
     if (st == CDL_OK && o->kind == CDL_ANNUAL_SKY_PEREZ) {
         out->patch = malloc((out->rows ? out->rows : 1) * (size_t)p->count * sizeof *out->patch);
         if (!out->patch) st = cdl_error_out_of_memory(err);
-        fill_job jb = {epw, p, o, out, row_hour, sky};
+        fill_job jb = {epw, p, o, out, row_hour};
         cdl_pool_task task = {.count = out->rows, .chunk = 8, .run = fill_rows, .shared = &jb, .stage = "skies"};
         cdl_progress_sink none = {0};
         if (st == CDL_OK) st = cdl_pool_run(&task, o->threads > 0 ? o->threads : 1, &none, err);
         if (st == CDL_OK) st = sun_bins(p, out, err);
     }
-    free(sky);
     free(row_hour);
     if (st != CDL_OK) cdl_annual_skies_release(out);
     return st;

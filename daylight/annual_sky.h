@@ -55,6 +55,8 @@ typedef struct cdl_annual_hour {
     double direct_normal_lx;              /* the sun's (Perez), 0 without */
     int sun;                              /* its sun bin, -1 without */
     int clamped;                          /* the Perez inputs were clamped */
+    double perez[5];                      /* its Perez coefficients a..e */
+    int uniform;                          /* 1: a uniform sky of diffuse_lx / pi instead (the model failed) */
 } cdl_annual_hour;
 
 typedef struct cdl_annual_skies {
@@ -74,6 +76,20 @@ typedef struct cdl_annual_sky_options {
     double ground_reflectance;            /* [0, 1] */
     int threads;                          /* >= 1 */
 } cdl_annual_sky_options;
+
+/* The CIE standard overcast sky, L = L_z (1 + 2 sin a) / 3 at altitude a
+ * (Moon and Spencer 1942; CIE 110-1994), over the patches of p, scaled to 1
+ * lx of unobstructed horizontal illuminance (L_z = 9 / (7 pi) cd/m^2):
+ * each patch the cosine-weighted mean over it, in closed form
+ *     L_k = L_z [ (s1^2 - s0^2) / 2 + 2 (s1^3 - s0^3) / 3 ] / (3 (s1^2 - s0^2) / 2),
+ * s = sin a over the patch's rows (exact: the patches then give 1 lx on a
+ * horizontal plane); the ground 0. out[p->count]. */
+void cdl_annual_overcast_patches(const cdl_reinhart_patches *p, double *out);
+
+/* A lit Perez hour's sky over any patches p: out[p->count] (cd/m^2, the
+ * ground first), as the year's rows are made. */
+cdl_status cdl_annual_sky_patches(const cdl_annual_hour *hour, const cdl_reinhart_patches *p, double ground_reflectance,
+                                  float *out, cdl_error *err);
 
 /* The year's skies over the patches p (their frame gives up and north). */
 cdl_status cdl_annual_skies_compute(const cdl_epw *epw, const cdl_annual_sky_options *o,

@@ -14,6 +14,7 @@
 #include "base/strings.h"
 #include "report/grid_map.h"
 #include "report/report_builder.h"
+#include "report/report_daylight.h"
 #include "report/report_glare.h"
 #include "report/report_sections.h"
 #include "report/summary_table.h"
@@ -214,6 +215,7 @@ void cdl_report_document_release(cdl_report_document *d)
     free(d->maps);
     free(d->diagrams);
     cdl_report_glare_plan_release(d->glare_plan);
+    cdl_report_images_release(d->images, d->image_count);
     free(d->blocks);
     free(d->title);
     free(d);

@@ -66,6 +66,8 @@ typedef struct cdl_report_document {
     size_t diagram_count;
     struct cdl_report_surfaces *surfaces; /* the surface maps' section (report_surfaces.h), or NULL */
     struct cdl_glare_plan *glare_plan; /* the observers on the plan (report_glare.c), or NULL */
+    struct cdl_report_image **images;  /* pictures read from the folder (report_daylight.c) */
+    size_t image_count;
 } cdl_report_document;
 
 /* Build the report of `input` with the options' title (NULL: the scene's

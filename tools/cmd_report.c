@@ -24,6 +24,10 @@ static void print_help(FILE *out)
           "outlines), and the method and its accuracy, naming each light and grid.\n"
           "Numbers are summary.json's, printed to the precision their stated error\n"
           "justifies.\n"
+          "From the folder of `candela annual`, a daylight report instead: the weather,\n"
+          "sky and occupancy; per grid sDA300/50%, ASE1000,250h, DA300, UDI and EN\n"
+          "17037's daylight provision per level with the coefficients' stated error;\n"
+          "the study's maps; the method and what it leaves out.\n"
           "\n"
           "  --title TEXT           the report's title (default: the scene's \"name\", else\n"
           "                         its file's name without the extension)\n"
@@ -84,5 +88,5 @@ static int run(int argc, char **argv)
     return CDL_EXIT_OK;
 }
 
-const cdl_command cdl_command_report = {"report", "lighting-design report (HTML and PDF) from a solve", run,
+const cdl_command cdl_command_report = {"report", "lighting-design report (HTML and PDF) from a solve or an annual study", run,
                                         print_help};

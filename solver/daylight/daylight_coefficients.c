@@ -223,10 +223,17 @@ static int direct_exact(const job *jb, worker *w, uint64_t stream, cdl_vec3 p, c
     return 1;
 }
 
-/* One path's sums: f_sky under a uniform sky of 1 cd/m^2, f_sun over the suns. */
+/* One path's sums: f_sky under the reference sky (a uniform one of 1 cd/m^2
+ * unless the options give one), f_sun over the suns. */
 typedef struct path_sums {
     double f_sky, f_sun;
 } path_sums;
+
+/* The reference sky's luminance of patch k (1 without one). */
+static double reference(const cdl_daylight_coefficient_options *o, int k)
+{
+    return o->reference_sky ? o->reference_sky[k] : 1.0;
+}
 
 /* Next-event estimation towards the sky from a reflection at hit (throughput
  * wt): one direction drawn in the sky the hit sees, as the exact route finds
@@ -252,8 +259,9 @@ static int sky_at(const job *jb, worker *w, const cdl_surface_hit *hit, double w
         cdl_frame f = cdl_frame_from_normal(hit->n);
         cdl_vec3 d = cdl_frame_to_world(&f, cdl_sample_cosine_hemisphere(u[0], u[1]));
         double v = CDL_PI * wt;
-        if (acc) acc[cdl_reinhart_patch_of(jb->o->patches, d)] += v;
-        s->f_sky += v;
+        int k = cdl_reinhart_patch_of(jb->o->patches, d);
+        if (acc) acc[k] += v;
+        s->f_sky += v * reference(jb->o, k);
         return 1;
     }
     if (route != CDL_ROUTE_VISIBLE_POLYGON || sink.overflow) return 0;
@@ -284,8 +292,9 @@ static int sky_at(const job *jb, worker *w, const cdl_surface_hit *hit, double w
             w->rays++;
             double T = glass ? cdl_scene_geometry_transmission(jb->ds->geometry, hit->p, d, INFINITY) : 1.0;
             double v = wt * omega * c * T * total / q;
-            if (acc) acc[cdl_reinhart_patch_of(jb->o->patches, d)] += v;
-            s->f_sky += v;
+            int k = cdl_reinhart_patch_of(jb->o->patches, d);
+            if (acc) acc[k] += v;
+            s->f_sky += v * reference(jb->o, k);
             return 1;
         }
     return 1;
@@ -328,8 +337,9 @@ static path_sums trace_path(const job *jb, worker *w, cdl_rng_key key, cdl_vec3 
              * (unless the sky was reached by next-event estimation) */
             if (escape_counts) {
                 double v = CDL_PI * wt * hit.transmission;
-                if (acc) acc[cdl_reinhart_patch_of(jb->o->patches, dir)] += v;
-                s.f_sky += v;
+                int k = cdl_reinhart_patch_of(jb->o->patches, dir);
+                if (acc) acc[k] += v;
+                s.f_sky += v * reference(jb->o, k);
             }
             break;
         }
@@ -386,12 +396,15 @@ static void point_coefficients(const job *jb, worker *w, size_t i)
     cdl_vec3 p = jb->grid->points[i], n = jb->grid->normals[i];
     uint64_t stream = cdl_rng_stream_id(jb->grid_key, (uint64_t)i, 0x636f6566 /* "coef" */);
     int exact = direct_exact(jb, w, stream, p, n);
+    out->exact[i] = (unsigned char)exact;
+    if (out->direct)
+        for (size_t k = 0; k < K; ++k) out->direct[i * K + k] = (float)w->direct[k];
     double E_direct = 0.0;
-    for (size_t k = 0; k < K; ++k) E_direct += w->direct[k];
+    for (size_t k = 0; k < K; ++k) E_direct += w->direct[k] * reference(o, (int)k);
     memset(w->acc, 0, K * sizeof *w->acc);
     if (S) memset(w->sun_acc, 0, S * sizeof *w->sun_acc);
     double sky_var = 0.0, sun_mean = 0.0, sun_var = 0.0, stage = 0.0;
-    if (jb->ds->geometry && cdl_scene_geometry_piece_count(jb->ds->geometry) > 0) {
+    if (!o->direct_only && jb->ds->geometry && cdl_scene_geometry_piece_count(jb->ds->geometry) > 0) {
         /* The pilot only plans (estimate.h): how many paths the point needs
          * for the sampled part under a uniform sky to meet the target. */
         cdl_estimate ps = {0.0, 0.0, 0.0, 0}, pu = {0.0, 0.0, 0.0, 0};
@@ -411,14 +424,15 @@ static void point_coefficients(const job *jb, worker *w, size_t i)
         sun_mean = cdl_estimate_mean(&eu);
         sun_var = cdl_estimate_variance(&eu);
     }
-    float *row = out->sky + i * K;
-    double E_uniform = E_direct;
+    float *row = out->sky + i * out->patches;
+    double E_reference = E_direct;
     for (size_t k = 0; k < K; ++k) {
         double c = w->direct[k] + (stage > 0.0 ? w->acc[k] / stage : 0.0);
-        row[k] = (float)c;
-        E_uniform += stage > 0.0 ? w->acc[k] / stage : 0.0;
+        if (!o->collapse) row[k] = (float)c;
+        E_reference += (stage > 0.0 ? w->acc[k] / stage : 0.0) * reference(o, (int)k);
     }
-    out->sky_rel_stderr[i] = E_uniform > 0.0 ? sqrt(sky_var) / E_uniform : 0.0;
+    if (o->collapse) row[0] = (float)E_reference;
+    out->sky_rel_stderr[i] = E_reference > 0.0 ? sqrt(sky_var) / E_reference : 0.0;
     if (S) {
         float *srow = out->sun + i * S;
         for (size_t s = 0; s < S; ++s) srow[s] = (float)(stage > 0.0 ? w->sun_acc[s] / stage : 0.0);
@@ -467,16 +481,19 @@ cdl_status cdl_daylight_coefficients_compute(const cdl_daylight_scene *ds, size_
     size_t N = grid->count, K = (size_t)o->patches->count, S = o->sun_count;
     int threads = o->threads > 0 ? o->threads : 1;
     out->points = N;
-    out->patches = K;
+    out->patches = o->collapse ? 1 : K;
     out->suns = S;
-    out->sky = malloc((N ? N : 1) * K * sizeof *out->sky);
+    out->sky = malloc((N ? N : 1) * out->patches * sizeof *out->sky);
     out->sky_rel_stderr = calloc(N ? N : 1, sizeof *out->sky_rel_stderr);
+    out->exact = calloc(N ? N : 1, sizeof *out->exact);
+    if (o->keep_direct) out->direct = malloc((N ? N : 1) * K * sizeof *out->direct);
     if (S) {
         out->sun = malloc((N ? N : 1) * S * sizeof *out->sun);
         out->sun_rel_stderr = calloc(N ? N : 1, sizeof *out->sun_rel_stderr);
     }
     worker *w = calloc((size_t)threads, sizeof *w);
-    int ok = out->sky && out->sky_rel_stderr && (!S || (out->sun && out->sun_rel_stderr)) && w;
+    int ok = out->sky && out->sky_rel_stderr && out->exact && (!o->keep_direct || out->direct) &&
+             (!S || (out->sun && out->sun_rel_stderr)) && w;
     for (int t = 0; ok && t < threads; ++t) {
         w[t].direct = malloc(K * sizeof(double));
         w[t].acc = malloc(K * sizeof(double));
@@ -516,6 +533,8 @@ void cdl_daylight_coefficients_release(cdl_daylight_grid_coefficients *c)
     free(c->sky);
     free(c->sun);
     free(c->sky_rel_stderr);
+    free(c->direct);
+    free(c->exact);
     free(c->sun_rel_stderr);
     memset(c, 0, sizeof *c);
 }

@@ -37,10 +37,10 @@
  * DAYSIM's suns are lights of rtrace's.
  *
  * Stated error: each point's paths are sampled in two stages
- * (radiometry/estimate.h), so that the sampled part of E under a uniform
- * sky of 1 cd/m^2 (direct sampled part and interreflection) meets
- * `target` relative to that sky's E at the point; the stated relative
- * error of that E is kept per point (sky_rel_stderr). The same paths
+ * (radiometry/estimate.h), so that the sampled part of E under a reference
+ * sky (a uniform one of 1 cd/m^2 unless given: the CIE overcast for a
+ * daylight factor) meets `target` relative to that sky's E at the point;
+ * the stated relative error of that E is kept per point (sky_rel_stderr). The same paths
  * give the suns' coefficients; their summed value's relative error is
  * kept too (sun_rel_stderr). A patch's coefficient alone is far noisier
  * than their sum: what an hour's sky weighs is the sum.
@@ -81,7 +81,14 @@ typedef struct cdl_daylight_coefficient_options {
     const cdl_reinhart_patches *patches;  /* the sky's patches (with the ground) */
     const cdl_vec3 *suns;                 /* unit world directions towards the suns (interreflected) */
     size_t sun_count;
-    double target;                        /* relative standard error of the sampled part under a uniform sky */
+    double target;                        /* relative standard error of the sampled part under the reference sky */
+    const double *reference_sky;          /* per patch, cd/m^2: the sky the error is held and stated for; NULL:
+                                           * a uniform sky of 1 cd/m^2 */
+    int collapse;                         /* 1: keep only each point's E under the reference sky (sky is points x
+                                           * 1): a sky whose shape never changes needs no more */
+    int keep_direct;                      /* 1: the direct part apart too (direct) */
+    int direct_only;                      /* 1: no paths: the direct part alone, exact where the exact route is
+                                           * (sampled points get 0 and exact[i] 0) */
     uint64_t seed;
     int threads;                          /* >= 1 */
     double max_paths;                     /* most paths a point */
@@ -97,10 +104,13 @@ typedef struct cdl_daylight_routes {
 
 typedef struct cdl_daylight_grid_coefficients {
     size_t points, patches, suns;
-    float *sky;                           /* points x patches, row by row: lx per cd/m^2 */
+    float *sky;                           /* points x patches, row by row: lx per cd/m^2 (patches 1 when
+                                           * collapsed: lx under the reference sky) */
     float *sun;                           /* points x suns: lx per lx of direct normal illuminance (NULL without suns) */
-    double *sky_rel_stderr;               /* per point, under a uniform sky (0 where E is 0) */
+    double *sky_rel_stderr;               /* per point, under the reference sky (0 where E is 0) */
     double *sun_rel_stderr;               /* per point, of the suns' coefficients summed (NULL without suns) */
+    float *direct;                        /* keep_direct: points x patches, the direct part (NULL otherwise) */
+    unsigned char *exact;                 /* per point: 1 where the direct part took the exact route */
     cdl_daylight_routes routes;
     uint64_t paths, rays;
 } cdl_daylight_grid_coefficients;

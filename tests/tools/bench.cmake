@@ -13,3 +13,12 @@ set_tests_properties(tools/bench_direct PROPERTIES LABELS "tools;bench;no-saniti
 add_test(NAME tools/bench_icache COMMAND bench_icache --small --reference-target 0.002)
 set_tests_properties(tools/bench_icache PROPERTIES LABELS "tools;bench;no-sanitize" TIMEOUT 600
                      PASS_REGULAR_EXPRESSION "ratio \\(pathtrace / icache, equal RMS\\): [0-9.]+")
+
+# The annual study's hours once the coefficients exist (tools/bench/bench_annual.c),
+# run small: the product and the metrics must complete, report their ratio to
+# the issue's minute and agree with a plain loop (it exits 1 otherwise). No time
+# is asserted. Full size: build/bench_annual (8760 hours x 10^4 points, MF 1;
+# --mf 4 for 2305 sky patches).
+add_test(NAME tools/bench_annual COMMAND bench_annual --points 400)
+set_tests_properties(tools/bench_annual PROPERTIES LABELS "tools;bench;no-sanitize" TIMEOUT 300
+                     PASS_REGULAR_EXPRESSION "ratio to one minute \\(8760 hours x 10\\^4 points scaled\\): [0-9.]+")

@@ -57,21 +57,22 @@ static void release(cdl_scene *scene, cdl_daylight_scene *ds)
     cdl_scene_release(scene);
 }
 
-static cdl_daylight_coefficient_options options(const cdl_reinhart_patches *p, const cdl_vec3 *suns, size_t count)
+static cdl_daylight_coefficient_options options(const cdl_reinhart_patches *p, const cdl_vec3 *suns, size_t count,
+                                                double target)
 {
-    cdl_daylight_coefficient_options o = {.patches = p, .suns = suns, .sun_count = count, .target = 0.005,
+    cdl_daylight_coefficient_options o = {.patches = p, .suns = suns, .sun_count = count, .target = target,
                                           .seed = 1, .threads = 2, .max_paths = 1 << 20};
     return o;
 }
 
 /* Grid 0's coefficients over the patches of subdivision mf (up +z, north +y). */
 static void coefficients(const cdl_daylight_scene *ds, cdl_reinhart_patches *p, int mf, const cdl_vec3 *suns,
-                         size_t sun_count, cdl_daylight_grid_coefficients *c)
+                         size_t sun_count, double target, cdl_daylight_grid_coefficients *c)
 {
     cdl_error err;
     memset(c, 0, sizeof *c);
     CHECK_OK(cdl_reinhart_init(p, mf, cdl_vec3_make(0, 0, 1), cdl_vec3_make(0, 1, 0), &err), &err);
-    cdl_daylight_coefficient_options o = options(p, suns, sun_count);
+    cdl_daylight_coefficient_options o = options(p, suns, sun_count, target);
     CHECK_OK(cdl_daylight_coefficients_compute(ds, 0, &o, c, &err), &err);
 }
 
@@ -91,7 +92,7 @@ static void test_open(void)
     if (!load(json, &scene, &ds)) return;
     cdl_reinhart_patches p;
     cdl_daylight_grid_coefficients c;
-    coefficients(&ds, &p, 2, NULL, 0, &c);
+    coefficients(&ds, &p, 2, NULL, 0, 0.005, &c);
     if (c.sky) {
         const cdl_vec3 n[2] = {cdl_vec3_make(0, 0, 1), cdl_vec3_make(0.6, 0, 0.8)};
         for (size_t i = 0; i < 2; ++i) {
@@ -138,7 +139,7 @@ static void test_skylight(void)
     cdl_reinhart_patches p;
     cdl_daylight_grid_coefficients c;
     cdl_error err;
-    coefficients(&ds, &p, 1, NULL, 0, &c);
+    coefficients(&ds, &p, 1, NULL, 0, 0.005, &c);
     cdl_vec3 pt = cdl_vec3_make(1.3, 2.1, 0.0), n = cdl_vec3_make(0, 0, 1);
     cdl_vec3 window[4] = {{-1.3, -2.1, 3.0}, {2.7, -2.1, 3.0}, {2.7, 1.9, 3.0}, {-1.3, 1.9, 3.0}};
     double lambert = fabs(cdl_projected_solid_angle_polygon(window, 4, n)); /* either orientation */
@@ -166,7 +167,7 @@ static void test_skylight(void)
     /* glass in the skylight: sampled through the pane */
     skylight_scene(json, sizeof json, 1);
     if (!load(json, &scene, &ds)) return;
-    coefficients(&ds, &p, 1, NULL, 0, &c);
+    coefficients(&ds, &p, 1, NULL, 0, 0.005, &c);
     cdl_glass pane;
     CHECK_OK(cdl_glass_from_transmittance(0.8, &pane, &err), &err);
     /* int over the window of T(theta) cos(theta) dw, dw = cos(theta) dA / d^2:
@@ -210,7 +211,7 @@ static void test_floor(void)
     CHECK_OK(cdl_reinhart_init(&p, 1, cdl_vec3_make(0, 0, 1), cdl_vec3_make(0, 1, 0), &err), &err);
     double alt = 40.0 * CDL_DEG_TO_RAD;
     cdl_vec3 suns[2] = {cdl_reinhart_direction(&p, alt, 2.0), cdl_reinhart_direction(&p, 0.5 * alt, -1.0)};
-    cdl_daylight_coefficient_options o = options(&p, suns, 2);
+    cdl_daylight_coefficient_options o = options(&p, suns, 2, 0.005);
     cdl_daylight_grid_coefficients c;
     CHECK_OK(cdl_daylight_coefficients_compute(&ds, 0, &o, &c, &err), &err);
     cdl_vec3 floor[4] = {{-10.5, -10.3, -1}, {9.5, -10.3, -1}, {9.5, 9.7, -1}, {-10.5, 9.7, -1}};
@@ -248,7 +249,7 @@ static void test_room(void)
         " \"grids\": [{\"name\": \"g\", \"type\": \"points\", \"points\": ["
         "{\"p\": [2,1,0.8], \"n\": [0,0,1]}, {\"p\": [2,3,0.8], \"n\": [0,0,1]}, {\"p\": [0.5,4.5,0.8], "
         "\"n\": [0,0,1]}, {\"p\": [3.9,2.5,1.5], \"n\": [-1,0,0]}, {\"p\": [2,4.9,1.2], \"n\": [0,-1,0]}]}],"
-        " \"solver\": {\"method\": \"pathtrace\", \"target_error\": 0.005, \"seed\": 3}}";
+        " \"solver\": {\"method\": \"pathtrace\", \"target_error\": 0.01, \"seed\": 3}}";
     char json[2048];
     snprintf(json, sizeof json, room, ",");
     /* the same room lit by a uniform environment of 1 cd/m^2 */
@@ -260,7 +261,7 @@ static void test_room(void)
     cdl_reinhart_patches p;
     cdl_daylight_grid_coefficients c;
     cdl_error err;
-    coefficients(&ds, &p, 1, NULL, 0, &c);
+    coefficients(&ds, &p, 1, NULL, 0, 0.01, &c);
     cdl_scene *ref = NULL;
     cdl_solution *sol = NULL;
     cdl_solve_options so = CDL_SOLVE_OPTIONS_INIT;
