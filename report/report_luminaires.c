@@ -180,19 +180,18 @@ static void list_row(cdl_report_builder *b, cdl_report_block *t, size_t r, const
     product(in, l, text, catalogue, 160);
     cdl_report_cell(b, t, r, 1, "%s", text);
     cdl_report_cell(b, t, r, 2, "%s", catalogue);
+    for (size_t c = 3; c < 7; ++c) cdl_report_cell(b, t, r, c, "-");
     cdl_vec3 p;
     if (luminaire_position(l, &p)) {
-        cdl_report_cell(b, t, r, 3, "%.3f, %.3f, %.3f", p.x, p.y, p.z);
+        cdl_report_cell(b, t, r, 3, "%.3f", p.x);
+        cdl_report_cell(b, t, r, 4, "%.3f", p.y);
+        cdl_report_cell(b, t, r, 5, "%.3f", p.z);
         double floor = floor_below(in->scene, p);
-        if (isnan(floor)) cdl_report_cell(b, t, r, 4, "-");
-        else cdl_report_cell(b, t, r, 4, "%.3f", p.z - floor);
-    } else {
-        cdl_report_cell(b, t, r, 3, "-");
-        cdl_report_cell(b, t, r, 4, "-");
+        if (!isnan(floor)) cdl_report_cell(b, t, r, 6, "%.3f", p.z - floor);
     }
     orientation(l, text, sizeof text);
-    cdl_report_cell(b, t, r, 5, "%s", text);
-    cdl_report_cell(b, t, r, 6, "%.3g", l->maintenance_factor);
+    cdl_report_cell(b, t, r, 7, "%s", text);
+    cdl_report_cell(b, t, r, 8, "%.3g", l->maintenance_factor);
 }
 
 static void luminaire_list(cdl_report_builder *b, const cdl_report_input *in)
@@ -204,10 +203,10 @@ static void luminaire_list(cdl_report_builder *b, const cdl_report_input *in)
         return;
     }
     size_t rows = scene->luminaire_count < LIST_ROWS_MAX ? scene->luminaire_count : LIST_ROWS_MAX;
-    cdl_report_block *t = cdl_report_table(b, 7, rows + 1, 1);
-    static const char *const headings[7] = {"luminaire", "product",          "catalogue no.", "x, y, z (m)",
-                                            "height (m)", "rotation or aim", "MF"};
-    for (size_t c = 0; c < 7; ++c) cdl_report_cell(b, t, 0, c, "%s", headings[c]);
+    cdl_report_block *t = cdl_report_table(b, 9, rows + 1, 1);
+    static const char *const headings[9] = {"luminaire", "product", "catalogue no.",   "x (m)", "y (m)",
+                                            "z (m)",     "height (m)", "rotation or aim", "MF"};
+    for (size_t c = 0; c < 9; ++c) cdl_report_cell(b, t, 0, c, "%s", headings[c]);
     for (size_t k = 0; k < rows; ++k) list_row(b, t, k + 1, in, &scene->luminaires[k]);
     if (rows < scene->luminaire_count)
         cdl_report_text(b, CDL_BLOCK_PARAGRAPH, 0, "And %zu more luminaires (the scene places %zu).",

@@ -115,12 +115,15 @@ for row, (entry, xyz, k, n) in zip(rows, expected):
     label = entry["name"] + (", %d of %d" % (k + 1, n) if n > 1 else "")
     say(row[0] == label, "list row %s (%s)" % (label, row[0]))
     say((row[1], row[2]) == products[entry["file"]], "%s: product and catalogue number from the file" % label)
-    say(row[3] == "%.3f, %.3f, %.3f" % tuple(xyz), "%s at %s (%s)" % (label, xyz, row[3]))
-    say(row[4] == "%.3f" % xyz[2], "%s: %.3f m above the floor (%s)" % (label, xyz[2], row[4]))
+    position = ["%.3f" % c for c in xyz]
+    say(row[3:6] == position, "%s at %s (%s)" % (label, xyz, row[3:6]))
+    say(row[6] == "%.3f" % xyz[2], "%s: %.3f m above the floor (%s)" % (label, xyz[2], row[6]))
     if "aim" in entry:
-        say(row[5].startswith("aim (%g, %g, %g)" % tuple(entry["aim"])), "%s: aim point (%s)" % (label, row[5]))
-    say(row[6] == "%g" % entry.get("maintenance_factor", 1), "%s: maintenance factor" % label)
-    say(re.sub(r"\s+", " ", row[3]) in flat(pdf) or row[3].split(", ")[0] in pdf, "%s: position in the PDF" % label)
+        say(row[7].startswith("aim (%g, %g, %g)" % tuple(entry["aim"])), "%s: aim point (%s)" % (label, row[7]))
+    say(row[8] == "%g" % entry.get("maintenance_factor", 1), "%s: maintenance factor" % label)
+    # the PDF's row: the label, then (past the product's first line) x, y, z and the height on its line
+    line = r"^%s .* %s +%s +%s +%s " % (re.escape(label), position[0], position[1], position[2], "%.3f" % xyz[2])
+    say(re.search(line, pdf, re.M) is not None, "%s: position and height in the PDF's list" % label)
 
 # 4. Room and surfaces.
 room = scene["surfaces"][0]
