@@ -1,6 +1,6 @@
 /* report_surfaces.h - the surface maps in the report: their table, requirements and the room in 3D.
  *
- * What `candela report` reads of a solve's surface maps (issue 23): each
+ * What `candela report` reads of a solve's surface maps: each
  * entry of summary.json's "surfaces", its mapped surface in the scene (by
  * name; a map the scene no longer has is refused), and OUTDIR/surfaces/
  * NAME.csv and NAME.tri.csv, checked against the summary: as many vertices

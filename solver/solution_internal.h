@@ -92,7 +92,7 @@ typedef struct cdl_observer_result {
     size_t excluded_count;
 } cdl_observer_result;
 
-/* A surface map (issue 23): the illuminance on a mapped surface's front
+/* A surface map: the illuminance on a mapped surface's front
  * side at the vertices of a mesh that follows the light
  * (solver/geometry/surface_mesh.h). E_stderr holds, with the value's own
  * error, the rms error of the linear interpolant over the vertex's

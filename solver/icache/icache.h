@@ -90,7 +90,7 @@ void cdl_icache_records_release(cdl_icache_records *records);
 
 /* ---- one cache for a solve: records shared by every target ----------------
  *
- * With surface maps, a solve keeps one cache (issue 23): records placed on
+ * With surface maps, a solve keeps one cache: records placed on
  * the surfaces' meshes serve the grids too, so a floor map and a grid on
  * the floor share their gathers. Each target (the maps' vertices and
  * midpoints, round by round; then each grid) is served in turn, as

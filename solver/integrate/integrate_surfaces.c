@@ -1,6 +1,6 @@
 /* integrate_surfaces.c - the surface maps: every mapped surface's illuminance on a mesh that follows the light.
  *
- * Run once, before the grids (issue 23). The mapped surfaces become patches
+ * Run once, before the grids. The mapped surfaces become patches
  * (surfacemap/surface_patches.h) and are meshed and refined round by round
  * (geometry/surface_mesh.h); the field each round asks for, at the new
  * vertices and at the midpoints of the new edges, is the illuminance a

@@ -1,4 +1,4 @@
-/* surface_output.h - the files of surface maps (issue 23) and their statistics.
+/* surface_output.h - the files of surface maps and their statistics.
  *
  * Per mapped surface NAME (its map_name), in OUTDIR/surfaces/:
  *   NAME.csv      x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_stderr_lx,L_cd_m2

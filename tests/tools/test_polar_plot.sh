@@ -9,7 +9,7 @@
 #  4. a title too long for a line stays inside the page: every glyph of the
 #     figure lies within it;
 #  5. the corpus file with a 247 cd/klm peak and the type B flood peaking
-#     at C 233.8 (issue 24, 25), when ../shared/photometric is there.
+#     at C 233.8, when ../shared/photometric is there.
 # Cairo draws text as glyphs: what the legend says is checked in
 # tests/lights/photometry/test_photometry_plot.c from a PDF.
 source "$(dirname "$0")/harness.sh"

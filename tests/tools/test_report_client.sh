@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The report a client accepts (issue 25): a named office with a project
+# The report a client accepts: a named office with a project
 # block, an array of linear luminaires and an aimed wall washer, a box room
 # with a window (open face), grids asking for Ez, Esz, L and AO, solved at
 # draft quality. report_client_check.py holds the report to the scene,

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Surface maps through the command line (issue 23): a room lit by a spot
+# Surface maps through the command line: a room lit by a spot
 # aimed at its east wall, and a desk with requirements, direct light only
 # (fast, and the light known): the files (surfaces/NAME.csv, NAME.tri.csv,
 # scene.glb) and summary.json's "surfaces" agree; every triangle faces its

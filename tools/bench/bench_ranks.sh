@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# bench_ranks.sh - a solve shared by MPI ranks against one process (issue 27).
+# bench_ranks.sh - a solve shared by MPI ranks against one process.
 #
 #   tools/bench/bench_ranks.sh [SCENE.json] [REPEATS]
 #

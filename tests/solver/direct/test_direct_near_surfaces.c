@@ -1,4 +1,4 @@
-/* Rays that never miss a nearby surface, at every scale (issue 13): 1 km
+/* Rays that never miss a nearby surface, at every scale: 1 km
  * ground planes with walls 1 cm to 0.1 mm from a point, a 1 mm gap between
  * a table and a wall, a scene 1e5 m from the origin, and points exactly on
  * a room's floor-wall corner line. Every expected value is a closed form: a

@@ -1,4 +1,4 @@
-/* Surface maps against light known independently (issue 23):
+/* Surface maps against light known independently:
  *
  *  - a closed cube, reflectance 0.5, a 1000 cd point source at its centre,
  *    every face mapped at "normal" (0.5 %): the floor's and a wall's vertex
