@@ -94,6 +94,33 @@ void cdl_plan_json_daylight_factor(cdl_plan_json *plan, const char *grid, const 
     if (df) cJSON_AddStringToObject(df, grid, words);
 }
 
+/* A goniometric luminaire's body (scene_bodies.h): its shape, reflectance
+ * and the route the exact direct light takes past it. */
+static void describe_body(cJSON *item, const cdl_solve_state *state, const cdl_scene_light *light)
+{
+    if (light->luminaire == SIZE_MAX) return;
+    const cdl_luminaire_spec *sp = &state->scene->luminaires[light->luminaire];
+    if (sp->kind != CDL_LUMINAIRE_GONIOMETRIC) return;
+    if (!light->has_body) {
+        cJSON_AddStringToObject(item, "body", sp->body ? "none: the file gives no luminous opening (a point)"
+                                                       : "none: \"body\": false");
+        return;
+    }
+    const cdl_geometry_piece *piece = cdl_scene_geometry_piece(state->geometry, light->body);
+    char shape[160];
+    cdl_luminaire_body_describe(cdl_scene_geometry_luminaire_body_shape(state->geometry, light->luminaire), shape,
+                                sizeof shape);
+    cJSON *body = cJSON_AddObjectToObject(item, "body");
+    cJSON_AddStringToObject(body, "shape", shape);
+    cJSON_AddNumberToObject(body, "reflectance", piece->reflectance);
+    cJSON_AddStringToObject(body, "own_light", "passes it: the luminaire's light leaves through its opening");
+    cJSON_AddStringToObject(body, "as_occluder",
+                            cdl_geometry_piece_is_curved(piece)
+                                ? "curved: other lights past it are sampled with shadow rays to the target"
+                                : "planar: other lights past it stay exact (shadow rays for points, the visible "
+                                  "polygon for extended lights)");
+}
+
 cdl_status cdl_plan_json_lights(cdl_plan_json *plan, const cdl_solve_state *state, cdl_error *err)
 {
     const cdl_scene_lights *lights = &state->lights;
@@ -118,6 +145,7 @@ cdl_status cdl_plan_json_lights(cdl_plan_json *plan, const cdl_solve_state *stat
             cJSON_AddNumberToObject(item, "near_field_distance_m", lights->lights[l].near_radius);
             cJSON_AddNumberToObject(item, "point_model_error_bound", lights->lights[l].near_model_error);
         }
+        describe_body(item, state, &lights->lights[l]);
         plan->light_grids[l] = cJSON_AddObjectToObject(item, "grids");
         cJSON_AddItemToArray(direct, item);
     }

@@ -45,7 +45,10 @@ static reach light_reaches(const cdl_direct_context *ctx, size_t l, cdl_light_st
         cdl_delta_light d;
         if (!cdl_emitter_eval_delta(light->emitter, p, n, &d) || !(d.E.lx > 0.0)) return REACH_NONE;
         if (st != CDL_STRATEGY_DELTA_SHADOWED || !ctx->geometry) return REACH_LIT;
-        return cdl_scene_geometry_transmission(ctx->geometry, p, d.to_light, d.distance) > 0.0 ? REACH_LIT : REACH_HIDDEN;
+        return cdl_scene_geometry_transmission_except(ctx->geometry, p, d.to_light, d.distance,
+                                                      cdl_scene_light_own_piece(light)) > 0.0
+                   ? REACH_LIT
+                   : REACH_HIDDEN;
     }
     /* Extended: the closed form where the emitter has one (a luminous
      * solid has none); then the visible part as the exact route finds it
@@ -68,7 +71,8 @@ static reach light_reaches(const cdl_direct_context *ctx, size_t l, cdl_light_st
                 !(cdl_vec3_dot(s.to_light, n) > 0.0))
                 continue;
             seen = 1;
-            if (!ctx->geometry || cdl_scene_geometry_transmission(ctx->geometry, p, s.to_light, s.distance) > 0.0)
+            if (!ctx->geometry || cdl_scene_geometry_transmission_except(ctx->geometry, p, s.to_light, s.distance,
+                                                                         cdl_scene_light_own_piece(light)) > 0.0)
                 return REACH_LIT;
         }
     return seen ? REACH_HIDDEN : REACH_NONE;

@@ -55,7 +55,7 @@ static void area_parts(const cdl_solve_state *state, size_t k, cdl_glare_rated *
     size_t id = 0;
     for (size_t i = 0; i < n && !gp; ++i) {
         const cdl_geometry_piece *p = cdl_scene_geometry_piece(state->geometry, i);
-        if (p->is_luminaire && p->source_index == k) gp = p, id = i;
+        if (p->is_luminaire && !p->is_body && p->source_index == k) gp = p, id = i;
     }
     if (!gp) {
         r->reason = no_area;
@@ -124,6 +124,7 @@ static void rate_luminaire(const cdl_solve_state *state, size_t k, cdl_glare_rat
         return;
     }
     r->gonio.photometry = ph;
+    r->owner = cdl_scene_geometry_luminaire_body(state->geometry, k);
     r->gonio.position = r->centre = sp->position;
     cdl_emitter_rotation_columns(sp->rotation_deg, r->gonio.axis);
     r->gonio.scale = emitter_scale(state, k, &r->gonio);

@@ -22,7 +22,8 @@ typedef struct cdl_glare_rated {
     double luminance_cd_m2;        /* area: what its front emits */
     cdl_vec3 centre;               /* where its position index is taken */
     double radius;                 /* a sphere about centre holding its luminous parts */
-    uint32_t owner;                /* area: the geometry piece of its surface; UINT32_MAX */
+    uint32_t owner;                /* area: the geometry piece of its surface; goniometric: its body's;
+                                    * UINT32_MAX for none (the eye sees past neither) */
 } cdl_glare_rated;
 
 /* Plan the observers (after the grids; nothing to do without any): which

@@ -152,7 +152,7 @@ cdl_status cdl_bench_direct_run(const cdl_bench_direct_config *cfg, cdl_bench_di
         double t0 = now_seconds();
         for (size_t i = 0; i < log.count; ++i) {
             const cdl_ray_record *q = &log.rays[i];
-            occluded += (size_t)cdl_ray_scene_occluded(rays, q->origin, q->dir, q->t_near, q->t_far);
+            occluded += (size_t)cdl_ray_scene_occluded_except(rays, q->origin, q->dir, q->t_near, q->t_far, q->exclude);
         }
         r->embree_seconds = fmin(r->embree_seconds, now_seconds() - t0);
         r->embree_rays = log.count;

@@ -97,7 +97,7 @@ void cdl_direct_plan_grid(const cdl_direct_context *ctx, const cdl_vec3 *points,
                 }
             cdl_convex_region box;
             cdl_region_box(&box, lo, hi);
-            may_occlude = cdl_occluder_index_intersects(ctx->occluders, &box, tol, light->owner);
+            may_occlude = cdl_occluder_index_intersects(ctx->occluders, &box, tol, cdl_scene_light_own_piece(light));
         }
         if (delta)
             strategies[l] = may_occlude ? CDL_STRATEGY_DELTA_SHADOWED : CDL_STRATEGY_DELTA_EXACT;
@@ -166,7 +166,8 @@ static double delta_contribution(const cdl_direct_context *ctx, const cdl_scene_
 {
     cdl_delta_light d;
     double E = delta_unshadowed(light, p, n, &d);
-    if (E > 0.0 && st == CDL_STRATEGY_DELTA_SHADOWED) E *= cdl_direct_transmission(ctx, p, n, d.to_light, d.distance, stats);
+    if (E > 0.0 && st == CDL_STRATEGY_DELTA_SHADOWED)
+        E *= cdl_direct_transmission(ctx, p, n, d.to_light, d.distance, cdl_scene_light_own_piece(light), stats);
     return E;
 }
 
@@ -226,7 +227,7 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
             double e = delta_unshadowed(light, p, n, &d);
             if (!(e > 0.0)) continue;
             free_E += e;
-            E += e * cdl_direct_transmission(ctx, p, n, d.to_light, d.distance, stats);
+            E += e * cdl_direct_transmission(ctx, p, n, d.to_light, d.distance, cdl_scene_light_own_piece(light), stats);
             continue;
         }
         if (!cdl_scene_light_applies(light, p)) continue;
@@ -245,7 +246,8 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
             double c = cdl_vec3_dot(n, s.to_light);
             if (c > 0.0) {
                 f = s.L.cd_m2 * c / s.pdf;
-                visible = cdl_direct_transmission(ctx, p, n, s.to_light, s.distance, stats);
+                visible = cdl_direct_transmission(ctx, p, n, s.to_light, s.distance, cdl_scene_light_own_piece(light),
+                                                  stats);
             }
         }
         if (closed) {
@@ -327,6 +329,7 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
                     cdl_ray_offsets_shadow_ray(&ctx->offsets, points[i], normals[i], delta[i].to_light,
                                                delta[i].distance, &r->origin, &r->t_near, &r->t_far)) {
                     r->dir = delta[i].to_light;
+                    r->exclude = cdl_scene_light_own_piece(&ctx->lights[l]);
                     scratch->ray_slot[pending++] = (uint32_t)(i * lights + a);
                 }
             }
@@ -337,11 +340,11 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
     int glass = ctx->geometry && cdl_scene_geometry_has_glass(ctx->geometry);
     for (size_t k = 0; k < pending; ++k) {
         const cdl_ray_record *r = &scratch->rays[k];
-        if (ctx->log) cdl_direct_record_ray(ctx->log, r->origin, r->dir, r->t_near, r->t_far);
+        if (ctx->log) cdl_direct_record_ray(ctx->log, r->origin, r->dir, r->t_near, r->t_far, r->exclude);
         if (glass)
             scratch->contribution[scratch->ray_slot[k]] *=
-                cdl_scene_geometry_transmission(ctx->geometry, r->origin, r->dir, r->t_far);
-        else if (cdl_ray_scene_occluded(ctx->rays, r->origin, r->dir, r->t_near, r->t_far))
+                cdl_scene_geometry_transmission_except(ctx->geometry, r->origin, r->dir, r->t_far, r->exclude);
+        else if (cdl_ray_scene_occluded_except(ctx->rays, r->origin, r->dir, r->t_near, r->t_far, r->exclude))
             scratch->contribution[scratch->ray_slot[k]] = 0.0;
     }
     stats->rays += pending;
@@ -387,7 +390,7 @@ double cdl_direct_ambient_occlusion(const cdl_direct_context *ctx, uint64_t stre
             double u[2];
             cdl_rng_uniform2(key, (uint64_t)(j * k + i), u);
             cdl_vec3 w = cdl_frame_to_world(&frame, cdl_sample_cosine_hemisphere_stratified((int)j, (int)i, (int)k, (int)k, u[0], u[1]));
-            if (!cdl_direct_shadowed(ctx, p, n, w, INFINITY, stats)) open++;
+            if (!cdl_direct_shadowed(ctx, p, n, w, INFINITY, UINT32_MAX, stats)) open++;
         }
     double N = (double)(k * k);
     /* The stated error: the spread of the open fraction given `open` of N

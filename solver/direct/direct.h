@@ -57,6 +57,7 @@ const char *cdl_light_strategy_describe(cdl_light_strategy strategy, const cdl_s
 typedef struct cdl_ray_record {
     cdl_vec3 origin, dir;
     double t_near, t_far;
+    uint32_t exclude;                 /* the light's own piece, which the ray passes (CDL_RAY_EXCLUDE_NONE) */
 } cdl_ray_record;
 
 typedef struct cdl_ray_log {
@@ -169,8 +170,8 @@ cdl_status cdl_direct_stats_share(cdl_rank_group *group, cdl_direct_sample_stats
  * cut by p's plane of normal n - clear of every surface but those of
  * geometry piece `owner` (UINT32_MAX: none excluded)? 1 when it is, or when
  * the scene has no geometry. And is the segment from p along unit `dir`
- * over `distance` blocked (the shadow ray direct light casts)? Both
- * thread-safe. */
+ * over `distance` blocked by anything but piece `owner` (the shadow ray
+ * direct light casts)? Both thread-safe. */
 int cdl_direct_sphere_in_view(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 center, double radius,
                               uint32_t owner);
 /* The same for the pyramid from p to a convex planar polygon of up to
@@ -178,7 +179,8 @@ int cdl_direct_sphere_in_view(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec
  * crosses). */
 int cdl_direct_polygon_in_view(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, const cdl_vec3 *polygon,
                                int count, uint32_t owner);
-int cdl_direct_ray_blocked(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance);
+int cdl_direct_ray_blocked(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                           uint32_t owner);
 
 /* What a light's tally says, for the plan: "exact: visible polygon past up
  * to 3 occluders at 192 points", "sampled at 40 points: more than 64

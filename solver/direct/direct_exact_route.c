@@ -365,11 +365,12 @@ static cdl_direct_route exact_route(const cdl_direct_context *ctx, const cdl_sce
     cdl_occluder_triangle occ[CDL_EXACT_ROUTE_MAX_OCCLUDERS];
     size_t count = 0;
     cdl_occluder_list_status ls =
-        cdl_occluder_index_list(ctx->occluders, &region, tol, light->owner, occ, CDL_EXACT_ROUTE_MAX_OCCLUDERS, &count);
+        cdl_occluder_index_list(ctx->occluders, &region, tol, cdl_scene_light_own_piece(light), occ,
+                                CDL_EXACT_ROUTE_MAX_OCCLUDERS, &count);
     if (ls == CDL_OCCLUDERS_SPHERE) return CDL_ROUTE_CURVED_OCCLUDER;
     if (ls == CDL_OCCLUDERS_TOO_MANY) return CDL_ROUTE_TOO_MANY;
     for (size_t i = 0; i < count; ++i)
-        if (cdl_scene_geometry_piece(ctx->geometry, occ[i].owner)->shape.kind == CDL_SHAPE_DISK)
+        if (cdl_geometry_piece_is_curved(cdl_scene_geometry_piece(ctx->geometry, occ[i].owner)))
             return CDL_ROUTE_CURVED_OCCLUDER;
     /* a pane passes part of the light, by angle: no polygon is exact */
     for (size_t i = 0; i < count; ++i)
@@ -411,7 +412,7 @@ static cdl_direct_route visible_sky(const cdl_direct_context *ctx, cdl_vec3 p, c
     size_t kept = 0;
     for (size_t i = 0; i < count; ++i) {
         const cdl_geometry_piece *g = cdl_scene_geometry_piece(ctx->geometry, occ[i].owner);
-        if (g->shape.kind == CDL_SHAPE_DISK) return CDL_ROUTE_CURVED_OCCLUDER;
+        if (cdl_geometry_piece_is_curved(g)) return CDL_ROUTE_CURVED_OCCLUDER;
         if (g->transmittance > 0.0) {
             if (!glass_clear) return CDL_ROUTE_GLASS;
             *glass_seen = 1;

@@ -191,7 +191,7 @@ static double stratum_sample(const cdl_direct_context *ctx, term *t, const doubl
     double value = ls.L.cd_m2 * c / ls.pdf;
     *unoccluded = value;
     /* V: 1 seen, 0 hidden, between through glass */
-    double V = cdl_direct_transmission(ctx, p, n, ls.to_light, ls.distance, stats);
+    double V = cdl_direct_transmission(ctx, p, n, ls.to_light, ls.distance, cdl_scene_light_own_piece(t->light), stats);
     return t->mode == TERM_HIDDEN ? value * (1.0 - V) : value * V;
 }
 

@@ -14,19 +14,21 @@
 double cdl_direct_region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p);
 
 /* Append a shadow ray to a benchmark's log. */
-void cdl_direct_record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_near, double t_far);
+void cdl_direct_record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_near, double t_far, uint32_t exclude);
 
 /* The fraction of light that reaches p (normal n) along -dir from
  * `distance` away: 1 or 0 without glass (the segment clear or blocked),
  * the product of the panes' transmittances at their angles with it
- * (scene_geometry.h). Counts the ray in stats. */
+ * (scene_geometry.h). `exclude`: the light's own piece, which never blocks
+ * its light (cdl_scene_light_own_piece; UINT32_MAX: none). Counts the ray
+ * in stats. */
 double cdl_direct_transmission(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
-                               cdl_direct_sample_stats *stats);
+                               uint32_t exclude, cdl_direct_sample_stats *stats);
 
 /* Is the segment from p (normal n) along unit dir over `distance` blocked
- * (by anything, glass included)? Counts the ray in stats. */
+ * (by anything but piece `exclude`, glass included)? Counts the ray in stats. */
 int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
-                        cdl_direct_sample_stats *stats);
+                        uint32_t exclude, cdl_direct_sample_stats *stats);
 
 /* The region between p (normal n) and the whole of the light, as the
  * occluder index is asked about it with tolerance *tol: the half-space

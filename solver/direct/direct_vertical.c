@@ -70,8 +70,10 @@ void cdl_direct_vertical_point(const cdl_direct_context *ctx, const cdl_light_st
         if (!(cdl_vec3_dot(d.to_light, d.to_light) > 0.5)) continue;
         if (on_surface && !(cdl_vec3_dot(d.to_light, n) > 0.0)) continue;
         if (!cdl_emitter_eval_delta(e, p, d.to_light, &d) || !(d.E.lx > 0.0)) continue;
-        double T = st == CDL_STRATEGY_DELTA_SHADOWED ? cdl_direct_transmission(ctx, p, n, d.to_light, d.distance, stats)
-                                                     : 1.0;
+        double T = st == CDL_STRATEGY_DELTA_SHADOWED
+                       ? cdl_direct_transmission(ctx, p, n, d.to_light, d.distance,
+                                                 cdl_scene_light_own_piece(&ctx->lights[l]), stats)
+                       : 1.0;
         if (!(T > 0.0)) continue;
         double ez, esz;
         cdl_vertical_illuminance_from_light(d.E.lx * T, d.to_light, facing, &ez, &esz);

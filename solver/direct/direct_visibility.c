@@ -18,7 +18,7 @@ double cdl_direct_region_tolerance(const cdl_direct_context *ctx, cdl_vec3 p)
     return 10.0 * cdl_ray_offsets_epsilon(&ctx->offsets, p);
 }
 
-void cdl_direct_record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_near, double t_far)
+void cdl_direct_record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_near, double t_far, uint32_t exclude)
 {
     if (log->count == log->capacity) {
         size_t cap = log->capacity ? 2 * log->capacity : 4096;
@@ -30,34 +30,35 @@ void cdl_direct_record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_
         log->rays = r;
         log->capacity = cap;
     }
-    cdl_ray_record rec = {o, dir, t_near, t_far};
+    cdl_ray_record rec = {o, dir, t_near, t_far, exclude};
     log->rays[log->count++] = rec;
 }
 
 /* Is the segment from p towards the light blocked? The surface p lies on
  * and the one the light's sample lies on never count (scene_geometry.h). */
 int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
-                    cdl_direct_sample_stats *stats)
+                        uint32_t exclude, cdl_direct_sample_stats *stats)
 {
     cdl_vec3 o;
     double t_near, t_far;
     if (!cdl_ray_offsets_shadow_ray(&ctx->offsets, p, n, dir, distance, &o, &t_near, &t_far)) return 0;
     stats->rays++;
-    if (ctx->log) cdl_direct_record_ray(ctx->log, o, dir, t_near, t_far);
-    return cdl_ray_scene_occluded(ctx->rays, o, dir, t_near, t_far);
+    if (ctx->log) cdl_direct_record_ray(ctx->log, o, dir, t_near, t_far, exclude);
+    return cdl_ray_scene_occluded_except(ctx->rays, o, dir, t_near, t_far, exclude);
 }
 
 double cdl_direct_transmission(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
-                               cdl_direct_sample_stats *stats)
+                               uint32_t exclude, cdl_direct_sample_stats *stats)
 {
     if (!ctx->geometry) return 1.0;
-    if (!cdl_scene_geometry_has_glass(ctx->geometry)) return cdl_direct_shadowed(ctx, p, n, dir, distance, stats) ? 0.0 : 1.0;
+    if (!cdl_scene_geometry_has_glass(ctx->geometry))
+        return cdl_direct_shadowed(ctx, p, n, dir, distance, exclude, stats) ? 0.0 : 1.0;
     cdl_vec3 o;
     double t_near, t_far;
     if (!cdl_ray_offsets_shadow_ray(&ctx->offsets, p, n, dir, distance, &o, &t_near, &t_far)) return 1.0;
     stats->rays++;
-    if (ctx->log) cdl_direct_record_ray(ctx->log, o, dir, t_near, t_far);
-    return cdl_scene_geometry_transmission(ctx->geometry, o, dir, t_far);
+    if (ctx->log) cdl_direct_record_ray(ctx->log, o, dir, t_near, t_far, exclude);
+    return cdl_scene_geometry_transmission_except(ctx->geometry, o, dir, t_far, exclude);
 }
 
 /* Move planes first .. first + count - 1 of a region outward by tol, so
@@ -116,7 +117,7 @@ int cdl_direct_light_fully_visible(const cdl_direct_context *ctx, const cdl_scen
     cdl_convex_region region;
     double tol;
     if (!cdl_direct_light_region(ctx, light, p, n, &region, &tol)) return 0;
-    return !cdl_occluder_index_intersects(ctx->occluders, &region, tol, light->owner);
+    return !cdl_occluder_index_intersects(ctx->occluders, &region, tol, cdl_scene_light_own_piece(light));
 }
 
 int cdl_direct_sphere_in_view(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 center, double radius,
@@ -149,10 +150,11 @@ int cdl_direct_polygon_in_view(const cdl_direct_context *ctx, cdl_vec3 p, cdl_ve
     return cdl_direct_light_fully_visible(ctx, &flat, p, n);
 }
 
-int cdl_direct_ray_blocked(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance)
+int cdl_direct_ray_blocked(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                           uint32_t owner)
 {
     if (!ctx->geometry) return 0;
     cdl_direct_sample_stats stats;
     memset(&stats, 0, sizeof stats);
-    return cdl_direct_shadowed(ctx, p, n, dir, distance, &stats);
+    return cdl_direct_shadowed(ctx, p, n, dir, distance, owner, &stats);
 }

@@ -168,6 +168,7 @@ typedef struct double_query {
     int want_t;                         /* intersect: every hit's t in double */
     double best_t;                      /* closest accepted hit (intersect) */
     uint32_t best_geom, best_prim;
+    uint32_t exclude;                   /* a geometry that never counts (CDL_RAY_EXCLUDE_NONE: none) */
 } double_query;
 
 static double max_abs3(cdl_vec3 v)
@@ -270,6 +271,11 @@ static void filter_double(const struct RTCFilterFunctionNArguments *args)
         if (args->valid[i] != -1) continue;
         const float *h = (const float *)args->hit;
         uint32_t prim = ((const unsigned *)args->hit)[5 * args->N + i];
+        /* RTCHitN's geomID is the 7th field */
+        if (((const unsigned *)args->hit)[6 * args->N + i] == q->exclude) {
+            args->valid[i] = 0;
+            continue;
+        }
         if (!q->want_t && !g->is_sphere) {
             /* Clear of both ends: Embree's own answer stands. The hit is
              * 2 margins along the normal from where the ray starts and ends
@@ -384,6 +390,7 @@ static void start_query(double_query *q, struct RTCRay *ray, const cdl_ray_scene
     q->end = q->has_end ? cdl_vec3_madd(origin, t_far, dir) : origin;
     q->best_t = INFINITY;
     q->best_geom = q->best_prim = RTC_INVALID_GEOMETRY_ID;
+    q->exclude = CDL_RAY_EXCLUDE_NONE;
     double margin = FLOAT_MARGIN_ULPS * cdl_ray_scene_resolution(s, origin);
     if (q->has_end) margin = fmax(margin, FLOAT_MARGIN_ULPS * cdl_ray_scene_resolution(s, q->end));
     double dir_len = cdl_vec3_length(dir);
@@ -410,10 +417,17 @@ static void start_query(double_query *q, struct RTCRay *ray, const cdl_ray_scene
 
 int cdl_ray_scene_occluded(const cdl_ray_scene *s, cdl_vec3 origin, cdl_vec3 dir, double t_near, double t_far)
 {
+    return cdl_ray_scene_occluded_except(s, origin, dir, t_near, t_far, CDL_RAY_EXCLUDE_NONE);
+}
+
+int cdl_ray_scene_occluded_except(const cdl_ray_scene *s, cdl_vec3 origin, cdl_vec3 dir, double t_near, double t_far,
+                                  uint32_t exclude)
+{
     if (!s->geometry_count || !(t_far > t_near)) return 0;
     double_query q;
     struct RTCRay ray;
     start_query(&q, &ray, s, origin, dir, t_near, t_far);
+    q.exclude = exclude;
     rtcOccluded1(s->scene, &q.context, &ray);
     return ray.tfar == -INFINITY;
 }
@@ -421,11 +435,18 @@ int cdl_ray_scene_occluded(const cdl_ray_scene *s, cdl_vec3 origin, cdl_vec3 dir
 int cdl_ray_scene_intersect(const cdl_ray_scene *s, cdl_vec3 origin, cdl_vec3 dir, double t_near, double t_far,
                             cdl_ray_hit *hit)
 {
+    return cdl_ray_scene_intersect_except(s, origin, dir, t_near, t_far, CDL_RAY_EXCLUDE_NONE, hit);
+}
+
+int cdl_ray_scene_intersect_except(const cdl_ray_scene *s, cdl_vec3 origin, cdl_vec3 dir, double t_near,
+                                   double t_far, uint32_t exclude, cdl_ray_hit *hit)
+{
     if (!s->geometry_count || !(t_far > t_near)) return 0;
     double_query q;
     struct RTCRayHit rh;
     start_query(&q, &rh.ray, s, origin, dir, t_near, t_far);
     q.want_t = 1;
+    q.exclude = exclude;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(s->scene, &q.context, &rh);

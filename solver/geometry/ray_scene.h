@@ -47,11 +47,20 @@ cdl_status cdl_ray_scene_commit(cdl_ray_scene *scene, cdl_error *err);
  * on a surface, or to a point on one, need no offset. */
 int cdl_ray_scene_occluded(const cdl_ray_scene *scene, cdl_vec3 origin, cdl_vec3 dir, double t_near, double t_far);
 
+/* The same, with the geometry `exclude` (an id from the add calls) left
+ * out: a luminaire's shadow rays pass its own body. CDL_RAY_EXCLUDE_NONE
+ * leaves out nothing. */
+#define CDL_RAY_EXCLUDE_NONE UINT32_MAX
+int cdl_ray_scene_occluded_except(const cdl_ray_scene *scene, cdl_vec3 origin, cdl_vec3 dir, double t_near,
+                                  double t_far, uint32_t exclude);
+
 /* Closest hit with t in (t_near, t_far), by the same double test; returns 1
  * and fills *hit (t, normal and barycentrics in double), else 0. dir must be
  * unit length. */
 int cdl_ray_scene_intersect(const cdl_ray_scene *scene, cdl_vec3 origin, cdl_vec3 dir, double t_near, double t_far,
                             cdl_ray_hit *hit);
+int cdl_ray_scene_intersect_except(const cdl_ray_scene *scene, cdl_vec3 origin, cdl_vec3 dir, double t_near,
+                                   double t_far, uint32_t exclude, cdl_ray_hit *hit);
 
 /* Embree's float resolution near p (after commit): one single-precision ulp
  * of the largest local coordinate a query near p involves. Closer than a

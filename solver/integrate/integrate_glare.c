@@ -90,7 +90,8 @@ static int visible_fraction(const cdl_solve_state *state, const cdl_glare_rated 
         if (!cdl_glare_parts_sample(parts, omega, total, eye, u, &q, &w)) continue;
         cdl_vec3 d = cdl_vec3_sub(q, eye);
         double dist = cdl_vec3_length(d);
-        double v = cdl_direct_ray_blocked(&state->direct, eye, n, cdl_vec3_scale(d, 1.0 / dist), dist) ? 0.0 : 1.0;
+        double v = cdl_direct_ray_blocked(&state->direct, eye, n, cdl_vec3_scale(d, 1.0 / dist), dist, r->owner) ? 0.0
+                                                                                                               : 1.0;
         ++*rays;
         sw += w, swv += w * v, sww += w * w, swwv += w * w * v, swwvv += w * w * v * v, seen += v;
         if (count >= want && !(sw > 0.0)) {

@@ -30,6 +30,7 @@
 #include "radiometry/constants.h"
 #include "radiometry/frame.h"
 #include "solver/geometry/polygon.h"
+#include "solver/scene/scene_bodies.h"
 
 #define DISK_SEGMENTS CDL_DISK_SEGMENTS
 
@@ -51,6 +52,8 @@ struct cdl_scene_geometry {
     cdl_bounds3 bounds;
     double extent;
     int glass;                 /* 1: some piece is a pane of glass */
+    uint32_t *luminaire_body;  /* per luminaire of the scene: its body piece, UINT32_MAX for none */
+    cdl_luminaire_body *body_shape; /* per luminaire: its body as the file describes it */
 };
 
 /* ---- building ---------------------------------------------------------------- */
@@ -227,8 +230,8 @@ static cdl_status add_disk(cdl_scene_geometry *g, cdl_geometry_piece *tmpl, cdl_
     return add_triangles(g, tmpl, xyz, DISK_SEGMENTS + 1, tri, DISK_SEGMENTS, err);
 }
 
-static cdl_status add_sphere(cdl_scene_geometry *g, cdl_geometry_piece *tmpl, const cdl_surface_spec *s,
-                             cdl_error *err)
+static cdl_status add_sphere(cdl_scene_geometry *g, cdl_geometry_piece *tmpl, cdl_vec3 center, double radius,
+                             int inward, cdl_error *err)
 {
     if (g->piece_count == g->piece_capacity) {
         size_t cap = g->piece_capacity ? 2 * g->piece_capacity : 16;
@@ -238,20 +241,20 @@ static cdl_status add_sphere(cdl_scene_geometry *g, cdl_geometry_piece *tmpl, co
         g->piece_capacity = cap;
     }
     uint32_t id = 0;
-    cdl_status st = cdl_ray_scene_add_sphere(g->rays, s->center, s->radius, &id, err);
+    cdl_status st = cdl_ray_scene_add_sphere(g->rays, center, radius, &id, err);
     if (st != CDL_OK) return st;
     piece_data *pd = &g->pieces[g->piece_count++];
     memset(pd, 0, sizeof *pd);
     pd->piece = *tmpl;
     pd->piece.shape.kind = CDL_SHAPE_SPHERE;
-    pd->piece.shape.center = s->center;
-    pd->piece.shape.radius = s->radius;
-    pd->piece.shape.inward = s->inward;
+    pd->piece.shape.center = center;
+    pd->piece.shape.radius = radius;
+    pd->piece.shape.inward = inward;
     pd->piece.triangle_count = 0;
-    pd->piece.area = 4.0 * CDL_PI * s->radius * s->radius;
-    cdl_vec3 r = cdl_vec3_make(s->radius, s->radius, s->radius);
-    cdl_bounds3_grow(&g->bounds, cdl_vec3_sub(s->center, r));
-    cdl_bounds3_grow(&g->bounds, cdl_vec3_add(s->center, r));
+    pd->piece.area = 4.0 * CDL_PI * radius * radius;
+    cdl_vec3 r = cdl_vec3_make(radius, radius, radius);
+    cdl_bounds3_grow(&g->bounds, cdl_vec3_sub(center, r));
+    cdl_bounds3_grow(&g->bounds, cdl_vec3_add(center, r));
     return CDL_OK;
 }
 
@@ -330,7 +333,7 @@ static cdl_status add_surface(cdl_scene_geometry *g, const cdl_surface_spec *s, 
     case CDL_SURFACE_POLYGON: return add_polygon(g, tmpl, s, err);
     case CDL_SURFACE_BOX: return add_box(g, s, tmpl, err);
     case CDL_SURFACE_DISK: return add_disk(g, tmpl, s->center, s->normal, s->radius, err);
-    case CDL_SURFACE_SPHERE: return add_sphere(g, tmpl, s, err);
+    case CDL_SURFACE_SPHERE: return add_sphere(g, tmpl, s->center, s->radius, s->inward, err);
     case CDL_SURFACE_MESH: return add_mesh(g, tmpl, s, err);
     }
     return cdl_error_set(err, CDL_ERR_INTERNAL, "unknown surface kind %d", (int)s->kind);
@@ -344,6 +347,50 @@ static cdl_status check_areas(const cdl_scene_geometry *g, size_t first, cdl_err
         double a = g->pieces[i].piece.area;
         if (!(a > 0.0) || !isfinite(a))
             return cdl_error_set(err, CDL_ERR_INPUT, "expected a surface of non-zero, finite area, found %g m^2", a);
+    }
+    return CDL_OK;
+}
+
+/* One piece per luminaire body (scene_bodies.h), after every other piece. */
+static cdl_status add_bodies(cdl_scene_geometry *g, const cdl_scene *scene, cdl_error *err)
+{
+    size_t n = scene->luminaire_count;
+    g->luminaire_body = malloc((n + 1) * sizeof *g->luminaire_body);
+    g->body_shape = calloc(n + 1, sizeof *g->body_shape);
+    if (!g->luminaire_body || !g->body_shape) return cdl_error_out_of_memory(err);
+    cdl_body_cache cache;
+    memset(&cache, 0, sizeof cache);
+    for (size_t k = 0; k < n; ++k) {
+        g->luminaire_body[k] = UINT32_MAX;
+        const cdl_luminaire_spec *l = &scene->luminaires[k];
+        double reflectance = 0.0;
+        cdl_status st = cdl_scene_body_of(scene, k, &cache, &g->body_shape[k], &reflectance, err);
+        if (st != CDL_OK) return st;
+        if (g->body_shape[k].kind == CDL_BODY_NONE) continue;
+        cdl_body_mesh mesh;
+        st = cdl_scene_body_mesh(&g->body_shape[k], l->position, l->rotation_deg, &mesh, err);
+        if (st != CDL_OK) return st;
+        cdl_geometry_piece tmpl;
+        memset(&tmpl, 0, sizeof tmpl);
+        tmpl.is_luminaire = 1;
+        tmpl.is_body = 1;
+        tmpl.source_index = k;
+        tmpl.box_face = -1;
+        tmpl.reflectance = reflectance;
+        tmpl.curved = mesh.curved;
+        tmpl.shape.kind = CDL_SHAPE_TRIANGLES;
+        uint32_t id = (uint32_t)g->piece_count;
+        if (mesh.is_sphere) {
+            st = add_sphere(g, &tmpl, mesh.center, mesh.radius, 0, err);
+        } else {
+            /* a flat body reflects on its front alone; a solid's inside is never seen */
+            st = add_triangles(g, &tmpl, mesh.xyz, mesh.vertex_count, mesh.triangles, mesh.triangle_count, err);
+            mesh.xyz = NULL; /* the geometry owns them now (freed there on failure) */
+            mesh.triangles = NULL;
+        }
+        cdl_body_mesh_release(&mesh);
+        if (st != CDL_OK) return cdl_error_prefix(err, "%s: %s.body: ", scene->path ? scene->path : "scene", l->json_path);
+        g->luminaire_body[k] = id;
     }
     return CDL_OK;
 }
@@ -406,6 +453,7 @@ cdl_status cdl_scene_geometry_build(const cdl_scene *scene, cdl_scene_geometry *
             break;
         }
     }
+    if (st == CDL_OK) st = add_bodies(g, scene, err);
     if (st == CDL_OK) st = cdl_ray_scene_commit(g->rays, err);
     if (st != CDL_OK) {
         cdl_scene_geometry_release(g);
@@ -425,6 +473,8 @@ void cdl_scene_geometry_release(cdl_scene_geometry *g)
         free(g->pieces[i].triangles);
     }
     free(g->pieces);
+    free(g->luminaire_body);
+    free(g->body_shape);
     cdl_ray_scene_release(g->rays);
     free(g);
 }
@@ -439,6 +489,17 @@ const cdl_ray_scene *cdl_scene_geometry_rays(const cdl_scene_geometry *g)
 size_t cdl_scene_geometry_piece_count(const cdl_scene_geometry *g)
 {
     return g->piece_count;
+}
+
+uint32_t cdl_scene_geometry_luminaire_body(const cdl_scene_geometry *g, size_t k)
+{
+    return g->luminaire_body ? g->luminaire_body[k] : UINT32_MAX;
+}
+
+const cdl_luminaire_body *cdl_scene_geometry_luminaire_body_shape(const cdl_scene_geometry *g, size_t k)
+{
+    static const cdl_luminaire_body none = {.kind = CDL_BODY_NONE, .flat_axis = -1};
+    return g->body_shape ? &g->body_shape[k] : &none;
 }
 
 const cdl_geometry_piece *cdl_scene_geometry_piece(const cdl_scene_geometry *g, size_t geom_id)
@@ -537,13 +598,19 @@ int cdl_scene_geometry_has_glass(const cdl_scene_geometry *g)
 
 double cdl_scene_geometry_transmission(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 dir, double distance)
 {
+    return cdl_scene_geometry_transmission_except(g, p, dir, distance, UINT32_MAX);
+}
+
+double cdl_scene_geometry_transmission_except(const cdl_scene_geometry *g, cdl_vec3 p, cdl_vec3 dir, double distance,
+                                              uint32_t exclude)
+{
     if (!(distance > 0.0)) return 1.0;
-    if (!g->glass) return cdl_ray_scene_occluded(g->rays, p, dir, 0.0, distance) ? 0.0 : 1.0;
+    if (!g->glass) return cdl_ray_scene_occluded_except(g->rays, p, dir, 0.0, distance, exclude) ? 0.0 : 1.0;
     double T = 1.0, left = distance;
     cdl_vec3 origin = p;
     for (int panes = 0; panes <= CDL_GLASS_MAX_PANES; ++panes) {
         cdl_ray_hit hit;
-        if (!cdl_ray_scene_intersect(g->rays, origin, dir, 0.0, left, &hit)) return T;
+        if (!cdl_ray_scene_intersect_except(g->rays, origin, dir, 0.0, left, exclude, &hit)) return T;
         const cdl_geometry_piece *piece = &g->pieces[hit.geom_id].piece;
         if (!(piece->transmittance > 0.0) || panes == CDL_GLASS_MAX_PANES) return 0.0;
         /* through the pane at its angle of incidence; on from its far side

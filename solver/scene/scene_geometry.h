@@ -18,6 +18,7 @@
 #include "lights/emitters/emitter.h"
 #include "base/error.h"
 #include "radiometry/glass.h"
+#include "lights/photometry/luminaire_body.h"
 #include "solver/geometry/ray_scene.h"
 #include "solver/scene/scene_internal.h"
 
@@ -40,7 +41,18 @@ typedef struct cdl_geometry_piece {
     double area;                         /* m^2 */
     double transmittance;                /* > 0: a pane of glass (its normal transmittance); 0: opaque */
     cdl_glass glass;                     /* the pane, when transmittance > 0 */
+    int is_body;                         /* the body of luminaire source_index (scene_bodies.h); is_luminaire 1 */
+    int curved;                          /* triangles standing in for a curved surface (a body's cylinder, disk
+                                          * or ellipsoid): no exact route past it */
 } cdl_geometry_piece;
+
+/* Does a piece stand for a curved surface, which the exact routes leave to
+ * sampling (a disk, or a curved body)? Spheres the occluder index reports
+ * apart. */
+static inline int cdl_geometry_piece_is_curved(const cdl_geometry_piece *piece)
+{
+    return piece->shape.kind == CDL_SHAPE_DISK || piece->curved;
+}
 
 /* Fan segments of a disk: the sagitta of each chord, r (1 - cos(pi / N)),
  * must stay below 1e-4 r; N = 224 gives 9.8e-5 r (N >= 223 is needed), a
@@ -61,6 +73,14 @@ void cdl_scene_geometry_release(cdl_scene_geometry *geometry);
 
 const cdl_ray_scene *cdl_scene_geometry_rays(const cdl_scene_geometry *geometry);
 size_t cdl_scene_geometry_piece_count(const cdl_scene_geometry *geometry);
+/* The body piece of luminaire k of the scene (scene_bodies.h), UINT32_MAX
+ * when it has none. */
+uint32_t cdl_scene_geometry_luminaire_body(const cdl_scene_geometry *geometry, size_t k);
+
+/* The body of luminaire k as its file describes it (kind CDL_BODY_NONE when
+ * it has none), for the plan. */
+const cdl_luminaire_body *cdl_scene_geometry_luminaire_body_shape(const cdl_scene_geometry *geometry, size_t k);
+
 /* Piece for a ray-scene geom id (as reported in cdl_ray_hit). */
 const cdl_geometry_piece *cdl_scene_geometry_piece(const cdl_scene_geometry *geometry, size_t geom_id);
 size_t cdl_scene_geometry_triangle_count(const cdl_scene_geometry *geometry);
@@ -155,5 +175,11 @@ int cdl_scene_geometry_has_glass(const cdl_scene_geometry *geometry);
  * blocked. */
 #define CDL_GLASS_MAX_PANES 64
 double cdl_scene_geometry_transmission(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 dir, double distance);
+
+/* The same towards a light, past the light's own piece `exclude` (its
+ * emitting surface or its body: cdl_scene_light_own_piece; UINT32_MAX:
+ * none), which never blocks its own light. */
+double cdl_scene_geometry_transmission_except(const cdl_scene_geometry *geometry, cdl_vec3 p, cdl_vec3 dir,
+                                              double distance, uint32_t exclude);
 
 #endif

@@ -87,6 +87,9 @@ static cdl_status hash_luminaire(cdl_content_hash *h, const cdl_scene *scene, co
     for (int k = 0; k < 3; ++k) cdl_content_hash_f64(h, l->rotation_deg[k]);
     cdl_content_hash_f64(h, l->multiplier);
     cdl_content_hash_u64(h, (uint64_t)l->near_field);
+    cdl_content_hash_u64(h, (uint64_t)l->body);
+    cdl_content_hash_u64(h, (uint64_t)l->has_body_reflectance);
+    cdl_content_hash_f64(h, l->body_reflectance);
     cdl_content_hash_f64(h, l->maintenance_factor);
     hash_shape(h, &l->shape);
     cdl_content_hash_u64(h, (uint64_t)l->has_luminance);

@@ -176,6 +176,11 @@ typedef struct cdl_luminaire_spec {
     double rotation_deg[3];
     double multiplier;                   /* default 1 */
     cdl_near_field_mode near_field;      /* spread over the file's luminous opening: default AUTO */
+    /* "body": the solid the luminaire occupies (lights/photometry/luminaire_body.h) blocks every other
+     * light and reflects: 1 (the default, or true, or an object), 0 with "body": false */
+    int body;
+    int has_body_reflectance;            /* "body": {"reflectance": R} given */
+    double body_reflectance;             /* [0, 1]; unset: 0.5 for a housing, 0 for an opening alone */
     /* all: default 1 */
     double maintenance_factor;
     /* area: a surface-like shape (rect, disk, polygon or mesh, same keys as

@@ -234,7 +234,7 @@ static size_t find_luminaire_piece(const cdl_scene_geometry *g, size_t k)
     size_t n = cdl_scene_geometry_piece_count(g);
     for (size_t i = 0; i < n; ++i) {
         const cdl_geometry_piece *p = cdl_scene_geometry_piece(g, i);
-        if (p->is_luminaire && p->source_index == k) return i;
+        if (p->is_luminaire && !p->is_body && p->source_index == k) return i;
     }
     return SIZE_MAX;
 }
@@ -404,6 +404,8 @@ static cdl_status build_luminaire(const cdl_scene *scene, const cdl_scene_geomet
     memset(&proto, 0, sizeof proto);
     cdl_luminaire_spec_label(sp, proto.label, sizeof proto.label);
     proto.owner = UINT32_MAX;
+    proto.body = geometry ? cdl_scene_geometry_luminaire_body(geometry, k) : UINT32_MAX;
+    proto.has_body = proto.body != UINT32_MAX;
     proto.luminaire = k;
     double mf = sp->maintenance_factor;
     cdl_emitter *e = NULL;

@@ -31,6 +31,8 @@ typedef struct cdl_scene_light {
     char label[160];                  /* "luminaires[3]" or "surfaces[2]" (+ face) for the plan */
     size_t luminaire;                 /* its index in scene->luminaires; SIZE_MAX for an emitting surface */
     uint32_t owner;                   /* geometry piece id of its own surface, UINT32_MAX if none */
+    int has_body;                     /* its luminaire has a body (scene_bodies.h): piece `body` */
+    uint32_t body;                    /* geometry piece id of that body */
     int has_closed_form;              /* area or environment (uniform, overcast or image) */
     int is_environment;
     int is_image;                     /* environment: a lat-long image (not one luminance everywhere) */
@@ -74,6 +76,15 @@ typedef struct cdl_scene_light {
                                        * its sun: scene_sky.h), for the plan; owned like the outline */
     int near_field_unspread;          /* near_field "always" on a file whose opening is not spread: a point */
 } cdl_scene_light;
+
+/* The piece a light's own shadow rays and occluder tests pass through:
+ * its own surface (an area emitter, whose samples lie on it) or its body
+ * (a luminaire's light leaves through its opening, never blocked by its
+ * own housing); UINT32_MAX when it has neither. */
+static inline uint32_t cdl_scene_light_own_piece(const cdl_scene_light *light)
+{
+    return light->owner != UINT32_MAX ? light->owner : light->has_body ? light->body : UINT32_MAX;
+}
 
 /* Does the light reach p at all as far as its near-field split goes? */
 static inline int cdl_scene_light_applies(const cdl_scene_light *light, cdl_vec3 p)

@@ -11,7 +11,8 @@
  *                [0, half_angle] (default half_angle), or exponent >= 0
  *   goniometric  file, position; rotation (default [0, 0, 0]), near_field
  *                ("auto", "always" or "never"; default "auto"), multiplier
- *                (>= 0, default 1), flux_lm (> 0, optional rescale)
+ *                (>= 0, default 1), flux_lm (> 0, optional rescale), body
+ *                (true, the default; false; or {"reflectance": R in [0, 1]})
  *   area         shape (rect, disk, polygon, mesh); exactly one of
  *                luminance_cd_m2, flux_lm (>= 0); reflectance (default 0)
  *   directional  direction, illuminance_lx (>= 0), angular_diameter_deg
@@ -135,7 +136,7 @@ static const char *const luminaire_keys[][LUMINAIRE_KEYS_MAX] = {
     {"type", "name", "position", "positions", "array", "direction", "aim", "spin", "intensity_cd", "flux_lm",
      "half_angle", "falloff_start", "exponent", "maintenance_factor", NULL},
     {"type", "name", "file", "position", "positions", "array", "rotation", "aim", "spin", "multiplier", "flux_lm",
-     "maintenance_factor", "near_field", NULL},
+     "maintenance_factor", "near_field", "body", NULL},
     {"type", "name", "shape", "luminance_cd_m2", "flux_lm", "reflectance", "maintenance_factor", NULL},
     {"type", "name", "direction", "illuminance_lx", "angular_diameter_deg", "maintenance_factor", NULL},
     {"type", "name", "luminance_cd_m2", "file", "scale", "up", "hemisphere", "maintenance_factor", "sky",
@@ -265,6 +266,24 @@ static cdl_status read_environment(const cdl_scene_parse *ctx, const cJSON *node
     return CDL_OK;
 }
 
+/* "body": true or false, or {"reflectance": R} (a body with that reflectance). */
+static cdl_status read_body(const cdl_scene_parse *ctx, const cJSON *node, const char *path, cdl_luminaire_spec *out)
+{
+    char p[CDL_SCENE_PATH_MAX];
+    const cJSON *body = field(node, path, "body", p);
+    out->body = 1;
+    if (!body) return CDL_OK;
+    if (cJSON_IsBool(body)) return cdl_scene_json_read_bool(ctx, body, p, 1, &out->body);
+    if (!cJSON_IsObject(body))
+        return cdl_scene_json_fail(ctx, p, "true, false or an object {\"reflectance\": R}", body);
+    static const char *const body_keys[] = {"reflectance", NULL};
+    if (cdl_scene_json_check_object(ctx, body, p, "a luminaire body", body_keys) != CDL_OK) return CDL_ERR_INPUT;
+    char rp[CDL_SCENE_PATH_MAX];
+    const cJSON *r = field(body, p, "reflectance", rp);
+    out->has_body_reflectance = r != NULL;
+    return cdl_scene_json_read_number(ctx, r, rp, CDL_RANGE_UNIT, 0, &out->body_reflectance);
+}
+
 static cdl_status read_luminaire(const cdl_scene_parse *ctx, const cJSON *node, const char *path,
                                  cdl_luminaire_spec *out)
 {
@@ -312,6 +331,7 @@ static cdl_status read_luminaire(const cdl_scene_parse *ctx, const cJSON *node, 
         if (cdl_scene_json_read_choice(ctx, field(node, path, "near_field", p), p, near_modes, 0, &near) != CDL_OK)
             return CDL_ERR_INPUT;
         out->near_field = (cdl_near_field_mode)near;
+        if (read_body(ctx, node, path, out) != CDL_OK) return CDL_ERR_INPUT;
         out->rotation_deg[0] = rotation.x;
         out->rotation_deg[1] = rotation.y;
         out->rotation_deg[2] = rotation.z;

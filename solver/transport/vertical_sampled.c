@@ -145,7 +145,8 @@ static void emitter_samples(const cdl_vertical_context *ctx, const receiver *r, 
             double T = 1.0; /* through glass, a fraction */
             if (ctx->path.geometry) {
                 stats->rays++;
-                T = cdl_scene_geometry_transmission(ctx->path.geometry, p, w, smp.distance);
+                T = cdl_scene_geometry_transmission_except(ctx->path.geometry, p, w, smp.distance,
+                                                           cdl_scene_light_own_piece(light));
                 if (!(T > 0.0)) continue;
             }
             *fz += gz * T;
