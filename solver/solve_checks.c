@@ -78,7 +78,8 @@ static reach light_reaches(const cdl_direct_context *ctx, size_t l, cdl_light_st
     return seen ? REACH_HIDDEN : REACH_NONE;
 }
 
-/* The box around every grid point and every surface: where the scene is. */
+/* The box around every grid point and every surface: where the scene is
+ * (the luminaires' bodies go where the luminaires go: left out). */
 static cdl_bounds3 scene_box(const cdl_direct_context *ctx, const cdl_solution *out)
 {
     cdl_bounds3 box = cdl_bounds3_empty();
@@ -86,9 +87,11 @@ static cdl_bounds3 scene_box(const cdl_direct_context *ctx, const cdl_solution *
         for (size_t i = 0; i < out->grids[g].grid.count; ++i) cdl_bounds3_grow(&box, out->grids[g].grid.points[i]);
     if (ctx->geometry) {
         cdl_vec3 lo, hi;
-        cdl_scene_geometry_bounds(ctx->geometry, &lo, &hi);
-        cdl_bounds3_grow(&box, lo);
-        cdl_bounds3_grow(&box, hi);
+        cdl_scene_geometry_surface_bounds(ctx->geometry, &lo, &hi);
+        if (lo.x <= hi.x) {
+            cdl_bounds3_grow(&box, lo);
+            cdl_bounds3_grow(&box, hi);
+        }
     }
     return box;
 }

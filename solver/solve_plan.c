@@ -9,6 +9,7 @@
 #include "solver/solve_plan.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -55,11 +56,21 @@ const char *cdl_solve_first_reflector(const cdl_scene *scene, double *rho)
 }
 
 /* The method used, and whether interreflection is computed at all: only
- * where something reflects and the method asks for it. */
+ * where something reflects (a surface, an area luminaire or a luminaire's
+ * body) and the method asks for it. */
 static cdl_status choose_method(cdl_solve_state *state, cdl_error *err)
 {
     const cdl_scene *scene = state->scene;
     state->reflector = cdl_solve_first_reflector(scene, &state->reflector_rho);
+    size_t pieces = state->geometry ? cdl_scene_geometry_piece_count(state->geometry) : 0;
+    for (size_t i = 0; i < pieces && !state->reflector; ++i) {
+        const cdl_geometry_piece *gp = cdl_scene_geometry_piece(state->geometry, i);
+        if (!gp->is_body || !(gp->reflectance > 0.0)) continue;
+        snprintf(state->reflector_label, sizeof state->reflector_label, "%s's body",
+                 scene->luminaires[gp->source_index].json_path);
+        state->reflector = state->reflector_label;
+        state->reflector_rho = gp->reflectance;
+    }
     state->out->method = scene->settings.method;
     switch (scene->settings.method) {
     case CDL_METHOD_DIRECT: state->indirect = 0; return CDL_OK;
@@ -227,7 +238,9 @@ static cdl_status plan_grid(cdl_solve_state *state, size_t g, cdl_error *err)
 cdl_status cdl_solve_plan(cdl_solve_state *state, cdl_error *err)
 {
     const cdl_scene *scene = state->scene;
-    cdl_status st = choose_method(state, err);
+    /* the geometry first: a luminaire's body may be what reflects */
+    cdl_status st = build_scene(state, err);
+    if (st == CDL_OK) st = choose_method(state, err);
     if (st != CDL_OK) return st;
     settle_settings(state);
     size_t grids = scene->grid_count ? scene->grid_count : 1;
@@ -235,7 +248,6 @@ cdl_status cdl_solve_plan(cdl_solve_state *state, cdl_error *err)
     state->grids = calloc(grids, sizeof *state->grids);
     if (!state->records || !state->grids) return cdl_error_out_of_memory(err);
     st = cdl_plan_json_create(state, &state->plan, err);
-    if (st == CDL_OK) st = build_scene(state, err);
     if (st != CDL_OK) return st;
     make_contexts(state);
     st = cdl_plan_json_lights(state->plan, state, err);

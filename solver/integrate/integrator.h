@@ -75,6 +75,7 @@ typedef struct cdl_solve_state {
     int indirect;                     /* 1: interreflection is modelled */
     const char *reflector;            /* the first surface that reflects (its JSON path), NULL when none */
     double reflector_rho;
+    char reflector_label[CDL_JSON_PATH_SIZE + 16]; /* a luminaire's body as the reflector: "luminaires[2]'s body" */
     int threads;
     cdl_rank_group *ranks;            /* the ranks sharing the solve (rank_group.h), NULL: this process alone */
 

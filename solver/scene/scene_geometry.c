@@ -54,6 +54,7 @@ struct cdl_scene_geometry {
     int glass;                 /* 1: some piece is a pane of glass */
     uint32_t *luminaire_body;  /* per luminaire of the scene: its body piece, UINT32_MAX for none */
     cdl_luminaire_body *body_shape; /* per luminaire: its body as the file describes it */
+    cdl_bounds3 surface_bounds; /* of every piece but the bodies */
 };
 
 /* ---- building ---------------------------------------------------------------- */
@@ -355,6 +356,7 @@ static cdl_status check_areas(const cdl_scene_geometry *g, size_t first, cdl_err
 static cdl_status add_bodies(cdl_scene_geometry *g, const cdl_scene *scene, cdl_error *err)
 {
     size_t n = scene->luminaire_count;
+    g->surface_bounds = g->bounds;
     g->luminaire_body = malloc((n + 1) * sizeof *g->luminaire_body);
     g->body_shape = calloc(n + 1, sizeof *g->body_shape);
     if (!g->luminaire_body || !g->body_shape) return cdl_error_out_of_memory(err);
@@ -526,6 +528,12 @@ size_t cdl_scene_geometry_piece_triangles(const cdl_scene_geometry *g, size_t ge
 size_t cdl_scene_geometry_triangle_count(const cdl_scene_geometry *g)
 {
     return g->triangle_count;
+}
+
+void cdl_scene_geometry_surface_bounds(const cdl_scene_geometry *g, cdl_vec3 *lo, cdl_vec3 *hi)
+{
+    *lo = g->surface_bounds.lo;
+    *hi = g->surface_bounds.hi;
 }
 
 void cdl_scene_geometry_bounds(const cdl_scene_geometry *g, cdl_vec3 *lo, cdl_vec3 *hi)

@@ -89,6 +89,11 @@ size_t cdl_scene_geometry_triangle_count(const cdl_scene_geometry *geometry);
 void cdl_scene_geometry_bounds(const cdl_scene_geometry *geometry, cdl_vec3 *lo, cdl_vec3 *hi);
 double cdl_scene_geometry_extent(const cdl_scene_geometry *geometry);
 
+/* The same of the surfaces and area luminaires alone, the luminaires'
+ * bodies left out (they go where their luminaires go, which may be wrong:
+ * empty bounds, lo > hi, when there are none). */
+void cdl_scene_geometry_surface_bounds(const cdl_scene_geometry *geometry, cdl_vec3 *lo, cdl_vec3 *hi);
+
 /* The triangles of a piece as placed in the ray scene (counter-clockwise
  * seen from the front; for disks the inscribed fan). Returns the triangle
  * count (0 for spheres, with NULL arrays). Valid while the geometry lives. */

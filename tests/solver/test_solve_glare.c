@@ -59,14 +59,16 @@ static void test_openings_under_a_sky(void)
     const double I0 = 1200.0, w = 0.3, len = 0.6, Lsky = 30.0, H = 1.8;
     CHECK(write_ies("glare_lambert.ies", w, len, 0.0, I0, 1));
     char json[2048];
+    /* CIE 117's formula under a uniform sky: the luminaires' bodies (black
+     * openings that would hide some of the sky) are left out */
     snprintf(json, sizeof json,
              "{\"version\": 1, \"luminaires\": ["
-             "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [%g, %g, 3.0]},"
+             "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [%g, %g, 3.0], \"body\": false},"
              "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [%g, %g, 3.0],"
-             " \"maintenance_factor\": 0.8},"
-             "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [%g, %g, 3.0]},"
-             "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [0.5, -1.0, 3.0]},"
-             "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [-10, 1.0, 3.0]},"
+             " \"maintenance_factor\": 0.8, \"body\": false},"
+             "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [%g, %g, 3.0], \"body\": false},"
+             "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [0.5, -1.0, 3.0], \"body\": false},"
+             "{\"type\": \"goniometric\", \"file\": \"glare_lambert.ies\", \"position\": [-10, 1.0, 3.0], \"body\": false},"
              "{\"type\": \"point\", \"position\": [0, 5, 3], \"intensity_cd\": 100},"
              "{\"type\": \"environment\", \"luminance_cd_m2\": %g}],"
              " \"observers\": [{\"name\": \"desk\", \"eye\": [0, 0, 1.2], \"view\": [0, 1, 0]}]}",

@@ -630,23 +630,25 @@ static void test_other_solids(void)
  * ("always": their tables are not Lambertian, so next-event estimation
  * samples the openings), and a tilted 0.6 m luminous box (sampled), by
  * paths and by the irradiance cache, each point within five stated sigmas,
- * the sigmas calibrated over all of them. */
+ * the sigmas calibrated over all of them. The closed form is for sources
+ * that absorb nothing: the luminaires' bodies are left out ("body": false;
+ * test_luminaire_body.c tests them). */
 static void test_interreflection(void)
 {
     calibration tally = CALIBRATION_INIT;
     const char *linear = "{\"type\": \"goniometric\", \"file\": \"" CANDELA_SOURCE_DIR
                          "/data/office/linear.ies\", \"position\": [0.1, 0, 0.3], \"rotation\": [0, 0, 30], "
-                         "\"flux_lm\": 3000, \"near_field\": \"always\"}";
+                         "\"flux_lm\": 3000, \"near_field\": \"always\", \"body\": false}";
     const char *down = "{\"type\": \"goniometric\", \"file\": \"" CANDELA_SOURCE_DIR
                        "/data/office/downlight.ies\", \"position\": [0, 0.2, 0.7], \"flux_lm\": 3000, "
-                       "\"near_field\": \"always\"}";
+                       "\"near_field\": \"always\", \"body\": false}";
     /* a luminous box (0.6 x 0.2 x 0.1 m, brighter below), tilted: sampled, no closed form */
     char box_path[600], box[1024];
     snprintf(box_path, sizeof box_path, "%s/box.ies", folder);
     if (!write_one_plane_ies(box_path, "0.2 0.6 0.1", "900 400 100")) return;
     snprintf(box, sizeof box,
              "{\"type\": \"goniometric\", \"file\": \"%s\", \"position\": [0, -0.2, 0.1], \"rotation\": [20, 0, "
-             "40], \"flux_lm\": 3000, \"near_field\": \"always\"}",
+             "40], \"flux_lm\": 3000, \"near_field\": \"always\", \"body\": false}",
              box_path);
     const char *methods[2] = {"pathtrace", "icache"};
     for (int m = 0; m < 2; ++m) {
