@@ -35,6 +35,8 @@ expect_error zero_normal "{\"version\": 1, \"surfaces\": [{\"type\": \"disk\", \
   ': surfaces[0].normal: expected a non-zero vector'
 expect_error non_planar "{\"version\": 1, \"surfaces\": [{\"type\": \"polygon\", \"vertices\": [[0,0,0],[4,0,0],[4,4,0],[2,5,1],[0,4,0]], \"reflectance\": 0}], $grid}" \
   ': surfaces[0].vertices[3]: expected a point in the plane'
+expect_error body "{\"version\": 1, \"luminaires\": [{\"type\": \"goniometric\", \"file\": \"a.ies\", \"position\": [0,0,3], \"body\": {\"reflectance\": -0.1}}], $grid}" \
+  ': luminaires[0].body.reflectance: expected a number in [0, 1], found the number -0.1'
 expect_error reflectance "{\"version\": 1, \"surfaces\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [4,4,3], \"reflectance\": {\"floor\": 0.2, \"walls\": 1.5, \"ceiling\": 0.7}}], $grid}" \
   ': surfaces[0].reflectance.walls: expected a number in [0, 1], found the number 1.5'
 expect_error negative "{\"version\": 1, \"luminaires\": [{\"type\": \"area\", \"shape\": {\"type\": \"rect\", \"origin\": [0,0,3], \"u\": [1,0,0], \"v\": [0,-1,0]}, \"luminance_cd_m2\": -5}], $grid}" \
