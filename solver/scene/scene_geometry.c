@@ -2,7 +2,8 @@
  *
  * One piece per surface (per closed face for boxes), in the order of
  * scene->surfaces, then one per area luminaire in the order of
- * scene->luminaires; the piece index is its ray-scene geom id.
+ * scene->luminaires, then one per luminaire body (scene_bodies.h) in the
+ * same order; the piece index is its ray-scene geom id.
  *
  *   rect     2 triangles (o, o+u, o+u+v), (o, o+u+v, o+v): front = u x v
  *   box      one rect per closed face, corners shared bit for bit between

@@ -1,7 +1,8 @@
 /* scene_geometry.h - a loaded scene turned into triangles, spheres and rays.
  *
- * Every surface (and every area luminaire's shape, which also blocks light)
- * becomes triangles (polygons with holes by CGAL's constrained Delaunay
+ * Every surface (and every area luminaire's shape and every goniometric
+ * luminaire's body, which also block light: scene_bodies.h) becomes
+ * triangles (polygons with holes by CGAL's constrained Delaunay
  * triangulation; boxes as up to six rects; disks as fans fine enough for
  * ray casting) or an exact sphere, all in one Embree scene built in robust
  * mode. Each piece keeps a link to the surface or luminaire it came from,
