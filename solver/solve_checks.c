@@ -195,6 +195,7 @@ cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_conte
     for (size_t l = 0; l < ctx->light_count && st == CDL_OK; ++l) {
         const cdl_scene_light *light = &ctx->lights[l];
         if (light->near_part > 0 && l > 0 && ctx->lights[l - 1].near_part < 0) continue;
+        if (light->sealed_by) continue; /* said when it was left out (solve_sealed.c) */
         char mm[200] = "";
         int millimetres = light->bounded && looks_like_millimetres(box, cdl_bounds3_centre(light->bounds));
         if (millimetres) {
