@@ -195,7 +195,6 @@ cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_conte
     for (size_t l = 0; l < ctx->light_count && st == CDL_OK; ++l) {
         const cdl_scene_light *light = &ctx->lights[l];
         if (light->near_part > 0 && l > 0 && ctx->lights[l - 1].near_part < 0) continue;
-        if (light->sealed_by) continue; /* said when it was left out (solve_sealed.c) */
         char mm[200] = "";
         int millimetres = light->bounded && looks_like_millimetres(box, cdl_bounds3_centre(light->bounds));
         if (millimetres) {
@@ -204,6 +203,16 @@ cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_conte
                      "its position [%.6g, %.6g, %.6g] lies far outside the scene and looks like millimetres: "
                      "the scene is in metres",
                      c.x, c.y, c.z);
+        }
+        if (light->sealed_by) {
+            st = cdl_solution_add_warning(
+                out, err,
+                "%s adds nothing to any grid%s: it lies outside %s, a closed box that holds every point of the "
+                "solve, so none of its light can reach them, and it was left out of the solve (is the room meant "
+                "to have a window, an open face or a pane of glass?)%s%s",
+                light->label, out->surface_count ? " or surface map" : "", light->sealed_by, millimetres ? "; " : "",
+                mm);
+            continue;
         }
         if (best[l] == REACH_LIT) {
             /* Lighting something from a kilometre away is still a slip. */

@@ -255,8 +255,7 @@ cdl_status cdl_solve_plan(cdl_solve_state *state, cdl_error *err)
         if (st != CDL_OK) return st;
     }
     /* before the observers copy the lights */
-    st = cdl_solve_seal_lights(state, err);
-    if (st != CDL_OK) return st;
+    cdl_solve_seal_lights(state);
     st = cdl_solve_plan_observers(state, err);
     if (st != CDL_OK) return st;
     if (state->options.cache_path) {

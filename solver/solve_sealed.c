@@ -3,7 +3,6 @@
 
 #include <math.h>
 
-#include "solver/solution_internal.h"
 
 /* Is surface k a closed, opaque box in the ray scene: its six faces there,
  * none of them a pane of glass? */
@@ -115,10 +114,10 @@ static int outside(const sealing_box *b, const cdl_scene_light *light)
     return 0;
 }
 
-cdl_status cdl_solve_seal_lights(cdl_solve_state *state, cdl_error *err)
+void cdl_solve_seal_lights(cdl_solve_state *state)
 {
     const cdl_scene *scene = state->scene;
-    if (state->pieces == 0 || state->lights.count == 0) return CDL_OK;
+    if (state->pieces == 0 || state->lights.count == 0) return;
     for (size_t k = 0; k < scene->surface_count; ++k) {
         const cdl_surface_spec *s = &scene->surfaces[k];
         if (s->kind != CDL_SURFACE_BOX || !box_is_closed(state->geometry, k)) continue;
@@ -129,16 +128,7 @@ cdl_status cdl_solve_seal_lights(cdl_solve_state *state, cdl_error *err)
         if (!holds_everything(&b, state)) continue;
         for (size_t l = 0; l < state->lights.count; ++l) {
             cdl_scene_light *light = &state->lights.lights[l];
-            if (light->sealed_by || !outside(&b, light)) continue;
-            light->sealed_by = s->json_path;
-            cdl_status st = cdl_solution_add_warning(
-                state->out, err,
-                "%s adds nothing: it lies outside %s%s%s%s, a closed box that holds every point of the solve, so "
-                "none of its light can reach them; it is left out of the solve (is the room meant to have a window, "
-                "an open face or a pane of glass?)",
-                light->label, s->json_path, s->name ? " (" : "", s->name ? s->name : "", s->name ? ")" : "");
-            if (st != CDL_OK) return st;
+            if (!light->sealed_by && outside(&b, light)) light->sealed_by = s->json_path;
         }
     }
-    return CDL_OK;
 }

@@ -14,12 +14,11 @@
 #ifndef CANDELA_SOLVER_SOLVE_SEALED_H
 #define CANDELA_SOLVER_SOLVE_SEALED_H
 
-#include "base/error.h"
 #include "solver/integrate/integrator.h"
 
 /* Mark the lights the scene's closed boxes seal out (state->lights), once
  * the grids are built (state->out->grids) and before the observers' copies
- * of the lights are made. Lights sealed out are named in a warning. */
-cdl_status cdl_solve_seal_lights(cdl_solve_state *state, cdl_error *err);
+ * of the lights are made. (The solve's checks name them in a warning.) */
+void cdl_solve_seal_lights(cdl_solve_state *state);
 
 #endif
