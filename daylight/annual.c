@@ -56,7 +56,7 @@ extern int openblas_get_num_threads(void) __attribute__((weak));
 
 /* Hours a BLAS call takes: a fixed block, so that each hour's row comes
  * from a product of the same shape whatever the threads and ranks. */
-#define PRODUCT_ROWS 64
+#define PRODUCT_ROWS 512
 
 typedef struct product_job {
     const float *sky, *coef;

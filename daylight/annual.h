@@ -100,7 +100,7 @@ void cdl_annual_result_release(cdl_annual_result *result);
 
 /* E = skies x coefficients^T for `rows` hours: out[r * points + i] =
  * sum_k sky[r * patches + k] coef[i * patches + k], by BLAS (cblas_sgemm)
- * in blocks of 64 hours shared by `threads` (>= 1) threads, each call on
+ * in blocks of 512 hours shared by `threads` (>= 1) threads, each call on
  * one BLAS thread (OpenBLAS's threads set to 1 meanwhile): the same bytes
  * for any count of threads, whatever cores the BLAS would take. Errors:
  * cdl_pool_run's (out of memory). */
