@@ -16,6 +16,7 @@
 #include "daylight/occupancy.h"
 #include "solver/daylight/daylight_coefficients.h"
 #include "solver/output/grid_result.h"
+#include "solver/output/ranks_json.h"
 #include "solver/output/solution_write.h"
 #include "solver/pool.h"
 
@@ -29,6 +30,8 @@ typedef struct annual_state {
     const char *weather;
     const char *out_dir;
     int threads;
+    cdl_rank_group *ranks;                /* NULL: alone */
+    int root;                             /* 1 on rank 0 (or alone): the one that computes the hours and writes */
     double target;
     cdl_epw epw;
     unsigned char *occupied, *daylight;
@@ -43,14 +46,56 @@ typedef struct annual_state {
     uint64_t paths, rays;
     size_t exact_points, sampled_points;
     cdl_annual_result *result;
+    cdl_rank_report *reports;             /* rank 0: every rank's (summary.json "ranks") */
 } annual_state;
 
-void cdl_annual_product(const float *sky, size_t rows, const float *coef, size_t points, size_t patches, float *out)
+/* OpenBLAS's count of its own threads, where the BLAS is OpenBLAS (weak:
+ * NULL with another BLAS, whose calls are then taken as single-threaded). */
+extern void openblas_set_num_threads(int threads) __attribute__((weak));
+extern int openblas_get_num_threads(void) __attribute__((weak));
+
+/* Hours a BLAS call takes: a fixed block, so that each hour's row comes
+ * from a product of the same shape whatever the threads and ranks. */
+#define PRODUCT_ROWS 512
+
+typedef struct product_job {
+    const float *sky, *coef;
+    size_t rows, points, patches;
+    float *out;
+} product_job;
+
+static cdl_status product_blocks(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
 {
-    if (rows == 0 || points == 0) return;
-    /* out (rows x points) = sky (rows x patches) coef^T (patches x points) */
-    cblas_sgemm(CblasRowMajor, CblasNoTrans, CblasTrans, (int)rows, (int)points, (int)patches, 1.0f, sky, (int)patches,
-                coef, (int)patches, 0.0f, out, (int)points);
+    (void)local;
+    (void)err;
+    const product_job *jb = shared;
+    for (size_t b = begin; b < end; ++b) {
+        size_t r0 = b * PRODUCT_ROWS, n = jb->rows - r0 < PRODUCT_ROWS ? jb->rows - r0 : PRODUCT_ROWS;
+        /* out (n x points) = sky (n x patches) coef^T (patches x points) */
+        cblas_sgemm(CblasRowMajor, CblasNoTrans, CblasTrans, (int)n, (int)jb->points, (int)jb->patches, 1.0f,
+                    jb->sky + r0 * jb->patches, (int)jb->patches, jb->coef, (int)jb->patches, 0.0f,
+                    jb->out + r0 * jb->points, (int)jb->points);
+    }
+    return CDL_OK;
+}
+
+/* A threaded BLAS splits one product among threads as it sees the machine's
+ * cores (and a launcher's binding), and its sums' rounding follows the split:
+ * here the product is cut into blocks of PRODUCT_ROWS hours on Candela's
+ * threads, each block one single-threaded call, so that the bytes depend on
+ * neither the BLAS's threads nor Candela's. */
+cdl_status cdl_annual_product(const float *sky, size_t rows, const float *coef, size_t points, size_t patches,
+                              float *out, int threads, cdl_error *err)
+{
+    if (rows == 0 || points == 0) return CDL_OK;
+    int blas_threads = openblas_get_num_threads && openblas_set_num_threads ? openblas_get_num_threads() : 0;
+    if (blas_threads > 1) openblas_set_num_threads(1);
+    product_job jb = {sky, coef, rows, points, patches, out};
+    cdl_pool_task task = {.count = (rows + PRODUCT_ROWS - 1) / PRODUCT_ROWS, .chunk = 1, .run = product_blocks,
+                          .shared = &jb, .stage = "hours"};
+    cdl_status st = cdl_pool_run(&task, threads, NULL, err);
+    if (blas_threads > 1) openblas_set_num_threads(blas_threads);
+    return st;
 }
 
 /* ---- the year --------------------------------------------------------------------- */
@@ -84,15 +129,22 @@ static cdl_status read_year(annual_state *s, cdl_error *err)
     return st;
 }
 
-static cdl_status make_skies(annual_state *s, cdl_error *err)
+/* The patches (every rank; agreed before the skies, which the ranks share). */
+static cdl_status make_patches(annual_state *s, cdl_error *err)
 {
     /* the overcast sky's single column over the finest patches (its luminance
      * taken as each patch's mean: 1.5-degree rows) */
     int mf = s->o.sky == CDL_ANNUAL_SKY_CIE_OVERCAST ? CDL_REINHART_MAX_MF : s->o.mf;
     cdl_status st = cdl_reinhart_init(&s->patches, mf, cdl_vec3_make(0.0, 0.0, 1.0), s->o.north, err);
-    if (st != CDL_OK) return cdl_error_prefix(err, "--north: ");
-    cdl_annual_sky_options so = {s->o.sky, s->o.ground_reflectance, s->threads};
-    st = cdl_annual_skies_compute(&s->epw, &so, &s->patches, &s->skies, err);
+    return st != CDL_OK ? cdl_error_prefix(err, "--north: ") : CDL_OK;
+}
+
+/* The year's skies (shared by the ranks: agreed, or failed in an exchange),
+ * then each hour's row and each row's hour. */
+static cdl_status make_skies(annual_state *s, cdl_error *err)
+{
+    cdl_annual_sky_options so = {s->o.sky, s->o.ground_reflectance, s->threads, s->ranks};
+    cdl_status st = cdl_annual_skies_compute(&s->epw, &so, &s->patches, &s->skies, err);
     if (st != CDL_OK) return cdl_error_prefix(err, "%s: ", s->weather);
     s->row_of_hour = malloc(s->epw.count * sizeof *s->row_of_hour);
     if (!s->row_of_hour) return cdl_error_out_of_memory(err);
@@ -111,6 +163,7 @@ typedef struct sun_job {
     const annual_state *s;
     size_t g, points;
     float *E_sun;
+    const cdl_rank_deal *deal;            /* row r at cdl_rank_deal_row(deal, r) */
 } sun_job;
 
 /* The direct sun of each row's hour: E_dn max(0, n.s) T at every point. */
@@ -121,7 +174,7 @@ static cdl_status direct_suns(void *shared, void *local, size_t begin, size_t en
     const sun_job *jb = shared;
     for (size_t r = begin; r < end; ++r) {
         const cdl_annual_hour *hr = &jb->s->skies.hour[jb->s->hour_of_row[r]];
-        float *row = jb->E_sun + r * jb->points;
+        float *row = jb->E_sun + cdl_rank_deal_row(jb->deal, r) * jb->points;
         if (!(hr->direct_normal_lx > 0.0)) {
             memset(row, 0, jb->points * sizeof *row);
             continue;
@@ -155,6 +208,37 @@ static size_t probe_rows(const annual_state *s, size_t rows[12])
     return count;
 }
 
+/* Rank 0's part of the discretisation: the probe hours through the coarse
+ * patches (c's direct part) and the fine ones (f's), into disc. */
+static cdl_status discretisation_probes(const annual_state *s, const cdl_daylight_grid_coefficients *c,
+                                        const cdl_reinhart_patches *fine, const cdl_daylight_grid_coefficients *f,
+                                        const float *E, double *disc, cdl_error *err)
+{
+    size_t N = c->points, K = c->patches;
+    size_t rows[12], P = probe_rows(s, rows), KF = (size_t)fine->count;
+    float *sky = malloc(KF * sizeof *sky);
+    double *top = calloc(N ? N : 1, sizeof *top);
+    cdl_status st = sky && top ? CDL_OK : cdl_error_out_of_memory(err);
+    for (size_t q = 0; st == CDL_OK && q < P; ++q)
+        for (size_t i = 0; i < N; ++i) top[i] = fmax(top[i], E[rows[q] * N + i]);
+    for (size_t q = 0; st == CDL_OK && q < P; ++q) {
+        const cdl_annual_hour *hr = &s->skies.hour[s->hour_of_row[rows[q]]];
+        st = cdl_annual_sky_patches(hr, fine, s->o.ground_reflectance, sky, err);
+        const float *coarse = s->skies.patch + rows[q] * K;
+        for (size_t i = 0; st == CDL_OK && i < N; ++i) {
+            double Et = E[rows[q] * N + i];
+            if (!c->exact[i] || !f->exact[i] || !(Et > 0.01 * top[i])) continue;
+            double Em = 0.0, Ef = 0.0;
+            for (size_t k = 0; k < K; ++k) Em += (double)c->direct[i * K + k] * coarse[k];
+            for (size_t k = 0; k < KF; ++k) Ef += (double)f->sky[i * KF + k] * sky[k];
+            disc[i] = fmax(disc[i], 1.5 * fabs(Em - Ef) / Et);
+        }
+    }
+    free(sky);
+    free(top);
+    return st;
+}
+
 /* The patches' discretisation at each point, estimated: the direct light of
  * the probe hours' skies through these patches and through patches half
  * their size (MF doubled; the direct part exact both ways), the difference
@@ -166,43 +250,27 @@ static size_t probe_rows(const annual_state *s, size_t rows[12])
 static cdl_status discretisation(annual_state *s, size_t g, const cdl_daylight_grid_coefficients *c, const float *E,
                                  double *disc, cdl_error *err)
 {
-    size_t N = c->points, K = c->patches;
-    memset(disc, 0, N * sizeof *disc);
+    size_t N = c->points;
+    if (s->root) memset(disc, 0, N * sizeof *disc);
     if (2 * s->patches.mf > CDL_REINHART_MAX_MF) return CDL_OK;
     cdl_reinhart_patches fine;
-    cdl_status st = cdl_reinhart_init(&fine, 2 * s->patches.mf, s->patches.frame.n, s->patches.frame.s, err);
+    cdl_status st = cdl_rank_agree(
+        s->ranks, cdl_reinhart_init(&fine, 2 * s->patches.mf, s->patches.frame.n, s->patches.frame.s, err), err);
     if (st != CDL_OK) return st;
+    /* the finer patches' direct part, shared by the ranks */
     cdl_daylight_coefficient_options co = {.patches = &fine, .target = s->target, .direct_only = 1,
-                                           .seed = s->scene->settings.seed, .threads = s->threads, .max_paths = 1.0};
+                                           .seed = s->scene->settings.seed, .threads = s->threads,
+                                           .ranks = s->ranks, .max_paths = 1.0};
     cdl_daylight_grid_coefficients f;
     st = cdl_daylight_coefficients_compute(&s->ds, g, &co, &f, err);
     if (st != CDL_OK) return st;
-    size_t rows[12], P = probe_rows(s, rows), KF = (size_t)fine.count;
-    float *sky = malloc(KF * sizeof *sky);
-    double *top = calloc(N ? N : 1, sizeof *top);
-    if (!sky || !top) st = cdl_error_out_of_memory(err);
-    for (size_t q = 0; st == CDL_OK && q < P; ++q)
-        for (size_t i = 0; i < N; ++i) top[i] = fmax(top[i], E[rows[q] * N + i]);
-    for (size_t q = 0; st == CDL_OK && q < P; ++q) {
-        const cdl_annual_hour *hr = &s->skies.hour[s->hour_of_row[rows[q]]];
-        st = cdl_annual_sky_patches(hr, &fine, s->o.ground_reflectance, sky, err);
-        const float *coarse = s->skies.patch + rows[q] * K;
-        for (size_t i = 0; st == CDL_OK && i < N; ++i) {
-            double Et = E[rows[q] * N + i];
-            if (!c->exact[i] || !f.exact[i] || !(Et > 0.01 * top[i])) continue;
-            double Em = 0.0, Ef = 0.0;
-            for (size_t k = 0; k < K; ++k) Em += (double)c->direct[i * K + k] * coarse[k];
-            for (size_t k = 0; k < KF; ++k) Ef += (double)f.sky[i * KF + k] * sky[k];
-            disc[i] = fmax(disc[i], 1.5 * fabs(Em - Ef) / Et);
-        }
-    }
-    free(sky);
-    free(top);
+    if (s->root) st = discretisation_probes(s, c, &fine, &f, E, disc, err);
     cdl_daylight_coefficients_release(&f);
-    return st;
+    return cdl_rank_agree(s->ranks, st, err);
 }
 
-/* Grid g's hours under the Perez skies: E (rows x points), E_sun likewise. */
+/* Grid g's hours under the Perez skies: E (rows x points), E_sun likewise
+ * (rank 0; elsewhere both NULL). */
 static cdl_status perez_hours(annual_state *s, size_t g, float **E_out, float **E_sun_out, double *rel_stderr,
                               cdl_daylight_grid_coefficients *c, cdl_error *err)
 {
@@ -210,27 +278,31 @@ static cdl_status perez_hours(annual_state *s, size_t g, float **E_out, float **
     cdl_daylight_coefficient_options co = {.patches = &s->patches, .suns = s->skies.suns,
                                            .sun_count = s->skies.sun_count, .target = s->target, .keep_direct = 1,
                                            .seed = s->scene->settings.seed, .threads = s->threads,
-                                           .max_paths = ANNUAL_MAX_PATHS, .progress = s->o.progress};
+                                           .ranks = s->ranks, .max_paths = ANNUAL_MAX_PATHS,
+                                           .progress = s->o.progress};
     double t0 = cdl_pool_now_seconds();
     cdl_status st = cdl_daylight_coefficients_compute(&s->ds, g, &co, c, err);
     if (st != CDL_OK) return st;
     s->result->seconds_coefficients += cdl_pool_now_seconds() - t0;
-    memcpy(rel_stderr, c->sky_rel_stderr, N * sizeof *rel_stderr);
-    float *E = malloc((R ? R : 1) * (N ? N : 1) * sizeof *E), *E_sun = malloc((R ? R : 1) * (N ? N : 1) * sizeof *E);
-    if (!E || !E_sun) {
-        free(E);
-        free(E_sun);
-        return cdl_error_out_of_memory(err);
-    }
+    if (s->root) memcpy(rel_stderr, c->sky_rel_stderr, N * sizeof *rel_stderr);
+    /* the direct sun hour by hour, the hours dealt among the ranks (units of
+     * 16: a chunk of the pool); rank 0 gets every hour's, and alone makes E */
+    cdl_rank_deal deal = cdl_rank_deal_make(s->ranks, R, 16);
+    size_t sun_rows = cdl_rank_deal_rows(&deal);
+    float *E = s->root ? malloc((R ? R : 1) * (N ? N : 1) * sizeof *E) : NULL;
+    float *E_sun = malloc((sun_rows ? sun_rows : 1) * (N ? N : 1) * sizeof *E_sun);
+    st = cdl_rank_agree(s->ranks, (E || !s->root) && E_sun ? CDL_OK : cdl_error_out_of_memory(err), err);
     t0 = cdl_pool_now_seconds();
-    sun_job jb = {s, g, N, E_sun};
-    cdl_pool_task task = {.count = R, .chunk = 16, .run = direct_suns, .shared = &jb, .stage = "direct sun"};
-    st = cdl_pool_run(&task, s->threads, &s->o.progress, err);
+    sun_job jb = {s, g, N, E_sun, &deal};
+    cdl_pool_task task = {.count = R, .chunk = deal.unit, .run = direct_suns, .shared = &jb, .stage = "direct sun",
+                          .outputs = {{E_sun, N * sizeof *E_sun}}};
+    cdl_workers workers = {.threads = s->threads, .progress = &s->o.progress, .ranks = s->ranks};
+    if (st == CDL_OK) st = cdl_pool_run_dealt(&task, &workers, &deal, err);
     s->result->seconds_suns += cdl_pool_now_seconds() - t0;
     t0 = cdl_pool_now_seconds();
-    if (st == CDL_OK) cdl_annual_product(s->skies.patch, R, c->sky, N, K, E);
+    if (st == CDL_OK && s->root) st = cdl_annual_product(s->skies.patch, R, c->sky, N, K, E, s->threads, err);
     /* each hour's sun: its direct light traced, its interreflection by its bin */
-    for (size_t h = 0; st == CDL_OK && h < s->skies.hours; ++h) {
+    for (size_t h = 0; st == CDL_OK && s->root && h < s->skies.hours; ++h) {
         const cdl_annual_hour *hr = &s->skies.hour[h];
         if (hr->row < 0 || hr->sun < 0) continue;
         float *e = E + (size_t)hr->row * N;
@@ -240,16 +312,16 @@ static cdl_status perez_hours(annual_state *s, size_t g, float **E_out, float **
     }
     s->result->seconds_hours += cdl_pool_now_seconds() - t0;
     /* the stated error: the sampling's and the patches' (estimated) */
-    double *disc = malloc((N ? N : 1) * sizeof *disc);
-    if (st == CDL_OK && !disc) st = cdl_error_out_of_memory(err);
+    double *disc = s->root ? malloc((N ? N : 1) * sizeof *disc) : NULL;
+    if (st == CDL_OK) st = cdl_rank_agree(s->ranks, disc || !s->root ? CDL_OK : cdl_error_out_of_memory(err), err);
     if (st == CDL_OK) st = discretisation(s, g, c, E, disc, err);
-    for (size_t i = 0; st == CDL_OK && i < N; ++i) {
+    for (size_t i = 0; st == CDL_OK && s->root && i < N; ++i) {
         s->result->grids[g].discretisation_mean_rel += disc[i] / (double)N;
         s->result->grids[g].discretisation_max_rel = fmax(s->result->grids[g].discretisation_max_rel, disc[i]);
         rel_stderr[i] = hypot(rel_stderr[i], disc[i]);
     }
     free(disc);
-    if (st != CDL_OK) {
+    if (st != CDL_OK || !s->root) {
         free(E);
         free(E_sun);
         return st;
@@ -261,7 +333,8 @@ static cdl_status perez_hours(annual_state *s, size_t g, float **E_out, float **
 
 /* Grid g's hours under the overcast sky: its one coefficient per point, E
  * under the sky of 1 lx horizontal (the daylight factor / 100, interreflection
- * included), times each hour's diffuse horizontal illuminance. */
+ * included), times each hour's diffuse horizontal illuminance (rank 0;
+ * elsewhere E NULL). */
 static cdl_status overcast_hours(annual_state *s, size_t g, float **E_out, double *rel_stderr, double *DF,
                                  cdl_daylight_grid_coefficients *c, cdl_error *err)
 {
@@ -269,24 +342,28 @@ static cdl_status overcast_hours(annual_state *s, size_t g, float **E_out, doubl
     cdl_daylight_coefficient_options co = {.patches = &s->patches, .target = s->target,
                                            .reference_sky = s->overcast, .collapse = 1,
                                            .seed = s->scene->settings.seed, .threads = s->threads,
-                                           .max_paths = ANNUAL_MAX_PATHS, .progress = s->o.progress};
+                                           .ranks = s->ranks, .max_paths = ANNUAL_MAX_PATHS,
+                                           .progress = s->o.progress};
     double t0 = cdl_pool_now_seconds();
     cdl_status st = cdl_daylight_coefficients_compute(&s->ds, g, &co, c, err);
     if (st != CDL_OK) return st;
     s->result->seconds_coefficients += cdl_pool_now_seconds() - t0;
-    for (size_t i = 0; i < N; ++i) {
-        DF[i] = 100.0 * (double)c->sky[i];
-        rel_stderr[i] = c->sky_rel_stderr[i];
+    /* rank 0 alone makes the hours */
+    float *E = NULL;
+    if (s->root) {
+        for (size_t i = 0; i < N; ++i) {
+            DF[i] = 100.0 * (double)c->sky[i];
+            rel_stderr[i] = c->sky_rel_stderr[i];
+        }
+        if (!(E = malloc((R ? R : 1) * (N ? N : 1) * sizeof *E))) st = cdl_error_out_of_memory(err);
     }
-    float *E = malloc((R ? R : 1) * (N ? N : 1) * sizeof *E);
-    if (!E) return cdl_error_out_of_memory(err);
-    for (size_t h = 0; h < s->skies.hours; ++h) {
+    for (size_t h = 0; E && h < s->skies.hours; ++h) {
         const cdl_annual_hour *hr = &s->skies.hour[h];
         if (hr->row < 0) continue;
         for (size_t i = 0; i < N; ++i) E[(size_t)hr->row * N + i] = (float)(DF[i] / 100.0 * hr->diffuse_lx);
     }
     *E_out = E;
-    return CDL_OK;
+    return cdl_rank_agree(s->ranks, st, err);
 }
 
 /* ---- one grid ----------------------------------------------------------------------- */
@@ -341,26 +418,19 @@ static cJSON *grid_summary(const cdl_annual_grid_result *r, const cdl_daylight_g
     return o;
 }
 
-/* Grid g: its hours, metrics and files. */
-static cdl_status run_grid(annual_state *s, size_t g, cdl_error *err)
+/* Rank 0's part of grid g: its metrics and files from the hours E (and E_sun). */
+static cdl_status finish_grid(annual_state *s, size_t g, const float *E, const float *E_sun, const double *rel,
+                              const double *DF, const cdl_daylight_grid_coefficients *c, cdl_error *err)
 {
     int overcast = s->o.sky == CDL_ANNUAL_SKY_CIE_OVERCAST;
     const cdl_grid *grid = &s->ds.grids[g];
     size_t N = grid->count;
     cdl_annual_grid_result *r = &s->result->grids[g];
-    r->points = N;
-    if (!(r->name = cdl_string_copy(s->scene->grids[g].name))) return cdl_error_out_of_memory(err);
-    double *rel = calloc(N ? N : 1, sizeof *rel), *DF = calloc(N ? N : 1, sizeof *DF);
     cdl_point_metrics *pm = calloc(N ? N : 1, sizeof *pm);
-    float *E = NULL, *E_sun = NULL;
-    cdl_daylight_grid_coefficients c;
-    memset(&c, 0, sizeof c);
-    cdl_status st = rel && DF && pm ? CDL_OK : cdl_error_out_of_memory(err);
-    if (st == CDL_OK)
-        st = overcast ? overcast_hours(s, g, &E, rel, DF, &c, err) : perez_hours(s, g, &E, &E_sun, rel, &c, err);
+    if (!pm) return cdl_error_out_of_memory(err);
     double t0 = cdl_pool_now_seconds();
     cdl_annual_input in = {s->epw.count, N, E, E_sun, s->row_of_hour, s->occupied, s->daylight, grid->weights};
-    if (st == CDL_OK) st = cdl_annual_metrics_compute(&in, pm, &r->metrics, err);
+    cdl_status st = cdl_annual_metrics_compute(&in, pm, &r->metrics, err);
     s->result->seconds_metrics += cdl_pool_now_seconds() - t0;
     for (size_t i = 0; i < N; ++i) {
         r->stderr_mean_rel += rel[i] / (double)N;
@@ -386,14 +456,38 @@ static cdl_status run_grid(annual_state *s, size_t g, cdl_error *err)
                   : cdl_error_out_of_memory(err);
         free(path);
     }
-    if (st == CDL_OK) cJSON_AddItemToObject(s->grids, r->name, grid_summary(r, &c));
+    if (st == CDL_OK) cJSON_AddItemToObject(s->grids, r->name, grid_summary(r, c));
+    free(pm);
+    return st;
+}
+
+/* Grid g: its coefficients and direct sun (shared by the ranks), then on
+ * rank 0 its hours, metrics and files; the ranks agree on how it went. */
+static cdl_status run_grid(annual_state *s, size_t g, cdl_error *err)
+{
+    int overcast = s->o.sky == CDL_ANNUAL_SKY_CIE_OVERCAST;
+    size_t N = s->ds.grids[g].count;
+    cdl_annual_grid_result *r = &s->result->grids[g];
+    r->points = N;
+    r->name = cdl_string_copy(s->scene->grids[g].name);
+    /* per point on rank 0: the stated error and DF */
+    double *rel = s->root ? calloc(N ? N : 1, sizeof *rel) : NULL, *DF = s->root ? calloc(N ? N : 1, sizeof *DF) : NULL;
+    float *E = NULL, *E_sun = NULL;
+    cdl_daylight_grid_coefficients c;
+    memset(&c, 0, sizeof c);
+    int ok = r->name && (!s->root || (rel && DF));
+    cdl_status st = cdl_rank_agree(s->ranks, ok ? CDL_OK : cdl_error_out_of_memory(err), err);
+    /* the hours: agreed by the ranks, or failed in an exchange (the caller ends the job) */
+    if (st == CDL_OK)
+        st = overcast ? overcast_hours(s, g, &E, rel, DF, &c, err) : perez_hours(s, g, &E, &E_sun, rel, &c, err);
+    int agree = st == CDL_OK;
+    if (st == CDL_OK && s->root) st = finish_grid(s, g, E, E_sun, rel, DF, &c, err);
     cdl_daylight_coefficients_release(&c);
     free(E);
     free(E_sun);
     free(rel);
     free(DF);
-    free(pm);
-    return st;
+    return agree ? cdl_rank_agree(s->ranks, st, err) : st;
 }
 
 /* ---- summary.json ------------------------------------------------------------------- */
@@ -487,6 +581,7 @@ static cdl_status write_summary(annual_state *s, cdl_error *err)
                                     {"hours", r->seconds_hours},
                                     {"metrics", r->seconds_metrics}};
     add_numbers(cJSON_AddObjectToObject(a, "seconds"), seconds, sizeof seconds / sizeof seconds[0]);
+    cdl_ranks_json_add(root, s->reports, (size_t)cdl_rank_group_count(s->ranks));
     cJSON_AddItemToObject(root, "grids", s->grids);
     s->grids = NULL;
     char *text = cJSON_Print(root);
@@ -551,6 +646,7 @@ static void state_release(annual_state *s)
     cdl_daylight_scene_release(&s->ds);
     free(s->overcast);
     cJSON_Delete(s->grids);
+    free(s->reports);
 }
 
 static cdl_status check_options(const cdl_annual_options *o, cdl_error *err)
@@ -576,23 +672,32 @@ cdl_status cdl_annual_run(const cdl_scene *scene, const char *weather, const cdl
     s.out_dir = out_dir;
     s.result = result;
     s.target = cdl_solver_settings_target(&scene->settings);
+    s.ranks = options->ranks;
+    s.root = cdl_rank_group_rank(s.ranks) == 0;
     s.threads = options->threads >= 0 ? options->threads : scene->settings.threads;
-    if (s.threads <= 0) s.threads = cdl_pool_cpu_count();
+    if (s.threads <= 0) s.threads = cdl_pool_default_threads(s.ranks ? s.ranks->ranks.local_count : 1);
+    double cpu0 = cdl_pool_cpu_seconds();
+    /* Each rank's own steps, agreed: a file one rank cannot read ends every rank. */
     cdl_status st = check_options(options, err);
     /* the scene first: a scene an annual study cannot take is said before the weather is read */
     if (st == CDL_OK) st = cdl_daylight_scene_build(scene, &s.ds, err);
     if (st == CDL_OK) st = read_year(&s, err);
+    if (st == CDL_OK) st = make_patches(&s, err);
+    st = cdl_rank_agree(s.ranks, st, err);
     double t0 = cdl_pool_now_seconds();
     if (st == CDL_OK) st = make_skies(&s, err);
     result->seconds_skies = cdl_pool_now_seconds() - t0;
-    if (st == CDL_OK && s.o.sky == CDL_ANNUAL_SKY_CIE_OVERCAST) {
-        if (!(s.overcast = malloc((size_t)s.patches.count * sizeof *s.overcast))) st = cdl_error_out_of_memory(err);
-        else cdl_annual_overcast_patches(&s.patches, s.overcast);
+    if (st == CDL_OK) {
+        if (s.o.sky == CDL_ANNUAL_SKY_CIE_OVERCAST) {
+            if (!(s.overcast = malloc((size_t)s.patches.count * sizeof *s.overcast))) st = cdl_error_out_of_memory(err);
+            else cdl_annual_overcast_patches(&s.patches, s.overcast);
+        }
+        result->grid_count = scene->grid_count;
+        result->grids = calloc(scene->grid_count ? scene->grid_count : 1, sizeof *result->grids);
+        s.grids = cJSON_CreateObject();
+        if (st == CDL_OK && (!result->grids || !s.grids)) st = cdl_error_out_of_memory(err);
+        st = cdl_rank_agree(s.ranks, st, err);
     }
-    result->grid_count = scene->grid_count;
-    result->grids = calloc(scene->grid_count ? scene->grid_count : 1, sizeof *result->grids);
-    s.grids = cJSON_CreateObject();
-    if (st == CDL_OK && (!result->grids || !s.grids)) st = cdl_error_out_of_memory(err);
     for (size_t g = 0; st == CDL_OK && g < scene->grid_count; ++g) st = run_grid(&s, g, err);
     if (st == CDL_OK) {
         result->hours = s.epw.count;
@@ -600,8 +705,14 @@ cdl_status cdl_annual_run(const cdl_scene *scene, const char *weather, const cdl
         result->occupied_hours = scene->grid_count ? result->grids[0].metrics.occupied_hours : 0;
         result->daylight_hours = scene->grid_count ? result->grids[0].metrics.daylight_hours : 0;
         result->seconds_total = cdl_pool_now_seconds() - t_start;
-        st = write_grid_table(&s, err);
-        if (st == CDL_OK) st = write_summary(&s, err);
+        double work = result->seconds_skies + result->seconds_coefficients + result->seconds_suns;
+        st = cdl_rank_reports_gather(s.ranks, s.threads, t_start, cpu0, work, &s.reports, err);
+        /* rank 0 writes the tables; every rank learns how it went */
+        if (st == CDL_OK) {
+            if (s.root) st = write_grid_table(&s, err);
+            if (st == CDL_OK && s.root) st = write_summary(&s, err);
+            st = cdl_rank_agree(s.ranks, st, err);
+        }
     }
     state_release(&s);
     if (st != CDL_OK) cdl_annual_result_release(result);

@@ -26,8 +26,28 @@
  * at each month's sunniest hour against patches half the size, the two in
  * quadrature; its mean and worst per grid.
  *
+ * Shared by ranks (options.ranks, `mpirun -np N candela annual`): every
+ * rank reads the scene and the weather and classifies the hours; the
+ * perez skies' rows (step 2), each grid's points for its coefficients and
+ * the discretisation's (step 3, solver/daylight/daylight_coefficients.h)
+ * and the hours' direct sun (step 3) are dealt among the ranks in small
+ * units (rank_group.h's cdl_rank_deal: points far from a window cost many
+ * times those near it, and every rank gets points from the whole grid);
+ * their results go to rank 0 in windows of 8 MiB, and rank 0 alone does
+ * step 4 and 5, writes and gets the results (the others' *result holds no
+ * grids). Every point's and hour's random numbers are keyed by it, never
+ * by who computes it, so the files are one process's, byte for byte, for
+ * any number of ranks and threads. The function is then a collective:
+ * after each step the ranks agree on how it went (a failure on any rank,
+ * a weather file one of them cannot read, is every rank's, its message
+ * naming the rank); a failure a rank meets alone in an exchange is
+ * returned by it alone (options.ranks->failure_agreed 0: end the job).
+ * summary.json's "ranks" holds each rank's threads, seconds, work,
+ * CPU seconds, bytes received and peak memory (count 1 alone).
+ *
  * Thread safety: a run owns everything it makes; the scene is only read.
- * BLAS runs on the threads its own library chooses (OPENBLAS_NUM_THREADS).
+ * The hours' product runs on the run's threads, one BLAS thread each
+ * (cdl_annual_product).
  */
 #ifndef CANDELA_DAYLIGHT_ANNUAL_H
 #define CANDELA_DAYLIGHT_ANNUAL_H
@@ -39,6 +59,7 @@
 #include "daylight/annual_sky.h"
 #include "radiometry/vec3.h"
 #include "solver/progress.h"
+#include "solver/rank_group.h"
 #include "solver/scene/scene_internal.h"
 
 typedef struct cdl_annual_options {
@@ -50,9 +71,10 @@ typedef struct cdl_annual_options {
     int threads;                          /* worker threads, 0 all cores; -1 (default): the scene's "threads" */
     const char *ocio_config;              /* the maps' OpenColorIO config; NULL: Candela's */
     cdl_progress_sink progress;
+    cdl_rank_group *ranks;                /* NULL: this process alone; else the ranks sharing the study (below) */
 } cdl_annual_options;
 #define CDL_ANNUAL_OPTIONS_INIT                                                                                       \
-    {CDL_ANNUAL_SKY_PEREZ, 1, "8-18", 0.0, {0.0, 1.0, 0.0}, -1, NULL, {NULL, NULL}}
+    {CDL_ANNUAL_SKY_PEREZ, 1, "8-18", 0.0, {0.0, 1.0, 0.0}, -1, NULL, {NULL, NULL}, NULL}
 
 /* What a run found, per grid (the files hold it all). */
 typedef struct cdl_annual_grid_result {
@@ -77,7 +99,12 @@ cdl_status cdl_annual_run(const cdl_scene *scene, const char *weather, const cdl
 void cdl_annual_result_release(cdl_annual_result *result);
 
 /* E = skies x coefficients^T for `rows` hours: out[r * points + i] =
- * sum_k sky[r * patches + k] coef[i * patches + k], by BLAS (cblas_sgemm). */
-void cdl_annual_product(const float *sky, size_t rows, const float *coef, size_t points, size_t patches, float *out);
+ * sum_k sky[r * patches + k] coef[i * patches + k], by BLAS (cblas_sgemm)
+ * in blocks of 512 hours shared by `threads` (>= 1) threads, each call on
+ * one BLAS thread (OpenBLAS's threads set to 1 meanwhile): the same bytes
+ * for any count of threads, whatever cores the BLAS would take. Errors:
+ * cdl_pool_run's (out of memory). */
+cdl_status cdl_annual_product(const float *sky, size_t rows, const float *coef, size_t points, size_t patches,
+                              float *out, int threads, cdl_error *err);
 
 #endif

@@ -18,6 +18,7 @@ typedef struct fill_job {
     const cdl_annual_sky_options *o;
     cdl_annual_skies *out;
     const size_t *row_hour;
+    const cdl_rank_deal *deal;            /* row r's patches at cdl_rank_deal_row(deal, r) */
 } fill_job;
 
 /* Gauss-Legendre, 3 points on [0, 1]: nodes 1/2 +- sqrt(3/5)/2 and 1/2, weights 5/18, 8/18, 5/18. */
@@ -75,7 +76,7 @@ static cdl_status fill_rows(void *shared, void *local, size_t begin, size_t end,
     for (size_t r = begin; r < end; ++r) {
         const cdl_epw_hour *w = &jb->epw->hours[jb->row_hour[r]];
         cdl_status st = cdl_annual_sky_patches(&jb->out->hour[jb->row_hour[r]], jb->p, jb->o->ground_reflectance,
-                                               jb->out->patch + r * K, err);
+                                               jb->out->patch + cdl_rank_deal_row(jb->deal, r) * K, err);
         if (st != CDL_OK)
             return cdl_error_prefix(err, "line %d (month %d, day %d, hour %d): the Perez sky: ", w->line, w->month,
                                     w->day, w->hour);
@@ -226,13 +227,20 @@ cdl_status cdl_annual_skies_compute(const cdl_epw *epw, const cdl_annual_sky_opt
     size_t *row_hour = calloc(epw->count, sizeof *row_hour);
     cdl_status st = out->hour && row_hour ? CDL_OK : cdl_error_out_of_memory(err);
     if (st == CDL_OK) st = classify_hours(epw, o, p, out, row_hour, err);
+    /* rank 0 (or one process) a row for every lit hour, another rank its own */
+    cdl_rank_deal deal = cdl_annual_skies_deal(o->ranks, out->rows);
+    size_t rows = cdl_rank_deal_rows(&deal);
+    if (st == CDL_OK && o->kind == CDL_ANNUAL_SKY_PEREZ &&
+        !(out->patch = malloc((rows ? rows : 1) * (size_t)p->count * sizeof *out->patch)))
+        st = cdl_error_out_of_memory(err);
+    st = cdl_rank_agree(o->ranks, st, err);
     if (st == CDL_OK && o->kind == CDL_ANNUAL_SKY_PEREZ) {
-        out->patch = malloc((out->rows ? out->rows : 1) * (size_t)p->count * sizeof *out->patch);
-        if (!out->patch) st = cdl_error_out_of_memory(err);
-        fill_job jb = {epw, p, o, out, row_hour};
-        cdl_pool_task task = {.count = out->rows, .chunk = 8, .run = fill_rows, .shared = &jb, .stage = "skies"};
+        fill_job jb = {epw, p, o, out, row_hour, &deal};
+        cdl_pool_task task = {.count = out->rows, .chunk = deal.unit, .run = fill_rows, .shared = &jb,
+                              .stage = "skies", .outputs = {{out->patch, (size_t)p->count * sizeof *out->patch}}};
         cdl_progress_sink none = {0};
-        if (st == CDL_OK) st = cdl_pool_run(&task, o->threads > 0 ? o->threads : 1, &none, err);
+        cdl_workers workers = {.threads = o->threads > 0 ? o->threads : 1, .progress = &none, .ranks = o->ranks};
+        st = cdl_pool_run_dealt(&task, &workers, &deal, err);
         if (st == CDL_OK) st = sun_bins(p, out, err);
     }
     free(row_hour);
@@ -247,4 +255,11 @@ void cdl_annual_skies_release(cdl_annual_skies *s)
     free(s->patch);
     free(s->suns);
     memset(s, 0, sizeof *s);
+}
+
+/* Hours differ in cost only as their sun does: units of 8 rows deal every
+ * rank hours from the whole year. */
+cdl_rank_deal cdl_annual_skies_deal(cdl_rank_group *ranks, size_t rows)
+{
+    return cdl_rank_deal_make(ranks, rows, 8);
 }

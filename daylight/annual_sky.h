@@ -31,7 +31,8 @@
  * the file's diffuse horizontal illuminance (field 19), the sun left out:
  * the hour's illuminance at a point is its daylight factor times that.
  *
- * Thread safety: pure; the work runs on `threads` workers.
+ * Thread safety: pure; the work runs on `threads` workers (and the
+ * ranks given).
  */
 #ifndef CANDELA_DAYLIGHT_ANNUAL_SKY_H
 #define CANDELA_DAYLIGHT_ANNUAL_SKY_H
@@ -41,6 +42,7 @@
 #include "base/error.h"
 #include "daylight/epw.h"
 #include "lights/environment/reinhart_patches.h"
+#include "solver/rank_group.h"
 
 typedef enum cdl_annual_sky_kind { CDL_ANNUAL_SKY_PEREZ, CDL_ANNUAL_SKY_CIE_OVERCAST } cdl_annual_sky_kind;
 
@@ -75,6 +77,10 @@ typedef struct cdl_annual_sky_options {
     cdl_annual_sky_kind kind;
     double ground_reflectance;            /* [0, 1] */
     int threads;                          /* >= 1 */
+    cdl_rank_group *ranks;                /* NULL: one process; else the perez rows are dealt among the ranks
+                                           * (cdl_annual_skies_deal) and only rank 0 ends with every row of
+                                           * `patch`, the others with their own rows; the hours and the sun
+                                           * bins are every rank's */
 } cdl_annual_sky_options;
 
 /* The CIE standard overcast sky, L = L_z (1 + 2 sin a) / 3 at altitude a
@@ -91,9 +97,13 @@ void cdl_annual_overcast_patches(const cdl_reinhart_patches *p, double *out);
 cdl_status cdl_annual_sky_patches(const cdl_annual_hour *hour, const cdl_reinhart_patches *p, double ground_reflectance,
                                   float *out, cdl_error *err);
 
-/* The year's skies over the patches p (their frame gives up and north). */
+/* The year's skies over the patches p (their frame gives up and north).
+ * With ranks, a collective (a failure on any rank is every rank's). */
 cdl_status cdl_annual_skies_compute(const cdl_epw *epw, const cdl_annual_sky_options *o,
                                     const cdl_reinhart_patches *p, cdl_annual_skies *out, cdl_error *err);
 void cdl_annual_skies_release(cdl_annual_skies *s);
+
+/* How the `rows` lit hours' skies are dealt among `ranks` (NULL: one process). */
+cdl_rank_deal cdl_annual_skies_deal(cdl_rank_group *ranks, size_t rows);
 
 #endif

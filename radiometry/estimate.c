@@ -54,6 +54,13 @@ int cdl_estimate_next_side(const cdl_estimate *e, double target_variance, int k_
     return (int)k;
 }
 
+double cdl_estimate_plan_unseen(double potential, double target_variance, double least)
+{
+    if (!(target_variance > 0.0) || !(potential > 0.0)) return least;
+    double n = ceil(potential / sqrt(target_variance));
+    return n > least ? n : least;
+}
+
 double cdl_estimate_plan(const cdl_estimate *pilot, double target_variance, double least)
 {
     double c = cdl_estimate_variance(pilot) * pilot->samples;

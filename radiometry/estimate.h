@@ -86,6 +86,15 @@ double cdl_estimate_variance(const cdl_estimate *e);
  * (N + 1) / ((N + 2)^2 (N + 3)); times potential^2. */
 double cdl_estimate_unseen_variance(double samples, double potential);
 
+/* Samples that, all seen dark, leave an unseen variance of at most
+ * `target_variance` (at least `least`): the plan for a point whose pilot
+ * saw nothing. The unseen variance falls as potential^2 / N^2, not as 1 / N
+ * like a variance per sample, so planning it with cdl_estimate_plan would
+ * ask (pilot / N_needed) times too many samples (a dark point's pilot of
+ * 128 then asked for millions); N = potential / sqrt(target_variance)
+ * suffices, as (N + 1) / ((N + 2)^2 (N + 3)) < 1 / N^2. */
+double cdl_estimate_plan_unseen(double potential, double target_variance, double least);
+
 /* The variance of the mean with one phantom disagreeing pair added:
  * (sum d^2 + jump^2) / N^2, `jump` the largest difference a stratum's two
  * samples could show (for a visibility edge, the unoccluded value of a

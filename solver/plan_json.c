@@ -188,6 +188,14 @@ static void grid_lights(cdl_plan_json *plan, const cdl_solve_state *state, const
 {
     for (size_t l = 0; l < state->lights.count; ++l) {
         char text[768], routes_text[512];
+        if (state->lights.lights[l].sealed_by) {
+            snprintf(text, sizeof text,
+                     "not modelled: it lies outside %s, a closed box that holds every point of the solve, so none "
+                     "of its light can reach them (0 lx, exactly)",
+                     state->lights.lights[l].sealed_by);
+            cJSON_AddStringToObject(plan->light_grids[l], job->spec->name, text);
+            continue;
+        }
         cdl_direct_route_describe(&state->routes[l], routes_text, sizeof routes_text);
         snprintf(text, sizeof text, "%s%s%s",
                  cdl_light_strategy_describe(state->strategies[l], &state->lights.lights[l]),

@@ -207,3 +207,42 @@ cdl_status cdl_pool_run_shared(const cdl_pool_task *task, const cdl_workers *wor
                                           err);
     return st;
 }
+
+/* A rank's dealt share as a task of its own: its local items, a unit a
+ * chunk, each run as the unit's items. */
+typedef struct dealt_run {
+    const cdl_pool_task *task;
+    const cdl_rank_deal *deal;
+} dealt_run;
+
+static cdl_status run_dealt_unit(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
+{
+    const dealt_run *d = shared;
+    size_t first = cdl_rank_deal_item(d->deal, d->deal->rank, begin);
+    return d->task->run(d->task->shared, local, first, first + (end - begin), err);
+}
+
+cdl_status cdl_pool_run_dealt(const cdl_pool_task *task, const cdl_workers *workers, const cdl_rank_deal *deal,
+                              cdl_error *err)
+{
+    cdl_rank_group *group = workers->ranks;
+    if (cdl_rank_group_count(group) == 1) return cdl_pool_run_shared(task, workers, err);
+    if (deal->count != task->count || deal->unit != (task->chunk ? task->chunk : 1) || deal->ranks != group->count ||
+        deal->rank != group->rank)
+        return cdl_error_set(err, CDL_ERR_USAGE, "pool: a dealt task's deal is not of its items, chunk and ranks");
+    dealt_run d = {task, deal};
+    cdl_pool_task mine = *task;
+    mine.count = cdl_rank_deal_share(deal, group->rank);
+    mine.run = run_dealt_unit;
+    mine.shared = &d;
+    double t0 = cdl_pool_now_seconds();
+    cdl_status st = mine.count ? run_items(&mine, 0, mine.count, workers->threads, workers->progress,
+                                           &group->work_cpu_seconds, err)
+                               : CDL_OK;
+    group->work_seconds += cdl_pool_now_seconds() - t0;
+    st = cdl_rank_agree(group, st, err);
+    for (int k = 0; st == CDL_OK && k < CDL_POOL_OUTPUTS_MAX; ++k)
+        if (task->outputs[k].base)
+            st = cdl_rank_gather_dealt(group, deal, task->outputs[k].base, task->outputs[k].stride, err);
+    return st;
+}

@@ -87,6 +87,17 @@ cdl_status cdl_pool_run(const cdl_pool_task *task, int threads, const cdl_progre
  * not divide CDL_RANK_KEEP_ALIGN. */
 cdl_status cdl_pool_run_shared(const cdl_pool_task *task, const cdl_workers *workers, cdl_error *err);
 
+/* The task's items dealt among the ranks of `workers` (rank_group.h's
+ * cdl_rank_deal, in units of the task's chunk): each rank runs its share on
+ * its threads, the ranks agree on how it went, and each of the task's
+ * outputs, written at item i's row cdl_rank_deal_row(deal, i) (rows
+ * cdl_rank_deal_rows of them), is gathered into rank 0's rows
+ * (cdl_rank_gather_dealt). `deal` must be cdl_rank_deal_make(workers->ranks,
+ * task->count, task->chunk). Without ranks (or of one), cdl_pool_run.
+ * Errors as cdl_pool_run_shared's. */
+cdl_status cdl_pool_run_dealt(const cdl_pool_task *task, const cdl_workers *workers, const cdl_rank_deal *deal,
+                              cdl_error *err);
+
 /* Cores online (at least 1). */
 int cdl_pool_cpu_count(void);
 

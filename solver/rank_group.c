@@ -7,6 +7,7 @@
 
 #include "base/error_report.h"
 #include "base/sized_struct.h"
+#include "solver/pool.h"
 
 cdl_status cdl_rank_group_init(cdl_rank_group *group, const cdl_ranks *ranks, cdl_error *err)
 {
@@ -181,6 +182,82 @@ cdl_status cdl_rank_allgather_list(cdl_rank_group *group, const void *mine, size
     return CDL_OK;
 }
 
+/* ---- items dealt in units ------------------------------------------------------- */
+
+cdl_rank_deal cdl_rank_deal_make(const cdl_rank_group *group, size_t count, size_t unit)
+{
+    cdl_rank_deal d = {count, unit ? unit : 1, cdl_rank_group_rank(group), cdl_rank_group_count(group)};
+    return d;
+}
+
+size_t cdl_rank_deal_share(const cdl_rank_deal *d, int rank)
+{
+    size_t units = d->count / d->unit + (d->count % d->unit != 0), r = (size_t)rank, n = (size_t)d->ranks;
+    if (units <= r) return 0;
+    size_t mine = (units - r + n - 1) / n, items = mine * d->unit;
+    /* the last unit, short when the items do not fill it, may be this rank's */
+    if ((units - 1) % n == r) items -= units * d->unit - d->count;
+    return items;
+}
+
+size_t cdl_rank_deal_item(const cdl_rank_deal *d, int rank, size_t local)
+{
+    size_t unit = (size_t)rank + (size_t)d->ranks * (local / d->unit);
+    return unit * d->unit + local % d->unit;
+}
+
+size_t cdl_rank_deal_rows(const cdl_rank_deal *d)
+{
+    return d->rank == 0 ? d->count : cdl_rank_deal_share(d, d->rank);
+}
+
+size_t cdl_rank_deal_row(const cdl_rank_deal *d, size_t item)
+{
+    if (d->rank == 0) return item;
+    /* item = (rank + ranks j) unit + k: this rank's j-th unit */
+    return item / d->unit / (size_t)d->ranks * d->unit + item % d->unit;
+}
+
+/* The dealt rows laid end to end in rank order (rank r's from starts[r])
+ * travel in windows; rank 0 puts the others' rows of each window at their
+ * items' indices. */
+cdl_status cdl_rank_gather_dealt(cdl_rank_group *group, const cdl_rank_deal *deal, void *base, size_t stride,
+                                 cdl_error *err)
+{
+    if (!several(group) || deal->count == 0 || stride == 0) return CDL_OK;
+    int n = group->count, me = group->rank;
+    size_t *starts = malloc(((size_t)n + 1) * sizeof *starts), *offsets = malloc(((size_t)n + 1) * sizeof *offsets);
+    size_t rows = CDL_RANK_WINDOW_BYTES / stride ? CDL_RANK_WINDOW_BYTES / stride : 1;
+    unsigned char *window = malloc(rows * stride);
+    cdl_status st = starts && offsets && window ? CDL_OK : cdl_error_out_of_memory(err);
+    if (st == CDL_OK) starts[0] = 0;
+    for (int k = 0; st == CDL_OK && k < n; ++k) starts[k + 1] = starts[k] + cdl_rank_deal_share(deal, k);
+    unsigned char *rows_at = base;
+    char message[CDL_ERROR_MESSAGE_SIZE] = "";
+    for (size_t a = 0; st == CDL_OK && a < deal->count; a += rows) {
+        size_t b = deal->count - a > rows ? a + rows : deal->count;
+        for (int k = 0; k <= n; ++k) offsets[k] = ((starts[k] < a ? a : starts[k] > b ? b : starts[k]) - a) * stride;
+        /* this rank's rows of the window (rank 0's stay where they are) */
+        if (me != 0 && offsets[me + 1] > offsets[me])
+            memcpy(window + offsets[me], rows_at + (a + offsets[me] / stride - starts[me]) * stride,
+                   offsets[me + 1] - offsets[me]);
+        if (group->ranks.gather(group->ranks.user, window, offsets, message) != 0) {
+            st = exchange_failed("gather", message, err);
+            break;
+        }
+        for (int k = 1; me == 0 && k < n; ++k)
+            for (size_t s = offsets[k] / stride; s < offsets[k + 1] / stride; ++s) {
+                size_t item = cdl_rank_deal_item(deal, k, a + s - starts[k]);
+                memcpy(rows_at + item * stride, window + s * stride, stride);
+            }
+    }
+    if (st == CDL_OK && me == 0) group->bytes_received += (deal->count - starts[1]) * stride;
+    free(starts);
+    free(offsets);
+    free(window);
+    return st;
+}
+
 cdl_status cdl_rank_broadcast(cdl_rank_group *group, void *buffer, size_t bytes, cdl_error *err)
 {
     if (!several(group) || bytes == 0) return CDL_OK;
@@ -211,4 +288,29 @@ cdl_status cdl_rank_sum_u64(cdl_rank_group *group, uint64_t *values, size_t n, c
 cdl_status cdl_rank_max_u64(cdl_rank_group *group, uint64_t *values, size_t n, cdl_error *err)
 {
     return reduce(group, values, n, CDL_RANKS_MAX, err);
+}
+
+cdl_status cdl_rank_reports_gather(cdl_rank_group *group, int threads, double t0, double cpu0, double work_seconds,
+                                   cdl_rank_report **out, cdl_error *err)
+{
+    *out = NULL;
+    size_t n = (size_t)cdl_rank_group_count(group);
+    int rank = cdl_rank_group_rank(group);
+    cdl_rank_report *reports = calloc(n, sizeof *reports);
+    if (!reports) return cdl_error_out_of_memory(err);
+    cdl_rank_report *mine = &reports[rank];
+    mine->threads = (uint64_t)threads;
+    mine->bytes_received = group ? group->bytes_received : 0;
+    mine->seconds = cdl_pool_now_seconds() - t0;
+    mine->work_seconds = group ? group->work_seconds : work_seconds;
+    mine->work_cpu_seconds = group ? group->work_cpu_seconds : 0.0;
+    mine->cpu_seconds = cdl_pool_cpu_seconds() - cpu0;
+    mine->peak_rss_bytes = cdl_pool_peak_rss_bytes();
+    cdl_status st = cdl_rank_gather_items(group, reports, sizeof *reports, n, 1, err);
+    if (st != CDL_OK || rank != 0) {
+        free(reports);
+        return st;
+    }
+    *out = reports;
+    return CDL_OK;
 }

@@ -76,11 +76,71 @@ cdl_status cdl_rank_gather_items(cdl_rank_group *group, void *base, size_t strid
 cdl_status cdl_rank_allgather_list(cdl_rank_group *group, const void *mine, size_t mine_count, size_t stride,
                                    void **all, size_t *all_count, cdl_error *err);
 
+/* Items dealt among the ranks like cards: units of `unit` consecutive
+ * items, unit k to rank k mod count, so that each rank's share samples the
+ * whole range (items whose cost varies along the range, a room's points
+ * from its window inwards, are shared evenly, as contiguous blocks would
+ * not). A dealt task writes item i's outputs at row cdl_rank_deal_row(i):
+ * rank 0 holds a row for every item (i itself), each other rank only rows
+ * for its own items, in their order (cdl_rank_deal_rows of them), which
+ * cdl_rank_gather_dealt sends to rank 0's rows. With one rank every item is
+ * its own row. */
+typedef struct cdl_rank_deal {
+    size_t count;             /* items */
+    size_t unit;              /* items a unit, >= 1 */
+    int rank, ranks;          /* this rank and the group's count */
+} cdl_rank_deal;
+
+/* The deal of `count` items in units of `unit` (0 taken as 1) among `group`'s ranks (NULL: one). */
+cdl_rank_deal cdl_rank_deal_make(const cdl_rank_group *group, size_t count, size_t unit);
+
+/* Items rank `rank` is dealt. */
+size_t cdl_rank_deal_share(const cdl_rank_deal *deal, int rank);
+
+/* This rank's `local`-th item (local < its share): its index among all items. */
+size_t cdl_rank_deal_item(const cdl_rank_deal *deal, int rank, size_t local);
+
+/* Rows this rank's outputs need: every item's on rank 0, its share elsewhere. */
+size_t cdl_rank_deal_rows(const cdl_rank_deal *deal);
+
+/* The row of item i (one of this rank's items, or any on rank 0). */
+size_t cdl_rank_deal_row(const cdl_rank_deal *deal, size_t item);
+
+/* The rows of `stride` bytes at `base` (cdl_rank_deal_rows of them) of
+ * every rank's items into rank 0's rows, in windows of at most
+ * CDL_RANK_WINDOW_BYTES (one row when a row is larger): afterwards rank 0
+ * holds every item's row at its index; the others' rows are unchanged. */
+cdl_status cdl_rank_gather_dealt(cdl_rank_group *group, const cdl_rank_deal *deal, void *base, size_t stride,
+                                 cdl_error *err);
+
 /* Rank 0's `bytes` bytes at `buffer` copied to every rank's. */
 cdl_status cdl_rank_broadcast(cdl_rank_group *group, void *buffer, size_t bytes, cdl_error *err);
 
 /* values[0 .. n - 1] summed, or their maximum taken, over the ranks. */
 cdl_status cdl_rank_sum_u64(cdl_rank_group *group, uint64_t *values, size_t n, cdl_error *err);
 cdl_status cdl_rank_max_u64(cdl_rank_group *group, uint64_t *values, size_t n, cdl_error *err);
+
+/* One rank of a solve (or an annual study) shared by ranks, for
+ * summary.json; a run in one process has one. */
+typedef struct cdl_rank_report {
+    uint64_t threads;                 /* its worker threads */
+    uint64_t bytes_received;          /* in the exchanges of results and records */
+    double seconds;                   /* from the start of its run to the end of the last exchange */
+    double work_seconds;              /* computing its shares of the work (waits and exchanges excluded) */
+    double work_cpu_seconds;          /* its worker threads' CPU time computing its shares: the work split,
+                                         whatever else the machine runs */
+    double cpu_seconds;               /* CPU time of its run, all its threads together (MPI's waits
+                                         included: they spin) */
+    uint64_t peak_rss_bytes;          /* the most memory its process held resident, up to the end of the run */
+} cdl_rank_report;
+
+/* Every rank's report gathered on rank 0: each rank's `threads`, its
+ * seconds since `t0` and CPU seconds since `cpu0` (cdl_pool_now_seconds,
+ * cdl_pool_cpu_seconds), the group's bytes received and work seconds
+ * (`work_seconds` where the group is NULL), its peak memory. On rank 0
+ * *reports (malloc'd, the caller frees) holds cdl_rank_group_count of
+ * them; elsewhere *reports is NULL. A collective. */
+cdl_status cdl_rank_reports_gather(cdl_rank_group *group, int threads, double t0, double cpu0, double work_seconds,
+                                   cdl_rank_report **reports, cdl_error *err);
 
 #endif

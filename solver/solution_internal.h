@@ -18,6 +18,7 @@
 
 #include "base/error_report.h"
 #include "solver/grid/grid.h"
+#include "solver/rank_group.h"
 #include "solver/scene/scene_internal.h"
 #include "solver/solution.h"
 
@@ -118,20 +119,6 @@ typedef struct cdl_surface_shape {
     double *xyz, *normal;
     uint32_t *triangles;
 } cdl_surface_shape;
-
-/* One rank of a solve shared by ranks (solve_ranks.h), for summary.json;
- * a solve in one process has one. */
-typedef struct cdl_rank_report {
-    uint64_t threads;                 /* its worker threads */
-    uint64_t bytes_received;          /* in the exchanges of results and records */
-    double seconds;                   /* from the start of its solve to the end of the last exchange */
-    double work_seconds;              /* computing its shares of the work (waits and exchanges excluded) */
-    double work_cpu_seconds;          /* its worker threads' CPU time computing its shares: the work split,
-                                         whatever else the machine runs */
-    double cpu_seconds;               /* CPU time of its solve, all its threads together (MPI's waits
-                                         included: they spin) */
-    uint64_t peak_rss_bytes;          /* the most memory its process held resident, up to the end of the solve */
-} cdl_rank_report;
 
 struct cdl_solution {
     cdl_method method;                /* the method actually used */

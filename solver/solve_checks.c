@@ -211,6 +211,16 @@ cdl_status cdl_solve_check_lights(const cdl_scene *scene, const cdl_direct_conte
                      "the scene is in metres",
                      c.x, c.y, c.z);
         }
+        if (light->sealed_by) {
+            st = cdl_solution_add_warning(
+                out, err,
+                "%s adds nothing to any grid%s: it lies outside %s, a closed box that holds every point of the "
+                "solve, so none of its light can reach them, and it was left out of the solve (is the room meant "
+                "to have a window, an open face or a pane of glass?)%s%s",
+                light->label, out->surface_count ? " or surface map" : "", light->sealed_by, millimetres ? "; " : "",
+                mm);
+            continue;
+        }
         if (best[l] == REACH_LIT) {
             /* Lighting something from a kilometre away is still a slip. */
             if (millimetres) st = cdl_solution_add_warning(out, err, "%s: %s", light->label, mm);

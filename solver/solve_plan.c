@@ -23,6 +23,7 @@
 #include "solver/scene/scene_occluders.h"
 #include "solver/solve_cache.h"
 #include "solver/solve_observers.h"
+#include "solver/solve_sealed.h"
 
 /* Ambient-occlusion samples per point implied by the quality level (an
  * explicit ao_samples overrides). Direct light samples to the target. */
@@ -265,6 +266,8 @@ cdl_status cdl_solve_plan(cdl_solve_state *state, cdl_error *err)
         st = plan_grid(state, g, err);
         if (st != CDL_OK) return st;
     }
+    /* before the observers copy the lights */
+    cdl_solve_seal_lights(state);
     st = cdl_solve_plan_observers(state, err);
     if (st != CDL_OK) return st;
     if (state->options.cache_path) {

@@ -110,25 +110,12 @@ cdl_status cdl_solve_ranks_collect_job(cdl_solve_state *state, cdl_grid_job *job
 
 cdl_status cdl_solve_ranks_report(cdl_solve_state *state, double t0, double cpu0, cdl_error *err)
 {
-    cdl_rank_group *group = state->ranks;
-    size_t n = (size_t)cdl_rank_group_count(group);
-    int rank = cdl_rank_group_rank(group);
-    cdl_rank_report *reports = calloc(n, sizeof *reports);
-    if (!reports) return cdl_error_out_of_memory(err);
-    reports[rank].threads = (uint64_t)state->threads;
-    reports[rank].bytes_received = group ? group->bytes_received : 0;
-    reports[rank].seconds = cdl_pool_now_seconds() - t0;
-    reports[rank].work_seconds = group ? group->work_seconds : state->out->compute_seconds;
-    reports[rank].work_cpu_seconds = group ? group->work_cpu_seconds : 0.0;
-    reports[rank].cpu_seconds = cdl_pool_cpu_seconds() - cpu0;
-    reports[rank].peak_rss_bytes = cdl_pool_peak_rss_bytes();
-    cdl_status st = cdl_rank_gather_items(group, reports, sizeof *reports, n, 1, err);
-    if (st != CDL_OK || rank != 0) {
-        free(reports);
-        return st;
-    }
+    cdl_rank_report *reports = NULL;
+    cdl_status st = cdl_rank_reports_gather(state->ranks, state->threads, t0, cpu0, state->out->compute_seconds,
+                                            &reports, err);
+    if (st != CDL_OK || !reports) return st;
     state->out->ranks = reports;
-    state->out->rank_count = n;
+    state->out->rank_count = (size_t)cdl_rank_group_count(state->ranks);
     return CDL_OK;
 }
 

@@ -1,6 +1,6 @@
 /* cli_ranks.h - the ranks a command runs on: the world of an MPI launcher, or this process alone.
  *
- * `candela solve` and `candela bench` share their work among the ranks
+ * `candela solve`, `candela bench` and `candela annual` share their work among the ranks
  * when started by an MPI launcher (mpirun, mpiexec, srun with PMI or
  * PMIx: their environment says so), in a build with MPI (CMake option
  * CANDELA_MPI); otherwise, and for every other command, a process is alone

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "cli_args.h"
+#include "cli_ranks.h"
 #include "command.h"
 #include "daylight/annual.h"
 #include "solver/output/solution_write.h"
@@ -40,8 +41,9 @@ static void print_help(FILE *out)
           "                      (rho E_global / pi; default 0: the scene's surfaces are\n"
           "                      its ground)\n"
           "  --north X,Y,Z       the direction of north (default 0,1,0)\n"
-          "  --threads N         worker threads, 0 all cores (default: the scene's\n"
-          "                      \"threads\"); results do not depend on N\n"
+          "  --threads N         worker threads, 0 all cores (under mpirun the cores of\n"
+          "                      the rank's binding; default: the scene's \"threads\");\n"
+          "                      results do not depend on N\n"
           "  --ocio CONFIG       OpenColorIO config for the maps\n"
           "  --quiet             no progress on stderr\n"
           "\n"
@@ -55,6 +57,14 @@ static void print_help(FILE *out)
           "and polygon grids); and summary.json: per grid sDA300/50%, ASE1000,250h,\n"
           "the UDI shares, EN 17037's daylight provision per level, the coefficients'\n"
           "stated error; the weather, the sky, the occupancy, the time of each step.\n"
+          "\n"
+          "Many processes (MPI): mpirun -np N candela annual ... (or srun, or mpirun\n"
+          "with a hostfile) deals the skies, the points' coefficients and the hours'\n"
+          "direct sun among N ranks, each with its threads; rank 0 makes the hours,\n"
+          "the metrics and the files, the same bytes as one process (summary.json's\n"
+          "\"ranks\" says how each rank's share went). Every rank reads the scene and\n"
+          "the weather file; one that cannot ends every rank (exit 1, its message).\n"
+          "Needs a build with MPI (CANDELA_MPI).\n"
           "\n"
           "exit status: 0 success, 1 bad scene, weather or occupancy file (the message\n"
           "names the file, line and field), 2 usage error, 3 internal failure\n",
@@ -119,7 +129,7 @@ static int read_options(cdl_cli_option *opts, size_t n, cdl_annual_options *o)
     return 0;
 }
 
-static void print_results(const cdl_annual_result *r, const char *out_dir)
+static void print_results(const cdl_annual_result *r, const char *out_dir, int ranks)
 {
     for (size_t g = 0; g < r->grid_count; ++g) {
         const cdl_annual_grid_result *x = &r->grids[g];
@@ -128,13 +138,53 @@ static void print_results(const cdl_annual_result *r, const char *out_dir)
                x->name, x->points, x->metrics.sDA300, x->metrics.ASE1000, x->metrics.UDI, x->metrics.UDI_fell_short,
                x->metrics.UDI_exceeded, x->metrics.en_level, x->stderr_mean_rel);
     }
-    printf("%zu hours (%zu with daylight, %zu occupied), %.3g s (coefficients %.3g s, direct sun %.3g s, hours %.3g s); "
-           "results in %s\n",
+    printf("%zu hours (%zu with daylight, %zu occupied), %.3g s (coefficients %.3g s, direct sun %.3g s, hours %.3g s)",
            r->hours, r->lit_hours, r->occupied_hours, r->seconds_total, r->seconds_coefficients, r->seconds_suns,
-           r->seconds_hours, out_dir);
+           r->seconds_hours);
+    if (ranks > 1) printf(", %d ranks", ranks);
+    printf("; results in %s\n", out_dir);
 }
 
-static int run(int argc, char **argv)
+/* The study on the ranks (one process alone without a launcher): every
+ * rank loads the scene and reads the weather; rank 0 prepares the folder,
+ * writes and prints; after each step the ranks agree on how it went. */
+static int study(const char *scene_path, const char *weather, const char *out_dir, cdl_annual_options *o,
+                 cdl_cli_ranks *ranks)
+{
+    int root = cdl_cli_ranks_root(ranks);
+    double last = -1.0;
+    if (!root) o->progress.fn = NULL;
+    else if (o->progress.fn) o->progress.user = &last;
+    o->ranks = &ranks->group;
+    cdl_error err;
+    cdl_error_clear(&err);
+    cdl_scene *scene = NULL;
+    cdl_status status = cdl_cli_ranks_agree(ranks, cdl_scene_load(scene_path, &scene, &err), &err);
+    /* a folder made for this run and left empty by a failure is removed */
+    int folder_existed = root && access(out_dir, F_OK) == 0;
+    if (status == CDL_OK)
+        status = cdl_cli_ranks_agree(ranks, root ? cdl_solution_prepare_folder(out_dir, &err) : CDL_OK, &err);
+    int prepared = status == CDL_OK;
+    cdl_annual_result result;
+    memset(&result, 0, sizeof result);
+    if (status == CDL_OK) {
+        status = cdl_annual_run(scene, weather, o, out_dir, &result, &err);
+        if (status != CDL_OK && !ranks->group.failure_agreed && ranks->group.count > 1)
+            cdl_cli_ranks_abort(ranks, "annual", (int)status, &err);
+    }
+    if (status != CDL_OK) {
+        fprintf(stderr, "candela annual: %s\n", err.message);
+        if (root && prepared && !folder_existed) rmdir(out_dir); /* fails, as it should, unless empty */
+    } else if (root) {
+        print_results(&result, out_dir, ranks->group.count);
+    }
+    cdl_annual_result_release(&result);
+    cdl_scene_release(scene);
+    return (int)status;
+}
+
+/* The options, then the study; the exit status. */
+static int parse_and_study(int argc, char **argv, cdl_cli_ranks *ranks)
 {
     cdl_cli_option opts[] = {{"output", 'o', 1, 0, NULL},    {"weather", 0, 1, 0, NULL},
                              {"sky", 0, 1, 0, NULL},         {"mf", 0, 1, 0, NULL},
@@ -157,27 +207,17 @@ static int run(int argc, char **argv)
     if (st) return st;
     if (cdl_cli_parse_threads("annual", cdl_cli_find(opts, n, "threads"), &o.threads)) return CDL_EXIT_USAGE;
     if (cdl_cli_find(opts, n, "ocio")->present) o.ocio_config = cdl_cli_find(opts, n, "ocio")->value;
-    double last = -1.0;
-    if (!cdl_cli_find(opts, n, "quiet")->present && isatty(STDERR_FILENO)) {
-        o.progress.fn = progress;
-        o.progress.user = &last;
-    }
-    cdl_error err;
-    cdl_error_clear(&err);
-    cdl_scene *scene = NULL;
-    cdl_status status = cdl_scene_load(args.positional[0], &scene, &err);
-    if (status == CDL_OK) status = cdl_solution_prepare_folder(out->value, &err);
-    cdl_annual_result result;
-    if (status == CDL_OK) status = cdl_annual_run(scene, weather->value, &o, out->value, &result, &err);
-    if (status != CDL_OK) {
-        fprintf(stderr, "candela annual: %s\n", err.message);
-        cdl_scene_release(scene);
-        return (int)status;
-    }
-    print_results(&result, out->value);
-    cdl_annual_result_release(&result);
-    cdl_scene_release(scene);
-    return CDL_EXIT_OK;
+    if (!cdl_cli_find(opts, n, "quiet")->present && isatty(STDERR_FILENO)) o.progress.fn = progress;
+    return study(args.positional[0], weather->value, out->value, &o, ranks);
+}
+
+static int run(int argc, char **argv)
+{
+    cdl_cli_ranks ranks;
+    int status = cdl_cli_ranks_begin("annual", &ranks);
+    if (status == 0) status = parse_and_study(argc, argv, &ranks);
+    cdl_cli_ranks_end(&ranks);
+    return status;
 }
 
 const cdl_command cdl_command_annual = {"annual", "a year of daylight from a weather file: DA, sDA, ASE, UDI, EN 17037",

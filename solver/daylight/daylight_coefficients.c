@@ -110,6 +110,7 @@ typedef struct job {
     const cdl_grid *grid;
     uint64_t grid_key;
     cdl_daylight_grid_coefficients *out;
+    const cdl_rank_deal *deal;            /* point i's outputs at row cdl_rank_deal_row(deal, i) */
 } job;
 
 typedef struct piece_sink {
@@ -395,10 +396,11 @@ static void point_coefficients(const job *jb, worker *w, size_t i)
     size_t K = (size_t)o->patches->count, S = o->sun_count;
     cdl_vec3 p = jb->grid->points[i], n = jb->grid->normals[i];
     uint64_t stream = cdl_rng_stream_id(jb->grid_key, (uint64_t)i, 0x636f6566 /* "coef" */);
+    size_t row = cdl_rank_deal_row(jb->deal, i);
     int exact = direct_exact(jb, w, stream, p, n);
-    out->exact[i] = (unsigned char)exact;
+    out->exact[row] = (unsigned char)exact;
     if (out->direct)
-        for (size_t k = 0; k < K; ++k) out->direct[i * K + k] = (float)w->direct[k];
+        for (size_t k = 0; k < K; ++k) out->direct[row * K + k] = (float)w->direct[k];
     double E_direct = 0.0;
     for (size_t k = 0; k < K; ++k) E_direct += w->direct[k] * reference(o, (int)k);
     memset(w->acc, 0, K * sizeof *w->acc);
@@ -424,19 +426,19 @@ static void point_coefficients(const job *jb, worker *w, size_t i)
         sun_mean = cdl_estimate_mean(&eu);
         sun_var = cdl_estimate_variance(&eu);
     }
-    float *row = out->sky + i * out->patches;
+    float *sky = out->sky + row * out->patches;
     double E_reference = E_direct;
     for (size_t k = 0; k < K; ++k) {
         double c = w->direct[k] + (stage > 0.0 ? w->acc[k] / stage : 0.0);
-        if (!o->collapse) row[k] = (float)c;
+        if (!o->collapse) sky[k] = (float)c;
         E_reference += (stage > 0.0 ? w->acc[k] / stage : 0.0) * reference(o, (int)k);
     }
-    if (o->collapse) row[0] = (float)E_reference;
-    out->sky_rel_stderr[i] = E_reference > 0.0 ? sqrt(sky_var) / E_reference : 0.0;
+    if (o->collapse) sky[0] = (float)E_reference;
+    out->sky_rel_stderr[row] = E_reference > 0.0 ? sqrt(sky_var) / E_reference : 0.0;
     if (S) {
-        float *srow = out->sun + i * S;
+        float *srow = out->sun + row * S;
         for (size_t s = 0; s < S; ++s) srow[s] = (float)(stage > 0.0 ? w->sun_acc[s] / stage : 0.0);
-        out->sun_rel_stderr[i] = sun_mean > 0.0 ? sqrt(sun_var) / sun_mean : 0.0;
+        out->sun_rel_stderr[row] = sun_mean > 0.0 ? sqrt(sun_var) / sun_mean : 0.0;
     }
 }
 
@@ -483,13 +485,16 @@ cdl_status cdl_daylight_coefficients_compute(const cdl_daylight_scene *ds, size_
     out->points = N;
     out->patches = o->collapse ? 1 : K;
     out->suns = S;
-    out->sky = malloc((N ? N : 1) * out->patches * sizeof *out->sky);
-    out->sky_rel_stderr = calloc(N ? N : 1, sizeof *out->sky_rel_stderr);
-    out->exact = calloc(N ? N : 1, sizeof *out->exact);
-    if (o->keep_direct) out->direct = malloc((N ? N : 1) * K * sizeof *out->direct);
+    /* rank 0 (or one process) a row for every point, another rank its own points' */
+    cdl_rank_deal deal = cdl_daylight_coefficients_deal(o->ranks, N);
+    size_t rows = cdl_rank_deal_rows(&deal) ? cdl_rank_deal_rows(&deal) : 1;
+    out->sky = malloc(rows * out->patches * sizeof *out->sky);
+    out->sky_rel_stderr = calloc(rows, sizeof *out->sky_rel_stderr);
+    out->exact = calloc(rows, sizeof *out->exact);
+    if (o->keep_direct) out->direct = malloc(rows * K * sizeof *out->direct);
     if (S) {
-        out->sun = malloc((N ? N : 1) * S * sizeof *out->sun);
-        out->sun_rel_stderr = calloc(N ? N : 1, sizeof *out->sun_rel_stderr);
+        out->sun = malloc(rows * S * sizeof *out->sun);
+        out->sun_rel_stderr = calloc(rows, sizeof *out->sun_rel_stderr);
     }
     worker *w = calloc((size_t)threads, sizeof *w);
     int ok = out->sky && out->sky_rel_stderr && out->exact && (!o->keep_direct || out->direct) &&
@@ -503,28 +508,52 @@ cdl_status cdl_daylight_coefficients_compute(const cdl_daylight_scene *ds, size_
         w[t].t_den = malloc(K * sizeof(double));
         ok = w[t].direct && w[t].acc && w[t].full && w[t].sun_acc && w[t].t_num && w[t].t_den;
     }
-    if (!ok) {
+    /* every rank goes on to the shared task, or none does */
+    cdl_status st = cdl_rank_agree(o->ranks, ok ? CDL_OK : cdl_error_out_of_memory(err), err);
+    if (st != CDL_OK) {
         workers_release(w, threads);
         cdl_daylight_coefficients_release(out);
-        return cdl_error_out_of_memory(err);
+        return st;
     }
-    job jb = {ds, o, grid, grid_key(ds->scene->grids[g].name), out};
+    job jb = {ds, o, grid, grid_key(ds->scene->grids[g].name), out, &deal};
     char stage[160];
     snprintf(stage, sizeof stage, "grid %s: daylight coefficients", ds->scene->grids[g].name);
-    /* points differ a hundredfold in cost: small chunks keep threads busy */
-    cdl_pool_task task = {.count = N, .chunk = 2, .run = run_points, .shared = &jb, .locals = w,
-                          .local_size = sizeof *w, .stage = stage};
-    cdl_status st = cdl_pool_run(&task, threads, &o->progress, err);
+    cdl_pool_task task = {.count = N, .chunk = deal.unit, .run = run_points, .shared = &jb, .locals = w,
+                          .local_size = sizeof *w, .stage = stage,
+                          .outputs = {{out->sky, out->patches * sizeof *out->sky},
+                                      {out->sky_rel_stderr, sizeof *out->sky_rel_stderr},
+                                      {out->exact, sizeof *out->exact},
+                                      {out->direct, K * sizeof *out->direct},
+                                      {out->sun, S * sizeof *out->sun},
+                                      {out->sun_rel_stderr, sizeof *out->sun_rel_stderr}}};
+    cdl_workers workers = {.threads = threads, .progress = &o->progress, .ranks = o->ranks};
+    st = cdl_pool_run_dealt(&task, &workers, &deal, err);
+    /* the counts, per route reason then the totals, over the ranks */
+    uint64_t counts[CDL_ROUTE_COUNT + 4] = {0};
     for (int t = 0; t < threads; ++t) {
-        out->paths += w[t].paths;
-        out->rays += w[t].rays;
-        out->routes.exact += w[t].routes.exact;
-        out->routes.through_glass += w[t].routes.through_glass;
-        for (int r = 0; r < CDL_ROUTE_COUNT; ++r) out->routes.sampled[r] += w[t].routes.sampled[r];
+        for (int r = 0; r < CDL_ROUTE_COUNT; ++r) counts[r] += w[t].routes.sampled[r];
+        counts[CDL_ROUTE_COUNT] += w[t].routes.exact;
+        counts[CDL_ROUTE_COUNT + 1] += w[t].routes.through_glass;
+        counts[CDL_ROUTE_COUNT + 2] += w[t].paths;
+        counts[CDL_ROUTE_COUNT + 3] += w[t].rays;
     }
     workers_release(w, threads);
+    if (st == CDL_OK) st = cdl_rank_sum_u64(o->ranks, counts, sizeof counts / sizeof *counts, err);
+    for (int r = 0; r < CDL_ROUTE_COUNT; ++r) out->routes.sampled[r] = (size_t)counts[r];
+    out->routes.exact = (size_t)counts[CDL_ROUTE_COUNT];
+    out->routes.through_glass = (size_t)counts[CDL_ROUTE_COUNT + 1];
+    out->paths = counts[CDL_ROUTE_COUNT + 2];
+    out->rays = counts[CDL_ROUTE_COUNT + 3];
     if (st != CDL_OK) cdl_daylight_coefficients_release(out);
     return st;
+}
+
+/* Points differ a hundredfold in cost (those far from a window take the
+ * most paths): units of 2 points keep threads busy and deal every rank
+ * points from the whole grid. */
+cdl_rank_deal cdl_daylight_coefficients_deal(cdl_rank_group *ranks, size_t points)
+{
+    return cdl_rank_deal_make(ranks, points, 2);
 }
 
 void cdl_daylight_coefficients_release(cdl_daylight_grid_coefficients *c)

@@ -59,6 +59,7 @@
 #include "solver/direct/direct.h"
 #include "solver/grid/grid.h"
 #include "solver/progress.h"
+#include "solver/rank_group.h"
 #include "solver/scene/scene_internal.h"
 
 /* A scene's geometry and grids, built once for its coefficients and its
@@ -91,6 +92,10 @@ typedef struct cdl_daylight_coefficient_options {
                                            * (sampled points get 0 and exact[i] 0) */
     uint64_t seed;
     int threads;                          /* >= 1 */
+    cdl_rank_group *ranks;                /* NULL: this process computes every point; else the points are
+                                           * dealt among the ranks (rank_group.h, in the pool's chunks) and
+                                           * rank 0 ends with every point's coefficients, the others with
+                                           * their own points' rows only (cdl_rank_deal_row) */
     double max_paths;                     /* most paths a point */
     cdl_progress_sink progress;
 } cdl_daylight_coefficient_options;
@@ -115,11 +120,17 @@ typedef struct cdl_daylight_grid_coefficients {
     uint64_t paths, rays;
 } cdl_daylight_grid_coefficients;
 
-/* The coefficients of grid g. */
+/* The coefficients of grid g. With ranks, a collective: the counts of
+ * paths, rays and routes are every rank's summed; rank 0's arrays hold every
+ * point's row, another rank's only its own points' (at
+ * cdl_rank_deal_row of the deal cdl_daylight_coefficients_deal gives). */
 cdl_status cdl_daylight_coefficients_compute(const cdl_daylight_scene *ds, size_t g,
                                              const cdl_daylight_coefficient_options *options,
                                              cdl_daylight_grid_coefficients *out, cdl_error *err);
 void cdl_daylight_coefficients_release(cdl_daylight_grid_coefficients *c);
+
+/* How the points of a grid of `points` are dealt among `ranks` (NULL: one process). */
+cdl_rank_deal cdl_daylight_coefficients_deal(cdl_rank_group *ranks, size_t points);
 
 /* The direct sun at each point of grid g per lx of direct normal
  * illuminance: max(0, n.s) times what the panes on the way let through (0

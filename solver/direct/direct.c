@@ -222,6 +222,7 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
     double E = 0.0, free_E = 0.0;
     for (size_t l = 0; l < ctx->light_count; ++l) {
         const cdl_scene_light *light = &ctx->lights[l];
+        if (light->sealed_by) continue;
         if (cdl_emitter_is_delta(light->emitter)) {
             cdl_delta_light d;
             double e = delta_unshadowed(light, p, n, &d);

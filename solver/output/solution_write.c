@@ -17,6 +17,7 @@
 #include "base/strings.h"
 #include "solver/output/glare_output.h"
 #include "solver/output/grid_result.h"
+#include "solver/output/ranks_json.h"
 #include "solver/output/surface_output.h"
 #include "solver/scene/scene_internal.h"
 #include "solver/solution_internal.h"
@@ -116,32 +117,6 @@ static void add_surfaces(cJSON *root, const cdl_scene *scene, const cdl_solution
         cJSON_AddNumberToObject(o, "vertices", (double)st.vertices);
         cJSON_AddNumberToObject(o, "triangles", (double)st.triangles);
         cJSON_AddItemToArray(list, o);
-    }
-}
-
-/* "ranks": the processes that shared the solve (solve_ranks.h), each with
- * its threads, seconds, seconds and CPU seconds computing its share, CPU
- * seconds in all, bytes received and peak resident memory. */
-static void add_ranks(cJSON *root, const cdl_solution *sol)
-{
-    cJSON *ranks = cJSON_AddObjectToObject(root, "ranks");
-    size_t n = sol->rank_count;
-    cJSON_AddNumberToObject(ranks, "count", n ? (double)n : 1.0);
-    cJSON *threads = cJSON_AddArrayToObject(ranks, "threads");
-    cJSON *seconds = cJSON_AddArrayToObject(ranks, "seconds");
-    cJSON *work = cJSON_AddArrayToObject(ranks, "work_seconds");
-    cJSON *work_cpu = cJSON_AddArrayToObject(ranks, "work_cpu_seconds");
-    cJSON *cpu = cJSON_AddArrayToObject(ranks, "cpu_seconds");
-    cJSON *bytes = cJSON_AddArrayToObject(ranks, "bytes_received");
-    cJSON *rss = cJSON_AddArrayToObject(ranks, "peak_rss_bytes");
-    for (size_t r = 0; r < n; ++r) {
-        cJSON_AddItemToArray(threads, cJSON_CreateNumber((double)sol->ranks[r].threads));
-        cJSON_AddItemToArray(seconds, cJSON_CreateNumber(sol->ranks[r].seconds));
-        cJSON_AddItemToArray(work, cJSON_CreateNumber(sol->ranks[r].work_seconds));
-        cJSON_AddItemToArray(work_cpu, cJSON_CreateNumber(sol->ranks[r].work_cpu_seconds));
-        cJSON_AddItemToArray(cpu, cJSON_CreateNumber(sol->ranks[r].cpu_seconds));
-        cJSON_AddItemToArray(bytes, cJSON_CreateNumber((double)sol->ranks[r].bytes_received));
-        cJSON_AddItemToArray(rss, cJSON_CreateNumber((double)sol->ranks[r].peak_rss_bytes));
     }
 }
 
@@ -263,7 +238,7 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
     cJSON_AddNumberToObject(set, "direct_samples", sol->settings.direct_samples);
     cJSON_AddNumberToObject(set, "ao_samples", sol->settings.ao_samples);
     cJSON_AddNumberToObject(root, "seconds", sol->seconds);
-    add_ranks(root, sol);
+    cdl_ranks_json_add(root, sol->ranks, sol->rank_count);
     cJSON_AddNumberToObject(root, "rays", (double)sol->rays);
     cJSON *plan = cJSON_Parse(sol->plan_json ? sol->plan_json : "{}");
     if (plan) cJSON_AddItemToObject(root, "plan", plan);

@@ -70,9 +70,16 @@ void cdl_pathtrace_point(const cdl_pathtrace_context *ctx, uint64_t stream, cdl_
     double R = fmax(E_direct + cdl_estimate_mean(&pilot), 1e-3 * potential);
     double whole = ctx->target * ctx->target * R * R;
     double budget = fmax(whole - var_direct, 0.5 * whole);
-    cdl_estimate planning = pilot;
-    planning.var_num = paths_variance(&pilot, potential) * pilot.samples * pilot.samples;
-    double want = cdl_estimate_plan(&planning, budget, 2.0 * PILOT_SIDE * PILOT_SIDE);
+    double least = 2.0 * PILOT_SIDE * PILOT_SIDE, want;
+    if (pilot.nonzero == 0) {
+        /* A pilot that saw nothing: as many paths as hold what all of them
+         * could have missed to the budget (estimate.h). */
+        want = cdl_estimate_plan_unseen(potential, budget, least);
+    } else {
+        cdl_estimate planning = pilot;
+        planning.var_num = paths_variance(&pilot, potential) * pilot.samples * pilot.samples;
+        want = cdl_estimate_plan(&planning, budget, least);
+    }
     /* The reported stage: its size depends on the pilot only, so its mean
      * and its variance estimate are those of a fixed number of paths
      * (estimate.h). Should the pilot have seen too little, the stated error

@@ -75,6 +75,8 @@ typedef struct cdl_scene_light {
     char *model;                      /* NULL, or what the light was made from in words (a daylight sky and
                                        * its sun: scene_sky.h), for the plan; owned like the outline */
     int near_field_unspread;          /* near_field "always" on a file whose opening is not spread: a point */
+    const char *sealed_by;            /* NULL, or the JSON path of the closed box that keeps its light from
+                                       * every point of the solve (solver/solve_sealed.h): left out */
 } cdl_scene_light;
 
 /* The piece a light's own shadow rays and occluder tests pass through:
@@ -86,9 +88,11 @@ static inline uint32_t cdl_scene_light_own_piece(const cdl_scene_light *light)
     return light->owner != UINT32_MAX ? light->owner : light->has_body ? light->body : UINT32_MAX;
 }
 
-/* Does the light reach p at all as far as its near-field split goes? */
+/* Does the light reach p at all as far as its near-field split goes (and
+ * is it in the solve at all: not sealed out)? */
 static inline int cdl_scene_light_applies(const cdl_scene_light *light, cdl_vec3 p)
 {
+    if (light->sealed_by) return 0;
     if (!light->near_part) return 1;
     cdl_vec3 d = cdl_vec3_sub(p, light->near_center);
     int near = cdl_vec3_dot(d, d) < light->near_radius * light->near_radius;

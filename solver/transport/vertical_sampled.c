@@ -100,7 +100,7 @@ static sample_value radiance_along(const cdl_vertical_context *ctx, cdl_rng_key 
                                         : 0.0;
     for (size_t l = 0; l < d->light_count; ++l) {
         const cdl_scene_light *light = &d->lights[l];
-        if (!light->is_environment) continue; /* area emitters: emitter_samples */
+        if (!light->is_environment || light->sealed_by) continue; /* area emitters: emitter_samples */
         double L = cdl_emitter_radiance(light->emitter, p, w, w, NULL).cd_m2;
         if (!(L > 0.0)) continue;
         s.potential += CDL_PI * L;
@@ -232,9 +232,15 @@ void cdl_vertical_sampled_point(const cdl_vertical_context *ctx, uint64_t stream
         double reach = k ? 2.0 * potential : potential;
         double R = fmax(Ez_exact + cdl_estimate_mean(pilot), 1e-3 * reach);
         double budget = ctx->target * ctx->target * R * R;
-        cdl_estimate planning = *pilot;
-        planning.var_num = honest_variance(pilot, reach) * pilot->samples * pilot->samples;
-        if (budget > 0.0) want = fmax(want, cdl_estimate_plan(&planning, budget, 2.0 * PILOT_SIDE * PILOT_SIDE));
+        if (!(budget > 0.0)) continue;
+        if (pilot->nonzero == 0) {
+            /* nothing seen: enough that what was missed fits the budget (estimate.h) */
+            want = fmax(want, cdl_estimate_plan_unseen(reach, budget, want));
+        } else {
+            cdl_estimate planning = *pilot;
+            planning.var_num = honest_variance(pilot, reach) * pilot->samples * pilot->samples;
+            want = fmax(want, cdl_estimate_plan(&planning, budget, want));
+        }
     }
     if (want > ctx->max_samples) want = ctx->max_samples;
     /* The reported stage, its size fixed by the pilot alone. */

@@ -10,7 +10,13 @@
  * message, named unless every rank failed; a failing transport is an
  * internal error with its message; the worker pool shares a task's items
  * among the ranks, each item done once, its outputs everywhere or kept,
- * and a failure on one rank fails every rank. */
+ * and a failure on one rank fails every rank. Items dealt in units (the
+ * annual study's points and hours): every item dealt to one rank, the
+ * shares within a unit of each other, each rank's rows in its items'
+ * order; their rows gathered into rank 0's at the items' indices, in
+ * windows (rows smaller and larger than a window), the others' rows
+ * untouched; a dealt pool task done once per item, its outputs on rank 0,
+ * a failure every rank's. */
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdint.h>
@@ -67,11 +73,96 @@ static void check_blocks(size_t items, size_t align, int count)
     CHECK(largest - smallest <= 1);
 }
 
-/* ---- exchanges ------------------------------------------------------------------- */
-
 /* More than an exchange window: 1.5 M doubles, 12 MB. */
 #define BIG ((size_t)3 << 19)
 #define SENTINEL -1.0
+
+/* ---- items dealt in units ---------------------------------------------------------- */
+
+static void check_deal(size_t items, size_t unit, int count)
+{
+    unsigned char *seen = calloc(items ? items : 1, 1);
+    size_t smallest = SIZE_MAX, largest = 0, total = 0;
+    for (int r = 0; r < count; ++r) {
+        cdl_rank_deal d = {items, unit, r, count};
+        size_t share = cdl_rank_deal_share(&d, r);
+        total += share;
+        if (share < smallest) smallest = share;
+        if (share > largest) largest = share;
+        CHECK(cdl_rank_deal_rows(&d) == (r == 0 ? items : share));
+        for (size_t t = 0; t < share; ++t) {
+            size_t i = cdl_rank_deal_item(&d, r, t);
+            CHECK_MSG(i < items && !seen[i], "items %zu unit %zu: rank %d's item %zu: %zu", items, unit, r, t, i);
+            if (i >= items) continue;
+            seen[i] = 1;
+            /* unit k of the items goes to rank k mod count */
+            CHECK((int)(i / unit % (size_t)count) == r);
+            CHECK(cdl_rank_deal_row(&d, i) == (r == 0 ? i : t));
+        }
+    }
+    CHECK_MSG(total == items, "items %zu unit %zu ranks %d: %zu dealt", items, unit, count, total);
+    CHECK(largest - smallest <= unit);
+    free(seen);
+}
+
+/* Rows of `stride` bytes, each a run of one value: item i's is (i + 1) * 0.5. */
+typedef struct dealt_rows {
+    size_t items, stride;
+    unsigned char *rows[RANKS];
+    int ok[RANKS];
+} dealt_rows;
+
+static double row_value(const dealt_rows *x, const unsigned char *row)
+{
+    double v;
+    memcpy(&v, row, sizeof v);
+    for (size_t b = sizeof v; b + sizeof v <= x->stride; b += sizeof v) {
+        double w;
+        memcpy(&w, row + b, sizeof w);
+        if (w != v) return SENTINEL;
+    }
+    return v;
+}
+
+static void dealt_body(cdl_rank_group *g, void *user)
+{
+    dealt_rows *x = user;
+    cdl_rank_deal d = cdl_rank_deal_make(g, x->items, 3);
+    size_t rows = cdl_rank_deal_rows(&d), share = cdl_rank_deal_share(&d, g->rank);
+    unsigned char *at = x->rows[g->rank] = malloc(rows * x->stride);
+    int ok = at != NULL;
+    const double none = SENTINEL;
+    for (size_t r = 0; ok && r < rows; ++r)
+        for (size_t b = 0; b + sizeof none <= x->stride; b += sizeof none) memcpy(at + r * x->stride + b, &none, sizeof none);
+    for (size_t t = 0; ok && t < share; ++t) {
+        size_t i = cdl_rank_deal_item(&d, g->rank, t);
+        double v = ((double)i + 1.0) * 0.5;
+        for (size_t b = 0; b + sizeof v <= x->stride; b += sizeof v)
+            memcpy(at + cdl_rank_deal_row(&d, i) * x->stride + b, &v, sizeof v);
+    }
+    cdl_error err;
+    cdl_error_clear(&err);
+    uint64_t before = g->bytes_received;
+    ok &= cdl_rank_gather_dealt(g, &d, at, x->stride, &err) == CDL_OK;
+    for (size_t r = 0; ok && r < rows; ++r) {
+        size_t i = g->rank == 0 ? r : cdl_rank_deal_item(&d, g->rank, r);
+        ok &= row_value(x, at + r * x->stride) == ((double)i + 1.0) * 0.5;
+    }
+    ok &= g->bytes_received - before == (g->rank == 0 ? (x->items - share) * x->stride : 0);
+    x->ok[g->rank] = ok;
+    free(at);
+}
+
+static void check_dealt_rows(size_t items, size_t stride)
+{
+    dealt_rows x = {items, stride, {NULL}, {0}};
+    thread_world world = {0};
+    run_groups(&world, dealt_body, &x);
+    for (int r = 0; r < RANKS; ++r)
+        CHECK_MSG(x.ok[r], "%zu rows of %zu bytes: rank %d's rows wrong after the gather", items, stride, r);
+}
+
+/* ---- exchanges ------------------------------------------------------------------- */
 
 typedef struct exchanges {
     double *data[RANKS];      /* per rank */
@@ -219,6 +310,75 @@ static cdl_status square(void *shared, void *local, size_t begin, size_t end, cd
     return CDL_OK;
 }
 
+/* The dealt task writes item i at its row on this rank. */
+typedef struct dealt_square_job {
+    double *out;
+    shared_task *task;
+    const cdl_rank_deal *deal;
+} dealt_square_job;
+
+static cdl_status dealt_square(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
+{
+    (void)local;
+    dealt_square_job *job = shared;
+    for (size_t i = begin; i < end; ++i) {
+        if (i == job->task->fail_at) return cdl_error_set(err, CDL_ERR_INPUT, "item %zu refused", i);
+        job->out[cdl_rank_deal_row(job->deal, i)] = (double)i * (double)i;
+        atomic_fetch_add(&job->task->visits[i], 1);
+    }
+    return CDL_OK;
+}
+
+static void dealt_pool_body(cdl_rank_group *g, void *user)
+{
+    shared_task *t = user;
+    double *out = t->out[g->rank];
+    for (size_t i = 0; i < ITEMS; ++i) out[i] = SENTINEL;
+    cdl_rank_deal deal = cdl_rank_deal_make(g, ITEMS, 2);
+    dealt_square_job job = {out, t, &deal};
+    cdl_pool_task task = {.count = ITEMS, .chunk = 2, .run = dealt_square, .shared = &job,
+                          .outputs = {{out, sizeof *out}}};
+    cdl_workers workers = {.threads = 2, .ranks = g};
+    cdl_error err;
+    cdl_error_clear(&err);
+    t->got[g->rank] = cdl_pool_run_dealt(&task, &workers, &deal, &err);
+    snprintf(t->message[g->rank], sizeof t->message[g->rank], "%s", err.message);
+}
+
+static void check_dealt_pool(void)
+{
+    static shared_task t;
+    memset(&t, 0, sizeof t);
+    for (int r = 0; r < RANKS; ++r) t.out[r] = malloc(ITEMS * sizeof(double));
+    t.fail_at = SIZE_MAX;
+    thread_world world = {0};
+    run_groups(&world, dealt_pool_body, &t);
+    int once = 1;
+    for (size_t i = 0; i < ITEMS; ++i) once &= atomic_load(&t.visits[i]) == 1;
+    CHECK_MSG(once, "dealt: an item done other than once");
+    size_t wrong = 0;
+    for (size_t i = 0; i < ITEMS; ++i) wrong += t.out[0][i] != (double)i * (double)i;
+    CHECK_MSG(wrong == 0 && t.got[0] == CDL_OK, "dealt: rank 0 holds %zu items wrong", wrong);
+    for (int r = 1; r < RANKS; ++r) {
+        cdl_rank_deal d = {ITEMS, 2, r, RANKS};
+        size_t share = cdl_rank_deal_share(&d, r), bad = 0;
+        for (size_t k = 0; k < share; ++k) {
+            size_t i = cdl_rank_deal_item(&d, r, k);
+            bad += t.out[r][k] != (double)i * (double)i;
+        }
+        for (size_t k = share; k < ITEMS; ++k) bad += t.out[r][k] != SENTINEL;
+        CHECK_MSG(bad == 0 && t.got[r] == CDL_OK, "dealt: rank %d: %zu rows wrong", r, bad);
+    }
+    /* item 994 is in unit 497, rank 497 mod 3 = 2's: its failure is every rank's */
+    memset(t.visits, 0, sizeof t.visits);
+    t.fail_at = 994;
+    run_groups(&world, dealt_pool_body, &t);
+    for (int r = 0; r < RANKS; ++r)
+        CHECK_MSG(t.got[r] == CDL_ERR_INPUT && strcmp(t.message[r], "rank 2 of 3: item 994 refused") == 0,
+                  "rank %d: '%s'", r, t.message[r]);
+    for (int r = 0; r < RANKS; ++r) free(t.out[r]);
+}
+
 static void pool_body(cdl_rank_group *g, void *user)
 {
     shared_task *t = user;
@@ -286,6 +446,14 @@ int main(void)
     check_agreement();
     check_broken_transport();
     check_pool();
+    for (size_t items = 0; items < 40; ++items)
+        for (size_t unit = 1; unit <= 8; unit *= 2)
+            for (int count = 1; count <= 5; ++count) check_deal(items, unit, count);
+    check_deal(10000001, 16, 256);
+    check_dealt_rows(1000, 24);               /* several rows a window, one window */
+    check_dealt_rows(BIG / 4, 4 * sizeof(double)); /* 12 MB: two windows */
+    check_dealt_rows(5, ((size_t)9 << 20) / sizeof(double) * sizeof(double)); /* rows larger than a window */
+    check_dealt_pool();
 
     /* One process: no exchange, every item here, a failure agreed at once. */
     cdl_rank_group alone;

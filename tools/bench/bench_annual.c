@@ -74,7 +74,10 @@ int main(int argc, char **argv)
     }
 
     double t0 = cdl_pool_now_seconds();
-    cdl_annual_product(S, H, C, N, K, E);
+    if (cdl_annual_product(S, H, C, N, K, E, 1, &err) != CDL_OK) {
+        fprintf(stderr, "bench_annual: %s\n", err.message);
+        return 3;
+    }
     double t_product = cdl_pool_now_seconds() - t0;
     t0 = cdl_pool_now_seconds();
     cdl_annual_input in = {H, N, E, NULL, NULL, occ, day, NULL};
