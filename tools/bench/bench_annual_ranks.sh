@@ -20,25 +20,14 @@
 # not limits: on a machine other jobs load, the wall-clock speed-up says
 # little.
 set -eu
-root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$(dirname "$0")/ranks_pairs.sh"
 scene=${1:-$root/data/bench/annual_office.json}
 repeats=${2:-3}
-candela=${CANDELA:-$root/build/candela}
-mpirun=${MPIRUN:-mpirun}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 python3 "$root/tests/tools/annual_check.py" epw "$tmp/year.epw"
 load_before=$(uptime)
 
-for ((k = 1; k <= repeats; ++k)); do
-  "$candela" annual "$scene" --weather "$tmp/year.epw" -o "$tmp/alone$k" --threads 1 --quiet > /dev/null
-  "$mpirun" -np 2 "$candela" annual "$scene" --weather "$tmp/year.epw" -o "$tmp/two$k" --threads 1 --quiet > /dev/null
-done
-for f in "$tmp"/alone1/*; do
-  [ "$(basename "$f")" = summary.json ] || cmp -s "$f" "$tmp/two1/$(basename "$f")" \
-    || { echo "bench_annual_ranks: $(basename "$f") differs between 1 and 2 ranks" >&2; exit 1; }
-done
+ranks_pairs "$repeats" annual "$scene" --weather "$tmp/year.epw"
+ranks_same_bytes bench_annual_ranks
 
 python3 - "$tmp" "$repeats" "$scene" "$load_before" "$(uptime)" <<'PY'
 import json, statistics, sys

@@ -6,7 +6,8 @@
 # Solves SCENE (default: data/bench/cube_dense.json, the irradiance cache's
 # dense cube, at its quality "normal") REPEATS times (default 3) alone with
 # one thread and under mpirun with 2 ranks of one thread each, alternating,
-# and once with "method": "direct" (the direct light alone). Prints, from
+# and once with "method": "direct" (the direct light alone); checks that
+# every output but summary.json has the same bytes on 1 and 2 ranks. Prints, from
 # each run's summary.json: the solve's seconds (wall, the process's start
 # and MPI's set-up excluded) with the best and the median of the repeats and
 # their ratio (the wall-clock speed-up), each rank's CPU seconds computing
@@ -20,19 +21,12 @@
 # unless CANDELA says otherwise. Ratios, not limits: on a machine other
 # jobs load, the wall-clock speed-up says little.
 set -eu
-root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$(dirname "$0")/ranks_pairs.sh"
 scene=${1:-$root/data/bench/cube_dense.json}
 repeats=${2:-3}
-candela=${CANDELA:-$root/build/candela}
-mpirun=${MPIRUN:-mpirun}
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 
-for ((k = 1; k <= repeats; ++k)); do
-  "$candela" solve "$scene" -o "$tmp/alone$k" --threads 1 --quiet > /dev/null
-  "$mpirun" -np 2 "$candela" solve "$scene" -o "$tmp/two$k" --threads 1 --quiet > /dev/null
-done
+ranks_pairs "$repeats" solve "$scene"
+ranks_same_bytes bench_ranks
 python3 - "$scene" "$tmp/direct.json" <<'PY'
 import json, sys
 scene = json.load(open(sys.argv[1]))
