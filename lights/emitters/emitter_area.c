@@ -312,6 +312,13 @@ static int sample_triangles_by_solid_angle(const area_emitter *a, cdl_vec3 p, cd
 
 static int disk_uses_cosine(const area_emitter *a, cdl_vec3 p, cdl_vec3 n)
 {
+    /* The disk lies in the ball of its radius r about its centre, seen
+     * from p at distance d within a cone of half-angle s, sin s = r / d;
+     * nothing in that cone has a projected solid angle above pi sin^2 s
+     * (the cone's own, about n). Below the fraction, no need for the
+     * exact value: the same decision, cheaper. */
+    cdl_vec3 c = cdl_vec3_sub(a->center, p);
+    if (a->radius * a->radius < DISK_COSINE_FRACTION * cdl_vec3_dot(c, c)) return 0;
     double omega = cdl_projected_solid_angle_disk(cdl_vec3_sub(a->center, p), a->frame.n, a->radius, n);
     return omega >= DISK_COSINE_FRACTION * CDL_PI;
 }

@@ -216,6 +216,40 @@ void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strat
     free(block);
 }
 
+/* One sample of an extended light at p: f = L cos / pdf towards the point
+ * drawn with the random numbers of index l, and V, the transmission along
+ * its shadow ray (0 or 1 but through glass); f = 0 when the sample carries
+ * nothing. */
+static double sample_extended(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_rng_key key, size_t l,
+                              cdl_vec3 p, cdl_vec3 n, double *visible, cdl_direct_sample_stats *stats)
+{
+    double u[2];
+    cdl_rng_uniform2(key, (uint64_t)l, u);
+    cdl_light_sample s;
+    *visible = 1.0;
+    if (!cdl_emitter_sample(light->emitter, p, n, u[0], u[1], &s) || !(s.pdf > 0.0)) return 0.0;
+    double c = cdl_vec3_dot(n, s.to_light);
+    if (!(c > 0.0)) return 0.0;
+    *visible = cdl_direct_transmission(ctx, p, n, s.to_light, s.distance, cdl_scene_light_own_piece(light), stats);
+    return s.L.cd_m2 * c / s.pdf;
+}
+
+/* One sample's estimate of an extended light at p (light number l): with a
+ * closed form E_0, E_0 - f (1 - V) (exact where the sample is not hidden);
+ * without, f V. *free_E += what it gives unhidden. 0 without a sample when
+ * the closed form says no light arrives. */
+static double extended_term(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_rng_key key, size_t l,
+                            cdl_vec3 p, cdl_vec3 n, double *free_E, cdl_direct_sample_stats *stats)
+{
+    cdl_illuminance exact;
+    /* (a cubature per path vertex would cost more than the sample) */
+    int closed = !light->costly_exact && cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK;
+    if (closed && !(exact.lx > 0.0)) return 0.0;
+    double visible, f = sample_extended(ctx, light, key, l, p, n, &visible, stats);
+    *free_E += closed ? exact.lx : f;
+    return closed ? exact.lx - f * (1.0 - visible) : f * visible;
+}
+
 double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 n,
                                  double *unoccluded, cdl_direct_sample_stats *stats)
 {
@@ -232,33 +266,154 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
             continue;
         }
         if (!cdl_scene_light_applies(light, p)) continue;
-        /* One sample of the light: with a closed form E_0, the estimator
-         * E_0 - f (1 - V) (exact where the sample is not hidden); without,
-         * f V. f = L cos / pdf, V the sample's visibility. */
-        cdl_illuminance exact;
-        /* (a cubature per path vertex would cost more than the sample) */
-        int closed = !light->costly_exact && cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK;
-        if (closed && !(exact.lx > 0.0)) continue;
-        double u[2];
-        cdl_rng_uniform2(key, (uint64_t)l, u);
-        cdl_light_sample s;
-        double f = 0.0, visible = 1.0; /* V: the sample's transmission, 0 or 1 but through glass */
-        if (cdl_emitter_sample(light->emitter, p, n, u[0], u[1], &s) && s.pdf > 0.0) {
-            double c = cdl_vec3_dot(n, s.to_light);
-            if (c > 0.0) {
-                f = s.L.cd_m2 * c / s.pdf;
-                visible = cdl_direct_transmission(ctx, p, n, s.to_light, s.distance, cdl_scene_light_own_piece(light),
-                                                  stats);
+        E += extended_term(ctx, light, key, l, p, n, &free_E, stats);
+    }
+    if (unoccluded) *unoccluded = free_E;
+    return E;
+}
+
+/* ---- one light drawn at a path vertex ------------------------------------------------------ */
+
+/* Lights a vertex's one-light estimate keeps on the stack; more take the heap. */
+#define ONE_LIGHT_STACK 64
+
+/* The share of the draw spread evenly over the lights whose weight is only
+ * a far-field guess, whatever the guesses: a light the guess says nothing
+ * of (the point model seen from beside a luminous opening) is still
+ * drawn, so the estimate stays unbiased wherever any light can reach. */
+#define ONE_LIGHT_GUESS_SHARE 0.1
+
+/* What a light is at a vertex for the one-light estimate, and what its
+ * correction X is (the light less its known part):
+ *   delta   known 0,   X = e V   (e its exact unshadowed value: the weight)
+ *   closed  known E_0, X = -f (1 - V)   (a closed form: the weight)
+ *   guessed known 0,   X = f V   (weight: the far-field guess)
+ * with f = L cos / pdf of one sample and V its shadow ray's transmission.
+ * A point every light's shadow ray misses reads exactly 0 but for closed
+ * forms, as with a sample of every light. */
+enum { TERM_NONE = 0, TERM_DELTA, TERM_CLOSED, TERM_GUESSED };
+
+/* The far-field guess of an extended light's unoccluded illuminance at p: its
+ * intensity towards p from the middle of its bounds, I cos / d^2 (the
+ * inverse-square cosine law), 0 behind p's plane. Only a weight: the
+ * estimate stays unbiased whatever it is. */
+static double far_field_guess(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n)
+{
+    cdl_vec3 c = cdl_bounds3_centre(light->bounds);
+    cdl_vec3 d = cdl_vec3_sub(c, p);
+    double d2 = cdl_vec3_dot(d, d);
+    if (!(d2 > 0.0)) return 0.0;
+    cdl_vec3 to_light = cdl_vec3_scale(d, 1.0 / sqrt(d2));
+    double cos_r = cdl_vec3_dot(n, to_light);
+    if (!(cos_r > 0.0)) return 0.0;
+    double I = cdl_emitter_intensity(light->emitter, cdl_vec3_neg(to_light)).cd;
+    return I > 0.0 && isfinite(I) ? I * cos_r / d2 : 0.0;
+}
+
+/* The lights of a vertex with their weights: W of the weighted ones, G
+ * lights guessed. */
+typedef struct light_draw {
+    double W;
+    size_t guessed;
+} light_draw;
+
+/* The probability of drawing light l: in proportion to the weights, but
+ * for ONE_LIGHT_GUESS_SHARE spread evenly over the guessed lights (all of
+ * it when no weight is above 0). */
+static double draw_probability(const light_draw *d, double weight, int kind)
+{
+    double even = d->guessed == 0 ? 0.0 : d->W > 0.0 ? ONE_LIGHT_GUESS_SHARE : 1.0;
+    double q = d->W > 0.0 ? (1.0 - even) * weight / d->W : 0.0;
+    return kind == TERM_GUESSED ? q + even / (double)d->guessed : q;
+}
+
+double cdl_direct_estimate_one_light(const cdl_direct_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 n,
+                                     double *unoccluded, cdl_direct_sample_stats *stats)
+{
+    size_t count = ctx->light_count;
+    double stack[2 * ONE_LIGHT_STACK];
+    unsigned char kinds_stack[ONE_LIGHT_STACK];
+    double *buf = count <= ONE_LIGHT_STACK ? stack : malloc(2 * count * sizeof *buf);
+    unsigned char *kind = count <= ONE_LIGHT_STACK ? kinds_stack : malloc(count);
+    if (!buf || !kind) {
+        if (buf != stack) free(buf);
+        if (kind != kinds_stack) free(kind);
+        return cdl_direct_estimate_point(ctx, key, p, n, unoccluded, stats);
+    }
+    double *weight = buf, *known = buf + count;
+    double E = 0.0, free_E = 0.0;
+    light_draw draw = {0.0, 0};
+    for (size_t l = 0; l < count; ++l) {
+        const cdl_scene_light *light = &ctx->lights[l];
+        kind[l] = TERM_NONE;
+        weight[l] = known[l] = 0.0;
+        if (light->sealed_by) continue;
+        if (cdl_emitter_is_delta(light->emitter)) {
+            cdl_delta_light d;
+            double e = delta_unshadowed(light, p, n, &d);
+            if (!(e > 0.0)) continue;
+            kind[l] = TERM_DELTA;
+            weight[l] = e;
+            free_E += e;
+        } else if (!cdl_scene_light_applies(light, p)) {
+            continue;
+        } else if (!light->bounded) {
+            /* skies and the sun: a sample each, as cdl_direct_estimate_point takes */
+            known[l] = extended_term(ctx, light, key, l, p, n, &free_E, stats);
+            continue;
+        } else {
+            cdl_illuminance exact;
+            int closed = !light->costly_exact &&
+                         cdl_emitter_exact_illuminance(light->emitter, p, n, &exact, NULL) == CDL_OK;
+            if (closed && !(exact.lx > 0.0)) continue;
+            kind[l] = closed ? TERM_CLOSED : TERM_GUESSED;
+            if (closed) {
+                known[l] = weight[l] = exact.lx;
+                free_E += exact.lx;
+            } else {
+                weight[l] = far_field_guess(light, p, n);
+                draw.guessed++;
             }
         }
-        if (closed) {
-            free_E += exact.lx;
-            E += exact.lx - f * (1.0 - visible);
-        } else {
-            free_E += f;
-            E += f * visible;
-        }
+        draw.W += weight[l];
     }
+    /* The known parts (closed forms, the skies' samples), in light order. */
+    for (size_t l = 0; l < count; ++l) E += known[l];
+    if (draw.W > 0.0 || draw.guessed > 0) {
+        /* Light k drawn with probability q_k; its correction X_k, whose
+         * mean is its light less its known part, counts X_k / q_k (the
+         * one-sample estimate of a sum over lights: Shirley, Wang and
+         * Zimmerman, "Monte Carlo techniques for direct lighting
+         * calculations", ACM TOG 15, 1996). */
+        double u[2];
+        cdl_rng_uniform2(key, (uint64_t)count, u);
+        double target = u[0], q = 0.0;
+        size_t k = SIZE_MAX, last = SIZE_MAX;
+        for (size_t l = 0; l < count && k == SIZE_MAX; ++l) {
+            if (kind[l] == TERM_NONE) continue;
+            double ql = draw_probability(&draw, weight[l], kind[l]);
+            if (!(ql > 0.0)) continue;
+            last = l;
+            q = ql;
+            if (target < ql) k = l;
+            else target -= ql;
+        }
+        if (k == SIZE_MAX) k = last; /* rounding left u past the last share: q is last's */
+        const cdl_scene_light *light = &ctx->lights[k];
+        double X;
+        if (kind[k] == TERM_DELTA) {
+            cdl_delta_light d;
+            double e = delta_unshadowed(light, p, n, &d);
+            X = e * cdl_direct_transmission(ctx, p, n, d.to_light, d.distance, cdl_scene_light_own_piece(light), stats);
+        } else {
+            double visible, f = sample_extended(ctx, light, key, k, p, n, &visible, stats);
+            X = kind[k] == TERM_CLOSED ? -f * (1.0 - visible) : f * visible;
+            if (kind[k] == TERM_GUESSED) free_E += f / q;
+        }
+        E += X / q;
+    }
+    if (buf != stack) free(buf);
+    if (kind != kinds_stack) free(kind);
     if (unoccluded) *unoccluded = free_E;
     return E;
 }

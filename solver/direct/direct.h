@@ -213,6 +213,22 @@ void cdl_direct_illuminance(const cdl_direct_context *ctx, const cdl_light_strat
 double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 n,
                                  double *unoccluded, cdl_direct_sample_stats *stats);
 
+/* The same estimate with one light drawn instead of a sample of every
+ * light, for path vertices after the first (where a reflection or more
+ * has already dimmed what they carry): the closed forms of the lights that
+ * have a cheap one and, for the one light drawn (with probability in
+ * proportion to a delta light's exact value, a closed form, or for the
+ * other extended lights a far-field guess I cos / d^2 with a share drawn
+ * evenly among them), its correction divided by the probability of drawing
+ * it: e V for a delta light, -f (1 - V) for a closed form, f V for the
+ * others (one sample). Unbiased like cdl_direct_estimate_point, for one
+ * shadow ray instead of one per light; noisier where lights are partly
+ * hidden, exact where they all are (but for closed forms). Skies and the
+ * sun are each sampled as there. Random numbers from `key`: index = the
+ * light's number for its sample, light_count for the draw. */
+double cdl_direct_estimate_one_light(const cdl_direct_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 n,
+                                     double *unoccluded, cdl_direct_sample_stats *stats);
+
 /* Most points cdl_direct_illuminance_chunk takes at once. */
 #define CDL_DIRECT_CHUNK_MAX 64
 

@@ -24,7 +24,8 @@
 
 static calibration tally = CALIBRATION_INIT;
 
-static void test_furnace(double rho, double target)
+/* The furnace at `count` points (positions p, normals n; "what" names them). */
+static void furnace_at(double rho, double target, const cdl_vec3 *p, const cdl_vec3 *n, int count, const char *what)
 {
     const double L = 100.0;
     char json[16384];
@@ -33,11 +34,7 @@ static void test_furnace(double rho, double target)
                       "\"inward\": true, \"reflectance\": %.17g, \"luminance_cd_m2\": %.17g}], \"grids\": [{\"name\": "
                       "\"probes\", \"type\": \"points\", \"points\": [",
                       rho, L);
-    const int n = 40;
-    for (int i = 0; i < n; ++i) {
-        cdl_vec3 p = cdl_vec3_add(cdl_vec3_make(2, 2, 2), cdl_vec3_scale(fixture_spread(i, n), 1.7 * ((i % 7) + 1) / 7.0));
-        at = fixture_append_point(json, sizeof json, at, i == 0, p, fixture_spread((i * 17) % n, n));
-    }
+    for (int i = 0; i < count; ++i) at = fixture_append_point(json, sizeof json, at, i == 0, p[i], n[i]);
     snprintf(json + at, sizeof json - (size_t)at,
              "]}], \"solver\": {\"method\": \"pathtrace\", \"target_error\": %.17g}}", target);
     cdl_scene *scene;
@@ -52,8 +49,9 @@ static void test_furnace(double rho, double target)
             CHECK(g->E_stderr[i] == 0.0 && g->E_indirect[i] == 0.0);
             continue;
         }
-        CHECK_MSG(fabs(g->E[i] - expected) <= 5.0 * g->E_stderr[i], "furnace rho %g point %zu: %.6g +- %.3g, expected %.6g",
-                  rho, i, g->E[i], g->E_stderr[i], expected);
+        CHECK_MSG(fabs(g->E[i] - expected) <= 5.0 * g->E_stderr[i],
+                  "furnace rho %g, %s %zu (%.2f, %.2f, %.2f): %.6g +- %.3g, expected %.6g", rho, what, i,
+                  g->grid.points[i].x, g->grid.points[i].y, g->grid.points[i].z, g->E[i], g->E_stderr[i], expected);
         /* The stage is planned from a 128-path pilot, whose variance
          * estimate can be well off for skewed path values: the stated error
          * stays within the issue's factor 1.5 of the target. */
@@ -63,6 +61,36 @@ static void test_furnace(double rho, double target)
     }
     if (rho == 0.0) CHECK(strstr(sol.plan_json, "no surface reflects light") != NULL);
     fixture_release(scene, &sol);
+}
+
+static void test_furnace(double rho, double target)
+{
+    cdl_vec3 p[40], n[40];
+    for (int i = 0; i < 40; ++i) {
+        p[i] = cdl_vec3_add(cdl_vec3_make(2, 2, 2), cdl_vec3_scale(fixture_spread(i, 40), 1.7 * ((i % 7) + 1) / 7.0));
+        n[i] = fixture_spread((i * 17) % 40, 40);
+    }
+    furnace_at(rho, target, p, n, 40, "point");
+}
+
+/* The furnace at points on its edges and corners, each facing into the
+ * box along one face's normal: paths from a line where two walls meet must
+ * still see the other wall (from the line itself its rays would start in
+ * that wall's plane and pass it unseen, and read about 30 % of the
+ * interreflected light too little). Along the floor's edges, up the walls'
+ * vertical edges, the ceiling's, and two corners. */
+static void test_furnace_edges(double rho, double target)
+{
+    const double pts[][6] = {{1.3, 0, 0, 0, 0, 1}, {4, 2.2, 0, 0, 0, 1},  {0.7, 4, 0, 0, 0, 1},  {0, 3.1, 0, 1, 0, 0},
+                             {0, 0, 1.7, 1, 0, 0}, {4, 4, 2.9, 0, -1, 0}, {2.5, 0, 4, 0, 1, 0},  {4, 1.1, 4, 0, 0, -1},
+                             {0, 0, 0, 0, 0, 1},   {4, 4, 4, -1, 0, 0}};
+    enum { COUNT = sizeof pts / sizeof *pts };
+    cdl_vec3 p[COUNT], n[COUNT];
+    for (int i = 0; i < COUNT; ++i) {
+        p[i] = cdl_vec3_make(pts[i][0], pts[i][1], pts[i][2]);
+        n[i] = cdl_vec3_make(pts[i][3], pts[i][4], pts[i][5]);
+    }
+    furnace_at(rho, target, p, n, COUNT, "edge point");
 }
 
 /* A sphere of radius 1 about the origin, inward, reflectance rho, lit by
@@ -102,6 +130,7 @@ int main(void)
     test_furnace(0.0, 0.01);
     test_furnace(0.5, 0.01);
     test_furnace(0.9, 0.01);
+    test_furnace_edges(0.5, 0.01);
     const char *point_centre = "{\"type\": \"point\", \"position\": [0,0,0], \"flux_lm\": 1000}";
     const char *point_off = "{\"type\": \"point\", \"position\": [0.3,0.2,-0.4], \"flux_lm\": 1000}";
     /* cos^3 spot: flux 2 pi I0 / (n + 1) = pi I0 / 2 for n = 3 */
