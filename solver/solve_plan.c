@@ -143,8 +143,7 @@ static void make_contexts(cdl_solve_state *state)
     cdl_path_context path = {.direct = ctx,
                              .geometry = state->geometry,
                              .seed = scene->settings.seed,
-                             .bounces = scene->settings.bounces,
-                             .one_light_from = CDL_PATH_ONE_LIGHT_FROM};
+                             .bounces = scene->settings.bounces};
     state->pathtrace = (cdl_pathtrace_context){.path = path, .target = state->target, .max_paths = 16777216.0};
     state->icache = (cdl_icache_context){.path = path, .target = state->target,
                                          .gradients = !state->debug.no_cache_gradients};

@@ -236,6 +236,11 @@ void cdl_emitter_release(cdl_emitter *emitter);
 cdl_status cdl_emitter_create_goniometric_opening(const cdl_goniometric_params *p, cdl_emitter **out,
                                                   cdl_error *err);
 
+/* The point model a goniometric luminaire spread over its opening or solid
+ * carries (its far field: the file's I(w) from the luminaire's centre),
+ * borrowed; NULL for any other emitter. */
+const cdl_emitter *cdl_emitter_far_field(const cdl_emitter *emitter);
+
 /* The lower (nadir-facing) face of a goniometric opening emitter in world
  * coordinates: a CDL_SHAPE_RECT or CDL_SHAPE_DISK, an ellipse as its
  * bounding rectangle (which contains it); a luminous solid's bounding

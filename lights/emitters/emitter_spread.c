@@ -36,3 +36,9 @@ void cdl_spread_emitter_destroy(cdl_emitter *e)
 {
     cdl_emitter_release(((cdl_spread_emitter *)e)->point);
 }
+
+const cdl_emitter *cdl_emitter_far_field(const cdl_emitter *emitter)
+{
+    if (!emitter || cdl_emitter_get_kind(emitter) != CDL_EMITTER_GONIOMETRIC_OPENING) return NULL;
+    return ((const cdl_spread_emitter *)emitter)->point;
+}

@@ -214,20 +214,21 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
                                  double *unoccluded, cdl_direct_sample_stats *stats);
 
 /* The same estimate with one light drawn instead of a sample of every
- * light, for path vertices after the first (where a reflection or more
- * has already dimmed what they carry): the closed forms of the lights that
- * have a cheap one and, for the one light drawn (with probability in
- * proportion to a delta light's exact value, a closed form, or for the
- * other extended lights a far-field guess I cos / d^2 with a share drawn
- * evenly among them), its correction divided by the probability of drawing
- * it: e V for a delta light, -f (1 - V) for a closed form, f V for the
- * others (one sample). Unbiased like cdl_direct_estimate_point, for one
- * shadow ray instead of one per light; noisier where lights are partly
- * hidden, exact where they all are (but for closed forms). Skies and the
- * sun are each sampled as there. Random numbers from `key`: index = the
- * light's number for its sample, light_count for the draw. */
+ * light, for path vertices: one light drawn with probability in proportion
+ * to a delta light's exact value or an extended light's far-field guess
+ * I cos / d^2 (a share drawn evenly among the extended ones, whose guess
+ * may miss light near them), its light e V or f V (one sample, no closed
+ * form) divided by the probability of drawing it. Skies and the sun, and
+ * with closed_apart every light with a cheap closed form (a Lambertian
+ * panel, an emitting surface: E_0 - f (1 - V), exact unless hidden), take
+ * their own sample as in cdl_direct_estimate_point and are not drawn.
+ * Unbiased like cdl_direct_estimate_point, for one shadow ray (and one per
+ * light taken apart) instead of one per light; noisier where lights are
+ * partly hidden, exactly 0 where all are (but for closed forms taken
+ * apart). Random numbers from `key`: index = the light's number for its
+ * sample, light_count for the draw. */
 double cdl_direct_estimate_one_light(const cdl_direct_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 n,
-                                     double *unoccluded, cdl_direct_sample_stats *stats);
+                                     int closed_apart, double *unoccluded, cdl_direct_sample_stats *stats);
 
 /* Most points cdl_direct_illuminance_chunk takes at once. */
 #define CDL_DIRECT_CHUNK_MAX 64

@@ -44,9 +44,8 @@ void cdl_transport_path(const cdl_path_context *ctx, cdl_rng_key key, cdl_vec3 p
         if (!(rho > 0.0)) break;
         cdl_rng_key nee = {key.seed, cdl_rng_stream_id(key.stream, (uint64_t)depth, 0x6e6565 /* "nee" */)};
         double unoccluded;
-        double Ed = depth >= ctx->one_light_from && ctx->one_light_from > 0
-                        ? cdl_direct_estimate_one_light(ctx->direct, nee, hit.p, hit.n, &unoccluded, &stats->direct)
-                        : cdl_direct_estimate_point(ctx->direct, nee, hit.p, hit.n, &unoccluded, &stats->direct);
+        /* Next-event estimation, one light drawn (cdl_direct_estimate_one_light). */
+        double Ed = cdl_direct_estimate_one_light(ctx->direct, nee, hit.p, hit.n, 0, &unoccluded, &stats->direct);
         double gained = w * rho * Ed;
         out->value += gained;
         if (depth == 1) out->potential = w * rho * unoccluded;

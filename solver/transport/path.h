@@ -36,21 +36,11 @@
  * 0.99^1000 = 4e-5 even in a perfectly white, closed room). */
 #define CDL_PATH_MAX_DEPTH 1000
 
-/* The reflection from which a path's vertices draw one light for their
- * next-event estimate (cdl_direct_estimate_one_light): the first takes
- * every light, the later ones, which carry less, one. Measured on the
- * example office's surfaces (320 points path traced at "normal"): 14 %
- * more paths for the target, 32 % less time; drawing at the first
- * reflection too took 45 % more paths and saved less (28 %). */
-#define CDL_PATH_ONE_LIGHT_FROM 2
-
 typedef struct cdl_path_context {
     const cdl_direct_context *direct;     /* lights, rays and next-event estimation */
     const cdl_scene_geometry *geometry;   /* not NULL */
     uint64_t seed;
     int bounces;                          /* CDL_BOUNCES_AUTO or the most reflections followed */
-    int one_light_from;                   /* reflections from this one on draw one light for their
-                                           * next-event estimate (cdl_direct_estimate_one_light); 0: none */
 } cdl_path_context;
 
 typedef struct cdl_path_stats {
