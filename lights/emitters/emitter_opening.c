@@ -373,13 +373,24 @@ static int heap_converge(cell_heap *h, const cubature *q, double *E)
 }
 
 /* E over the whole opening by the cubature; 0 when it did not converge. */
+/* A receiver this many of a round opening's radii away starts its cubature
+ * with four cells instead of sixteen (opening_cubature). */
+#define FAR_SEED_RADII 8.0
+
 static int opening_cubature(const opening_emitter *o, cdl_vec3 p, cdl_vec3 n, double *E)
 {
     cubature q = {o, p, n, o->shape == CDL_LUMINOUS_SHAPE_RECTANGLE ? DOMAIN_RECT : DOMAIN_POLAR, NULL};
     cell_heap h;
     heap_init(&h);
     if (q.domain == DOMAIN_POLAR) {
-        heap_seed(&h, &q, 0, 0.0, 1.0, 2, 0.0, CDL_TWO_PI, 8);
+        /* A receiver FAR_SEED_RADII radii away sees the disk's integrand
+         * change by a quarter of itself or less across it: four quarters
+         * start the cubature, which splits them where its rules disagree
+         * (near the opening, sixteen cells keep it from trusting two rules
+         * that agree by chance). */
+        double a = fmax(o->half_length, o->half_width);
+        int far = cdl_vec3_length_squared(cdl_vec3_sub(p, o->center)) >= FAR_SEED_RADII * FAR_SEED_RADII * a * a;
+        heap_seed(&h, &q, 0, 0.0, 1.0, far ? 1 : 2, 0.0, CDL_TWO_PI, far ? 4 : 8);
     } else {
         /* first cells at most 4 times as long as wide (the splitting
          * halves them across their long side first) */
