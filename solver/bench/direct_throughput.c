@@ -85,7 +85,7 @@ static cdl_status write_scene_json(const char *path, const char *obj, const char
     size_t cols = (size_t)ceil(sqrt((double)luminaires * 2.0)), rows = (luminaires + cols - 1) / cols;
     for (size_t i = 0; i < luminaires; ++i) {
         double x = ((double)(i % cols) + 0.5) * side / (double)cols, y = ((double)(i / cols) + 0.5) * side / (double)rows;
-        fprintf(f, "  {\"type\": \"goniometric\", \"file\": \"%s\", \"position\": [%.6g, %.6g, 3.0]}%s\n", ies, x, y,
+        fprintf(f, "  {\"type\": \"goniometric\", \"file\": \"%s\", \"position\": [%.6g, %.6g, 3.0], \"near_field\": \"never\", \"body\": false}%s\n", ies, x, y,
                 i + 1 < luminaires ? "," : "");
     }
     size_t n = (size_t)ceil(sqrt((double)points));
