@@ -133,6 +133,7 @@ void cdl_solve_state_release(cdl_solve_state *state)
     cdl_solve_cache_release(&state->cache);
     cdl_scene_lights_release(&state->lights);
     cdl_occluder_index_release(state->occluders);
+    cdl_sky_portals_release(&state->portals);
     cdl_scene_geometry_release(state->geometry);
     memset(state, 0, sizeof *state);
 }

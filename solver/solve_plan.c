@@ -115,7 +115,10 @@ static cdl_status build_scene(cdl_solve_state *state, cdl_error *err)
         st = cdl_scene_occluders_build(state->geometry, &state->occluders, err);
         if (st != CDL_OK) return st;
     }
-    return cdl_scene_lights_build(state->scene, state->geometry, &state->lights, err);
+    st = cdl_scene_lights_build(state->scene, state->geometry, &state->lights, err);
+    /* a sky and panes of glass: the panes as the sky's portals at path vertices */
+    if (st == CDL_OK && state->lights.has_environment) st = cdl_sky_portals_build(state->geometry, &state->portals, err);
+    return st;
 }
 
 /* The methods' contexts: direct light, paths, records, vertical outputs. */
@@ -129,6 +132,7 @@ static void make_contexts(cdl_solve_state *state)
     if (geometry) cdl_scene_geometry_ray_offsets(geometry, &ctx->offsets);
     ctx->rays = geometry ? cdl_scene_geometry_rays(geometry) : NULL;
     ctx->occluders = state->occluders;
+    ctx->portals = state->portals.count ? &state->portals : NULL;
     ctx->lights = state->lights.lights;
     ctx->light_count = state->lights.count;
     ctx->samples = state->out->settings.direct_samples;

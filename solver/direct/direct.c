@@ -250,6 +250,52 @@ static double extended_term(const cdl_direct_context *ctx, const cdl_scene_light
     return closed ? exact.lx - f * (1.0 - visible) : f * visible;
 }
 
+/* A sky at p seen through the scene's panes (sky_portals.h): one direction
+ * from the sky's own sampler (random numbers of index l) and one towards a
+ * point of the panes (index `pane_index`), each counting
+ * L cos T / (p_sky + p_pane), the balance heuristic of multiple importance
+ * sampling. *free_E += the same without T. */
+static double sky_through_portals(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_rng_key key,
+                                  size_t l, uint64_t pane_index, cdl_vec3 p, cdl_vec3 n, double *free_E,
+                                  cdl_direct_sample_stats *stats)
+{
+    double E = 0.0, u[2];
+    for (int k = 0; k < 2; ++k) {
+        cdl_vec3 w;
+        double p_sky = 0.0, p_pane = 0.0;
+        cdl_luminance L = cdl_nits(0.0);
+        if (k == 0) {
+            cdl_rng_uniform2(key, (uint64_t)l, u);
+            cdl_light_sample s;
+            if (!cdl_emitter_sample(light->emitter, p, n, u[0], u[1], &s) || !(s.pdf > 0.0)) continue;
+            w = s.to_light;
+            L = s.L;
+            p_sky = s.pdf;
+            p_pane = cdl_sky_portals_pdf(ctx->portals, p, w);
+        } else {
+            cdl_rng_uniform2(key, pane_index, u);
+            if (!cdl_sky_portals_sample(ctx->portals, p, u[0], u[1], &w, &p_pane)) continue;
+            L = cdl_emitter_radiance(light->emitter, p, n, w, &p_sky);
+        }
+        double c = cdl_vec3_dot(n, w);
+        if (!(c > 0.0) || !(L.cd_m2 > 0.0)) continue;
+        double f = L.cd_m2 * c / (p_sky + p_pane);
+        *free_E += f;
+        E += f * cdl_direct_transmission(ctx, p, n, w, INFINITY, cdl_scene_light_own_piece(light), stats);
+    }
+    return E;
+}
+
+/* A light that is neither delta nor drawn: a sky (through the panes, where
+ * there are some) or an extended light taken apart (extended_term). */
+static double apart_term(const cdl_direct_context *ctx, const cdl_scene_light *light, cdl_rng_key key, size_t l,
+                         cdl_vec3 p, cdl_vec3 n, double *free_E, cdl_direct_sample_stats *stats)
+{
+    if (light->is_environment && ctx->portals && ctx->portals->count > 0)
+        return sky_through_portals(ctx, light, key, l, (uint64_t)(ctx->light_count + 1 + l), p, n, free_E, stats);
+    return extended_term(ctx, light, key, l, p, n, free_E, stats);
+}
+
 double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key, cdl_vec3 p, cdl_vec3 n,
                                  double *unoccluded, cdl_direct_sample_stats *stats)
 {
@@ -266,7 +312,7 @@ double cdl_direct_estimate_point(const cdl_direct_context *ctx, cdl_rng_key key,
             continue;
         }
         if (!cdl_scene_light_applies(light, p)) continue;
-        E += extended_term(ctx, light, key, l, p, n, &free_E, stats);
+        E += apart_term(ctx, light, key, l, p, n, &free_E, stats);
     }
     if (unoccluded) *unoccluded = free_E;
     return E;
@@ -384,7 +430,7 @@ double cdl_direct_estimate_one_light(const cdl_direct_context *ctx, cdl_rng_key 
              * that loom large (or all of them, with closed_apart): a sample
              * each, as cdl_direct_estimate_point takes (E_0 - f (1 - V)
              * where the closed form exists) */
-            apart[l] = extended_term(ctx, light, key, l, p, n, &free_E, stats);
+            apart[l] = apart_term(ctx, light, key, l, p, n, &free_E, stats);
             continue;
         } else {
             /* no closed form here, even where there is one: the guess and a

@@ -31,6 +31,7 @@
 #include "base/rng.h"
 #include "base/error.h"
 #include "radiometry/vec3.h"
+#include "solver/direct/sky_portals.h"
 #include "solver/geometry/occluder_index.h"
 #include "solver/geometry/ray_scene.h"
 #include "solver/rank_group.h"
@@ -81,6 +82,8 @@ typedef struct cdl_direct_context {
     cdl_ray_log *log;                 /* NULL, or records every shadow ray (one thread only) */
     int no_exact_route;               /* 1: partly hidden lights are always sampled, never solved as
                                        * visible polygons (tests of the sampler, benchmarks); default 0 */
+    const cdl_sky_portals *portals;   /* NULL, or the panes the sky comes in through: path vertices sample
+                                       * skies through them too (sky_portals.h) */
 } cdl_direct_context;
 
 /* Decide each light's strategy for a set of receiver points (a grid). */

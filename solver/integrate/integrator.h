@@ -82,6 +82,7 @@ typedef struct cdl_solve_state {
     cdl_scene_geometry *geometry;     /* owned */
     size_t pieces;                    /* its surface pieces (0: nothing can occlude or reflect) */
     cdl_occluder_index *occluders;    /* owned; NULL without geometry */
+    cdl_sky_portals portals;          /* owned: the panes a sky comes in through (empty without a sky or glass) */
     cdl_scene_lights lights;          /* owned */
 
     cdl_direct_context direct;

@@ -1,0 +1,125 @@
+/* sky_portals.c - the panes of glass as portals of the sky (sky_portals.h). */
+#include "solver/direct/sky_portals.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error_report.h"
+#include "radiometry/sampling.h"
+
+static cdl_vec3 vertex(const double *xyz, uint32_t i)
+{
+    return cdl_vec3_make(xyz[3 * (size_t)i], xyz[3 * (size_t)i + 1], xyz[3 * (size_t)i + 2]);
+}
+
+cdl_status cdl_sky_portals_build(const cdl_scene_geometry *geometry, cdl_sky_portals *out, cdl_error *err)
+{
+    memset(out, 0, sizeof *out);
+    if (!geometry || !cdl_scene_geometry_has_glass(geometry)) return CDL_OK;
+    size_t pieces = cdl_scene_geometry_piece_count(geometry), total = 0;
+    for (size_t g = 0; g < pieces; ++g) {
+        const cdl_geometry_piece *piece = cdl_scene_geometry_piece(geometry, g);
+        if (piece->transmittance > 0.0) total += piece->triangle_count;
+    }
+    if (total == 0 || total > CDL_SKY_PORTALS_MAX) return CDL_OK;
+    out->triangles = malloc(total * sizeof *out->triangles);
+    out->cdf = malloc(total * sizeof *out->cdf);
+    if (!out->triangles || !out->cdf) {
+        cdl_sky_portals_release(out);
+        return cdl_error_out_of_memory(err);
+    }
+    for (size_t g = 0; g < pieces; ++g) {
+        const cdl_geometry_piece *piece = cdl_scene_geometry_piece(geometry, g);
+        if (!(piece->transmittance > 0.0)) continue;
+        const double *xyz;
+        const uint32_t *tri;
+        size_t nv, nt = cdl_scene_geometry_piece_triangles(geometry, g, &xyz, &nv, &tri);
+        for (size_t t = 0; t < nt; ++t) {
+            cdl_vec3 a = vertex(xyz, tri[3 * t]), b = vertex(xyz, tri[3 * t + 1]), c = vertex(xyz, tri[3 * t + 2]);
+            cdl_portal_triangle *pt = &out->triangles[out->count];
+            pt->v0 = a;
+            pt->e1 = cdl_vec3_sub(b, a);
+            pt->e2 = cdl_vec3_sub(c, a);
+            cdl_vec3 m = cdl_vec3_cross(pt->e1, pt->e2);
+            double len = cdl_vec3_length(m);
+            if (!(len > 0.0)) continue;
+            pt->normal = cdl_vec3_scale(m, 1.0 / len);
+            pt->area = 0.5 * len;
+            out->area += pt->area;
+            out->cdf[out->count++] = out->area;
+        }
+    }
+    if (!(out->area > 0.0)) {
+        cdl_sky_portals_release(out);
+        return CDL_OK;
+    }
+    for (size_t t = 0; t < out->count; ++t) out->cdf[t] /= out->area;
+    return CDL_OK;
+}
+
+void cdl_sky_portals_release(cdl_sky_portals *portals)
+{
+    free(portals->triangles);
+    free(portals->cdf);
+    memset(portals, 0, sizeof *portals);
+}
+
+/* Distance along unit dir from p to triangle t, or -1 when the ray misses
+ * it (Moller and Trumbore, "Fast, minimum storage ray/triangle
+ * intersection", JGT 2(1), 1997). */
+static double ray_triangle(const cdl_portal_triangle *t, cdl_vec3 p, cdl_vec3 dir)
+{
+    cdl_vec3 pv = cdl_vec3_cross(dir, t->e2);
+    double det = cdl_vec3_dot(t->e1, pv);
+    if (det == 0.0) return -1.0;
+    double inv = 1.0 / det;
+    cdl_vec3 s = cdl_vec3_sub(p, t->v0);
+    double b1 = cdl_vec3_dot(s, pv) * inv;
+    if (b1 < 0.0 || b1 > 1.0) return -1.0;
+    cdl_vec3 qv = cdl_vec3_cross(s, t->e1);
+    double b2 = cdl_vec3_dot(dir, qv) * inv;
+    if (b2 < 0.0 || b1 + b2 > 1.0) return -1.0;
+    double d = cdl_vec3_dot(t->e2, qv) * inv;
+    return d > 0.0 ? d : -1.0;
+}
+
+double cdl_sky_portals_pdf(const cdl_sky_portals *portals, cdl_vec3 p, cdl_vec3 dir)
+{
+    double pdf = 0.0;
+    for (size_t i = 0; i < portals->count; ++i) {
+        const cdl_portal_triangle *t = &portals->triangles[i];
+        double d = ray_triangle(t, p, dir);
+        if (!(d > 0.0)) continue;
+        /* dA = d^2 dw / |cos theta| (the change of measure from area to solid angle) */
+        double c = fabs(cdl_vec3_dot(t->normal, dir));
+        if (c > 0.0) pdf += d * d / (portals->area * c);
+    }
+    return pdf;
+}
+
+int cdl_sky_portals_sample(const cdl_sky_portals *portals, cdl_vec3 p, double u1, double u2, cdl_vec3 *dir,
+                           double *pdf)
+{
+    *pdf = 0.0;
+    if (portals->count == 0) return 0;
+    /* a triangle by its share of the area, u1 rescaled within the share */
+    size_t lo = 0, hi = portals->count - 1;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        if (portals->cdf[mid] > u1) hi = mid;
+        else lo = mid + 1;
+    }
+    double before = lo ? portals->cdf[lo - 1] : 0.0, share = portals->cdf[lo] - before;
+    double ur = share > 0.0 ? fmin(1.0, fmax(0.0, (u1 - before) / share)) : 0.0;
+    const cdl_portal_triangle *t = &portals->triangles[lo];
+    double b0, b1;
+    cdl_sample_uniform_triangle(ur, u2, &b0, &b1);
+    cdl_vec3 x = cdl_vec3_madd(cdl_vec3_madd(t->v0, b1, t->e1), 1.0 - b0 - b1, t->e2);
+    cdl_vec3 w = cdl_vec3_sub(x, p);
+    double len = cdl_vec3_length(w);
+    if (!(len > 0.0)) return 0;
+    *dir = cdl_vec3_scale(w, 1.0 / len);
+    *pdf = cdl_sky_portals_pdf(portals, p, *dir);
+    return *pdf > 0.0 && isfinite(*pdf);
+}
