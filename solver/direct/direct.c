@@ -490,6 +490,8 @@ void cdl_direct_scratch_release(cdl_direct_scratch *scratch)
     free(scratch->contribution);
     free(scratch->rays);
     free(scratch->ray_slot);
+    free(scratch->ray_blocked);
+    free(scratch->ray_fraction);
     free(scratch->ext_light);
     free(scratch->ext_slot);
     free(scratch->ext_value);
@@ -515,7 +517,11 @@ static cdl_status scratch_reserve(cdl_direct_scratch *s, size_t slots, size_t li
     if (r) s->rays = r;
     uint32_t *k = realloc(s->ray_slot, slots * sizeof *k);
     if (k) s->ray_slot = k;
-    if (!c || !r || !k) return cdl_error_out_of_memory(err);
+    unsigned char *b = realloc(s->ray_blocked, slots * sizeof *b);
+    if (b) s->ray_blocked = b;
+    double *f = realloc(s->ray_fraction, slots * sizeof *f);
+    if (f) s->ray_fraction = f;
+    if (!c || !r || !k || !b || !f) return cdl_error_out_of_memory(err);
     s->capacity = slots;
     return CDL_OK;
 }
@@ -547,30 +553,19 @@ cdl_status cdl_direct_illuminance_chunk(const cdl_direct_context *ctx, const cdl
                 double e = delta[i].E.lx > 0.0 && cdl_scene_light_applies(&ctx->lights[l], points[i]) ? delta[i].E.lx
                                                                                                        : 0.0;
                 scratch->contribution[i * lights + a] = e;
-                cdl_ray_record *r = &scratch->rays[pending];
                 if (e > 0.0 && strategy == CDL_STRATEGY_DELTA_SHADOWED &&
-                    cdl_ray_offsets_shadow_ray(&ctx->offsets, points[i], normals[i], delta[i].to_light,
-                                               delta[i].distance, &r->origin, &r->t_near, &r->t_far)) {
-                    r->dir = delta[i].to_light;
-                    r->exclude = cdl_scene_light_own_piece(&ctx->lights[l]);
+                    cdl_direct_shadow_segment(ctx, points[i], normals[i], delta[i].to_light, delta[i].distance,
+                                              cdl_scene_light_own_piece(&ctx->lights[l]), &scratch->rays[pending],
+                                              stats))
                     scratch->ray_slot[pending++] = (uint32_t)(i * lights + a);
-                }
             }
         }
     }
-    /* 2. The shadow rays, one after another (through glass, each carries
-     *    the panes' transmittance). */
-    int glass = ctx->geometry && cdl_scene_geometry_has_glass(ctx->geometry);
-    for (size_t k = 0; k < pending; ++k) {
-        const cdl_ray_record *r = &scratch->rays[k];
-        if (ctx->log) cdl_direct_record_ray(ctx->log, r->origin, r->dir, r->t_near, r->t_far, r->exclude);
-        if (glass)
-            scratch->contribution[scratch->ray_slot[k]] *=
-                cdl_scene_geometry_transmission_except(ctx->geometry, r->origin, r->dir, r->t_far, r->exclude);
-        else if (cdl_ray_scene_occluded_except(ctx->rays, r->origin, r->dir, r->t_near, r->t_far, r->exclude))
-            scratch->contribution[scratch->ray_slot[k]] = 0.0;
-    }
-    stats->rays += pending;
+    /* 2. The shadow rays, light by light from the chunk's neighbouring
+     *    points: as Embree packets (the same answers as one by one), through
+     *    glass one after another, each with the panes' transmittance. */
+    cdl_direct_transmit_many(ctx, scratch->rays, pending, scratch->ray_blocked, scratch->ray_fraction);
+    for (size_t k = 0; k < pending; ++k) scratch->contribution[scratch->ray_slot[k]] *= scratch->ray_fraction[k];
     /* 3. Per point, the extended lights, sampled together to the point's
      *    target given its exact terms; then the sum in light order, as
      *    cdl_direct_illuminance forms it (adding the zeros of dark lights

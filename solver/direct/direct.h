@@ -55,11 +55,7 @@ const char *cdl_light_strategy_name(cdl_light_strategy strategy);
 const char *cdl_light_strategy_describe(cdl_light_strategy strategy, const cdl_scene_light *light);
 
 /* Shadow rays as cast, for benchmarks that replay them (single-threaded use). */
-typedef struct cdl_ray_record {
-    cdl_vec3 origin, dir;
-    double t_near, t_far;
-    uint32_t exclude;                 /* the light's own piece, which the ray passes (CDL_RAY_EXCLUDE_NONE) */
-} cdl_ray_record;
+typedef cdl_ray_segment cdl_ray_record; /* exclude: the light's own piece, which the ray passes */
 
 typedef struct cdl_ray_log {
     cdl_ray_record *rays;
@@ -241,6 +237,8 @@ typedef struct cdl_direct_scratch {
     double *contribution;             /* points x active lights */
     cdl_ray_record *rays;             /* pending shadow rays */
     uint32_t *ray_slot;               /* their slot in `contribution` */
+    unsigned char *ray_blocked;       /* their answers (scratch of cdl_direct_transmit_many) */
+    double *ray_fraction;             /* the light that passes along each */
     size_t capacity;                  /* slots */
     uint32_t *ext_light;              /* the chunk's extended lights */
     size_t *ext_slot;                 /* their place among the active lights */

@@ -161,16 +161,19 @@ static int term_sample(term *t, cdl_vec3 p, cdl_vec3 n, double u1, double u2, cd
 }
 
 /* One sample in [u1_lo, u1_hi) x [u2_lo, u2_hi), index `index` of the
- * term's stream: its value f for t->est (0 where it carries nothing, is
- * hidden when sampled plainly, or is seen when its hidden part is
- * estimated), *unoccluded what it would carry with nothing in the way. */
-static double stratum_sample(const cdl_direct_context *ctx, term *t, const double lo[2], const double hi[2],
-                             uint64_t index, cdl_vec3 p, cdl_vec3 n, double *unoccluded, cdl_direct_sample_stats *stats)
+ * term's stream, up to its shadow ray: its value f for t->est before
+ * visibility (0 where it carries nothing), *unoccluded what it would carry
+ * with nothing in the way, and 1 when its shadow ray is in *ray (to trace
+ * with the round's others), 0 when f is final (nothing to trace: a region
+ * sample, a sample that carries nothing, or one seen for certain). */
+static int stratum_draw(const cdl_direct_context *ctx, term *t, const double lo[2], const double hi[2],
+                        uint64_t index, cdl_vec3 p, cdl_vec3 n, double *f, double *unoccluded, cdl_ray_segment *ray,
+                        cdl_direct_sample_stats *stats)
 {
     cdl_rng_key key = {ctx->seed, t->stream};
     double u[2];
     cdl_rng_uniform2(key, index, u);
-    *unoccluded = 0.0;
+    *f = *unoccluded = 0.0;
     if (t->mode == TERM_REGION) {
         /* (L - L_ref) cos / pdf; what a feature the samples missed could
          * change a sample by, (L_hi - L_lo) cos / pdf, stands as the jump. */
@@ -178,22 +181,38 @@ static double stratum_sample(const cdl_direct_context *ctx, term *t, const doubl
         double weight;
         if (!cdl_sky_region_sample(t->region, lo[0] + u[0] * (hi[0] - lo[0]), lo[1] + u[1] * (hi[1] - lo[1]), &w,
                                    &weight))
-            return 0.0;
+            return 0;
         *unoccluded = t->L_spread * weight;
-        return (cdl_sky_region_luminance(t->region, w) - t->L_ref) * weight;
+        *f = (cdl_sky_region_luminance(t->region, w) - t->L_ref) * weight;
+        return 0;
     }
     cdl_light_sample ls;
     if (!term_sample(t, p, n, lo[0] + u[0] * (hi[0] - lo[0]), lo[1] + u[1] * (hi[1] - lo[1]), &ls) ||
         !(ls.pdf > 0.0))
-        return 0.0;
+        return 0;
     double c = cdl_vec3_dot(n, ls.to_light);
-    if (!(c > 0.0)) return 0.0;
+    if (!(c > 0.0)) return 0;
     double value = ls.L.cd_m2 * c / ls.pdf;
     *unoccluded = value;
-    /* V: 1 seen, 0 hidden, between through glass */
-    double V = cdl_direct_transmission(ctx, p, n, ls.to_light, ls.distance, cdl_scene_light_own_piece(t->light), stats);
-    return t->mode == TERM_HIDDEN ? value * (1.0 - V) : value * V;
+    *f = t->mode == TERM_HIDDEN ? 0.0 : value; /* seen for certain (V = 1) unless its ray says otherwise */
+    return cdl_direct_shadow_segment(ctx, p, n, ls.to_light, ls.distance, cdl_scene_light_own_piece(t->light), ray,
+                                     stats);
 }
+
+/* A round's strata are drawn ROUND_BATCH at a time: their samples, then
+ * their shadow rays together (as Embree packets: from one point towards
+ * one light, the most coherent rays there are), then each stratum's pair
+ * in order, so that the round's sums are those of drawing and tracing
+ * sample by sample, to the bit. */
+#define ROUND_BATCH 64
+
+typedef struct round_batch {
+    double f[2 * ROUND_BATCH], unoccluded[2 * ROUND_BATCH];
+    cdl_ray_segment rays[2 * ROUND_BATCH];
+    uint16_t ray_of[2 * ROUND_BATCH]; /* the sample whose ray each is */
+    unsigned char blocked[2 * ROUND_BATCH];
+    double V[2 * ROUND_BATCH];
+} round_batch;
 
 /* The fractional part of j times the golden ratio: offsets that stay
  * evenly spread for every run of rows (Weyl's equidistribution theorem;
@@ -231,15 +250,36 @@ static void sample_round(const cdl_direct_context *ctx, term *t, int k, cdl_vec3
     uint64_t base = t->drawn;
     cdl_round round = {0.0, 0.0, 0.0, 0};
     double unoccluded = 0.0, d4 = 0.0;
-    for (int64_t j = 0; j < k; ++j) {
-        double shift = k > 1 ? golden_offset(j) : 0.0;
-        for (int64_t i = 0; i < k; ++i) {
-            double lo[2] = {i == 0 ? 0.0 : (i + shift) / k, (double)j / k};
-            double hi[2] = {i == k - 1 ? 1.0 : (i + 1 + shift) / k, (double)(j + 1) / k};
-            double w = (hi[0] - lo[0]) * k, f[2];
+    round_batch b;
+    int64_t strata = (int64_t)k * k;
+    for (int64_t first = 0; first < strata; first += ROUND_BATCH) {
+        int64_t last = first + ROUND_BATCH < strata ? first + ROUND_BATCH : strata;
+        size_t rays = 0;
+        double lo[ROUND_BATCH][2], hi[ROUND_BATCH][2];
+        for (int64_t s = first; s < last; ++s) {
+            int64_t j = s / k, i = s % k, m = s - first;
+            double shift = k > 1 ? golden_offset(j) : 0.0;
+            lo[m][0] = i == 0 ? 0.0 : (i + shift) / k;
+            lo[m][1] = (double)j / k;
+            hi[m][0] = i == k - 1 ? 1.0 : (i + 1 + shift) / k;
+            hi[m][1] = (double)(j + 1) / k;
+            for (int r = 0; r < 2; ++r)
+                if (stratum_draw(ctx, t, lo[m], hi[m], base + (uint64_t)(2 * s + r), p, n, &b.f[2 * m + r],
+                                 &b.unoccluded[2 * m + r], &b.rays[rays], stats))
+                    b.ray_of[rays++] = (uint16_t)(2 * m + r);
+        }
+        /* V: 1 seen, 0 hidden, between through glass */
+        cdl_direct_transmit_many(ctx, b.rays, rays, b.blocked, b.V);
+        for (size_t q = 0; q < rays; ++q) {
+            size_t at = b.ray_of[q];
+            double value = b.unoccluded[at];
+            b.f[at] = t->mode == TERM_HIDDEN ? value * (1.0 - b.V[q]) : value * b.V[q];
+        }
+        for (int64_t s = first; s < last; ++s) {
+            int64_t m = s - first;
+            double w = (hi[m][0] - lo[m][0]) * k, *f = &b.f[2 * m];
             for (int r = 0; r < 2; ++r) {
-                double u;
-                f[r] = stratum_sample(ctx, t, lo, hi, base + (uint64_t)(2 * (j * k + i) + r), p, n, &u, stats);
+                double u = b.unoccluded[2 * m + r];
                 if (u > 0.0) {
                     t->carrying += 1.0;
                     unoccluded += w * u;

@@ -25,6 +25,20 @@ void cdl_direct_record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_
 double cdl_direct_transmission(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
                                uint32_t exclude, cdl_direct_sample_stats *stats);
 
+/* The shadow ray cdl_direct_transmission traces for the same arguments,
+ * to trace later with others (cdl_direct_transmit_many): 0 when it traces
+ * none (no geometry, or nothing between p and the light: the fraction is
+ * 1). Logged and counted in stats as cdl_direct_transmission does. */
+int cdl_direct_shadow_segment(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                              uint32_t exclude, cdl_ray_segment *ray, cdl_direct_sample_stats *stats);
+
+/* The fractions of light along `count` such segments, each to the bit what
+ * cdl_direct_transmission gives: without glass traced as Embree packets
+ * (cdl_ray_scene_occluded_many; `blocked` is scratch for count answers),
+ * through glass one after another. */
+void cdl_direct_transmit_many(const cdl_direct_context *ctx, const cdl_ray_segment *rays, size_t count,
+                              unsigned char *blocked, double *fraction);
+
 /* Is the segment from p (normal n) along unit dir over `distance` blocked
  * (by anything but piece `exclude`, glass included)? Counts the ray in stats. */
 int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,

@@ -61,6 +61,33 @@ double cdl_direct_transmission(const cdl_direct_context *ctx, cdl_vec3 p, cdl_ve
     return cdl_scene_geometry_transmission_except(ctx->geometry, o, dir, t_far, exclude);
 }
 
+int cdl_direct_shadow_segment(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                              uint32_t exclude, cdl_ray_segment *ray, cdl_direct_sample_stats *stats)
+{
+    if (!ctx->geometry) return 0;
+    if (!cdl_ray_offsets_shadow_ray(&ctx->offsets, p, n, dir, distance, &ray->origin, &ray->t_near, &ray->t_far))
+        return 0;
+    ray->dir = dir;
+    ray->exclude = exclude;
+    stats->rays++;
+    if (ctx->log) cdl_direct_record_ray(ctx->log, ray->origin, dir, ray->t_near, ray->t_far, exclude);
+    return 1;
+}
+
+void cdl_direct_transmit_many(const cdl_direct_context *ctx, const cdl_ray_segment *rays, size_t count,
+                              unsigned char *blocked, double *fraction)
+{
+    if (count == 0) return;
+    if (cdl_scene_geometry_has_glass(ctx->geometry)) {
+        for (size_t k = 0; k < count; ++k)
+            fraction[k] = cdl_scene_geometry_transmission_except(ctx->geometry, rays[k].origin, rays[k].dir,
+                                                                 rays[k].t_far, rays[k].exclude);
+        return;
+    }
+    cdl_ray_scene_occluded_many(ctx->rays, rays, count, blocked);
+    for (size_t k = 0; k < count; ++k) fraction[k] = blocked[k] ? 0.0 : 1.0;
+}
+
 /* Move planes first .. first + count - 1 of a region outward by tol, so
  * that the index's shrink by tol leaves them where they were. */
 static void unshrink_planes(cdl_convex_region *region, int first, int count, double tol)
