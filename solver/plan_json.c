@@ -216,6 +216,22 @@ static void grid_interreflection(cdl_plan_json *plan, const cdl_solve_state *sta
         cJSON_AddNumberToObject(gi, "points_served_alone", (double)job->alone);
     } else {
         cJSON_AddNumberToObject(gi, "paths", (double)job->paths);
+        const cdl_pathtrace_convergence *c = &job->convergence;
+        cJSON *conv = cJSON_AddObjectToObject(gi, "convergence");
+        cJSON_AddNumberToObject(conv, "alpha", c->alpha);
+        cJSON_AddNumberToObject(conv, "points_measured", (double)c->measured);
+        char why[240];
+        if (c->measured >= 3)
+            snprintf(why, sizeof why,
+                     "each point's paths planned as if its variance fell as N^-%.3f, the median over %zu of its "
+                     "points of a pilot against a round 8 times larger",
+                     c->alpha, c->measured);
+        else
+            snprintf(why, sizeof why,
+                     "each point's paths planned as if its variance fell as 1/N: %zu of its points asked for 8 "
+                     "pilots or more, too few to measure the exponent on",
+                     c->measured);
+        cJSON_AddStringToObject(conv, "why", why);
     }
     if (state->scene->settings.method == CDL_METHOD_AUTO) {
         char why[200];

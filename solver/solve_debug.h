@@ -11,7 +11,9 @@ typedef struct cdl_solve_debug {
                                        * visible polygon is exact */
     int no_cache_gradients;           /* 1: the irradiance cache interpolates without its records' gradients
                                        * (to measure what they buy) */
+    int paths_as_one_over_n;          /* 1: path tracing plans every point as if its variance fell as 1/N,
+                                       * the grid's exponent not measured (to measure what it buys) */
 } cdl_solve_debug;
-#define CDL_SOLVE_DEBUG_NONE {.ray_log = NULL, .no_exact_route = 0, .no_cache_gradients = 0}
+#define CDL_SOLVE_DEBUG_NONE {.ray_log = NULL, .no_exact_route = 0, .no_cache_gradients = 0, .paths_as_one_over_n = 0}
 
 #endif

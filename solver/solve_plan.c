@@ -148,7 +148,10 @@ static void make_contexts(cdl_solve_state *state)
                              .geometry = state->geometry,
                              .seed = scene->settings.seed,
                              .bounces = scene->settings.bounces};
-    state->pathtrace = (cdl_pathtrace_context){.path = path, .target = state->target, .max_paths = 16777216.0};
+    state->pathtrace = (cdl_pathtrace_context){.path = path,
+                                               .target = state->target,
+                                               .max_paths = 16777216.0,
+                                               .measure_alpha = !state->debug.paths_as_one_over_n};
     state->icache = (cdl_icache_context){.path = path, .target = state->target,
                                          .gradients = !state->debug.no_cache_gradients};
     state->vertical = (cdl_vertical_context){.path = path, .indirect = state->indirect && state->pieces > 0,

@@ -22,7 +22,7 @@ static cdl_status run_pathtrace(cdl_solve_state *state, cdl_grid_job *job, cdl_e
     double t0 = cdl_pool_now_seconds();
     cdl_status st = cdl_pathtrace_solve_grid(&state->pathtrace, &gs->grid, (size_t)job->plan->key, gs->E_direct,
                                              job->var_direct, gs->E_indirect, job->var_indirect, &workers, stage,
-                                             &state->pathtrace_stats, err);
+                                             &job->convergence, &state->pathtrace_stats, err);
     state->out->compute_seconds += cdl_pool_now_seconds() - t0;
     job->paths = state->pathtrace_stats.paths - before;
     return st;

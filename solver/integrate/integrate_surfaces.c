@@ -263,7 +263,7 @@ static cdl_status field(void *user, const cdl_field_probe *probes, size_t count,
         st = cached_indirect(state, f, probes, count, points, E_dir, var_dir, E_ind, var_ind, key, stage, err);
     else if (st == CDL_OK && state->surface_method == CDL_METHOD_PATHTRACE)
         st = cdl_pathtrace_solve_grid(&state->pathtrace, &grid, key, E_dir, var_dir, E_ind, var_ind, &workers, stage,
-                                      &state->pathtrace_stats, err);
+                                      NULL, &state->pathtrace_stats, err);
 
     state->out->compute_seconds += cdl_pool_now_seconds() - t0;
     for (size_t i = 0; st == CDL_OK && i < count; ++i) {

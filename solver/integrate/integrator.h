@@ -147,6 +147,7 @@ typedef struct cdl_grid_job {
     /* Facts for the plan. */
     uint64_t records, passes, alone;  /* icache: records gathered for this grid, placement passes, own records */
     uint64_t paths;                   /* pathtrace: paths traced for this grid */
+    cdl_pathtrace_convergence convergence; /* pathtrace: the exponent its plans took */
     uint64_t vertical_rays;           /* the vertical outputs' sampled part */
 } cdl_grid_job;
 

@@ -18,12 +18,16 @@
  * freedom. */
 #define PILOT_SIDE 8
 
-/* One round: k x k cells of the first direction, two paths a cell. */
-static void path_round(const cdl_pathtrace_context *ctx, uint64_t stream, uint64_t base, cdl_vec3 p, cdl_vec3 n,
-                       int k, cdl_estimate *est, double *potential_sum, cdl_path_stats *stats, cdl_path_tally *tally)
+/* One round: k x k cells of the first direction, two paths a cell. Returns
+ * the round's differing pairs in effect, (sum d^2)^2 / sum d^4 (d a cell's
+ * difference): the degrees of freedom its variance estimate has, about
+ * (chi-square) a relative spread of sqrt(2 / pairs). */
+static double path_round(const cdl_pathtrace_context *ctx, uint64_t stream, uint64_t base, cdl_vec3 p, cdl_vec3 n,
+                         int k, cdl_estimate *est, double *potential_sum, cdl_path_stats *stats, cdl_path_tally *tally)
 {
     cdl_frame f = cdl_frame_from_normal(n);
     cdl_round round = {0.0, 0.0, 0.0, 0};
+    double d4 = 0.0;
     for (int j = 0; j < k; ++j)
         for (int i = 0; i < k; ++i) {
             double v[2];
@@ -40,8 +44,11 @@ static void path_round(const cdl_pathtrace_context *ctx, uint64_t stream, uint64
                 cdl_path_tally_add(tally, &r);
             }
             cdl_round_add_pair(&round, v[0], v[1]);
+            double d2 = (v[0] - v[1]) * (v[0] - v[1]);
+            d4 += d2 * d2;
         }
     cdl_estimate_add_round(est, &round);
+    return d4 > 0.0 ? round.sum_d2 * round.sum_d2 / d4 : 0.0;
 }
 
 /* The variance of an estimate of paths, at least what paths that all gave
@@ -56,32 +63,102 @@ static double paths_variance(const cdl_estimate *est, double potential)
     return v;
 }
 
+/* The plan's margin for the pilot's own error: its variance estimate, of
+ * D differing pairs in effect, is uncertain by about sqrt(2 / D)
+ * relative, and the stage is planned for the variance of two such spreads
+ * above it, 1 + 2 sqrt(2 / D) (1.35 at D = 64, the pilot's 8 x 8 cells all
+ * alike), at most PLAN_MARGIN_MAX (a skewed pilot, a few bright paths:
+ * D of 2 or 3). PLAN_MARGIN_MAX = 2 is the margin every plan took before
+ * (radiometry/estimate.h): in the furnace a pilot of skewed paths misjudged
+ * the variance by up to 2.6 times. */
+#define PLAN_MARGIN_MAX 2.0
+
+static double plan_margin(double pairs)
+{
+    if (!(pairs > 0.0)) return PLAN_MARGIN_MAX;
+    return fmin(PLAN_MARGIN_MAX, 1.0 + 2.0 * sqrt(2.0 / pairs));
+}
+
+/* Paths for the stage from a pilot of `pilot->samples` paths whose
+ * variance of the mean is v: the variance modelled as v (n / N)^alpha,
+ * alpha the grid's measured exponent (cdl_pathtrace_solve_grid), the
+ * budget divided by the margin: N = n (margin v / budget)^(1 / alpha). */
+static double plan_paths(const cdl_estimate *pilot, double v, double budget, double alpha, double margin,
+                         double least)
+{
+    if (!(v > 0.0) || !(budget > 0.0)) return least;
+    double n = pilot->samples * pow(margin * v / budget, 1.0 / (alpha >= 1.0 ? alpha : 1.0));
+    return n > least ? n : least;
+}
+
+/* A pilot whose plan reaches beyond PLAN_REACH times its paths and whose
+ * variance estimate rests on fewer than PLAN_PAIRS differing pairs in
+ * effect (a few bright paths among many dim ones: the integrating
+ * sphere's pilots had 5 to 18) is followed by a second pilot round of
+ * 16 x 16 cells, 512 paths, and the point is planned from that round
+ * alone. Measured on the sphere of tests/tools/test_bench_cli.sh at 0.02 %:
+ * planned from pilots of 5 to 18 pairs with the margin alone, stated
+ * errors spread from 0.59 to 1.13 of the target (docs/tuning.md). */
+#define PLAN_REACH 16.0
+#define PLAN_PAIRS 32.0
+#define SECOND_PILOT_SIDE 16
+
+/* The pilot of a point and what it asks for: the paths of its stage. */
+typedef struct point_pilot {
+    cdl_estimate est;         /* the round planned from */
+    cdl_estimate first;       /* the first round (PILOT_SIDE) */
+    double taken;             /* paths of the pilot rounds */
+    double potential_sum, potential, pairs, budget, want;
+} point_pilot;
+
+/* The point's E = E_dir + E_ind is held to t; the direct part was held to
+ * t / sqrt 2 (half the variance), the rest is the paths'. A point in the
+ * dark is held to a thousandth of what its paths could carry. */
+static void plan_point(const cdl_pathtrace_context *ctx, double E_direct, double var_direct, double mean,
+                       point_pilot *pp)
+{
+    pp->potential = pp->potential_sum / pp->taken;
+    double R = fmax(E_direct + mean, 1e-3 * pp->potential);
+    double whole = ctx->target * ctx->target * R * R;
+    pp->budget = fmax(whole - var_direct, 0.5 * whole);
+    double least = 2.0 * PILOT_SIDE * PILOT_SIDE;
+    if (pp->est.nonzero == 0)
+        /* A pilot that saw nothing: as many paths as hold what all of them
+         * could have missed to the budget (estimate.h). */
+        pp->want = cdl_estimate_plan_unseen(pp->potential, pp->budget, least);
+    else
+        pp->want = plan_paths(&pp->est, paths_variance(&pp->est, pp->potential), pp->budget, ctx->alpha,
+                              plan_margin(pp->pairs), least);
+}
+
+static void pilot_point(const cdl_pathtrace_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n, double E_direct,
+                        double var_direct, point_pilot *pp, cdl_path_stats *stats, cdl_path_tally *tally)
+{
+    memset(pp, 0, sizeof *pp);
+    pp->pairs = path_round(ctx, stream, 0, p, n, PILOT_SIDE, &pp->first, &pp->potential_sum, stats, tally);
+    pp->est = pp->first;
+    pp->taken = pp->first.samples;
+    plan_point(ctx, E_direct, var_direct, cdl_estimate_mean(&pp->first), pp);
+    if (pp->first.nonzero == 0 || pp->want <= PLAN_REACH * pp->taken || pp->pairs >= PLAN_PAIRS) return;
+    cdl_estimate second = {0.0, 0.0, 0.0, 0};
+    pp->pairs = path_round(ctx, stream, (uint64_t)pp->taken, p, n, SECOND_PILOT_SIDE, &second, &pp->potential_sum,
+                           stats, tally);
+    pp->taken += second.samples;
+    pp->est = second;
+    /* the scale from both rounds, the plan from the second */
+    double mean = (pp->first.weighted + second.weighted) / (pp->first.samples + second.samples);
+    plan_point(ctx, E_direct, var_direct, mean, pp);
+}
+
 void cdl_pathtrace_point(const cdl_pathtrace_context *ctx, uint64_t stream, cdl_vec3 p, cdl_vec3 n, double E_direct,
                          double var_direct, double *E_indirect, double *var_indirect, cdl_path_stats *stats,
                          cdl_path_tally *tally)
 {
     /* The pilot: how variable are this point's paths, how much light. */
-    cdl_estimate pilot = {0.0, 0.0, 0.0, 0};
-    double potential_sum = 0.0;
-    path_round(ctx, stream, 0, p, n, PILOT_SIDE, &pilot, &potential_sum, stats, tally);
-    uint64_t taken = (uint64_t)pilot.samples;
-    double potential = potential_sum / pilot.samples;
-    /* The point's E = E_dir + E_ind is held to t; the direct part was held
-     * to t / sqrt 2 (half the variance), the rest is the paths'. A point in
-     * the dark is held to a thousandth of what its paths could carry. */
-    double R = fmax(E_direct + cdl_estimate_mean(&pilot), 1e-3 * potential);
-    double whole = ctx->target * ctx->target * R * R;
-    double budget = fmax(whole - var_direct, 0.5 * whole);
-    double least = 2.0 * PILOT_SIDE * PILOT_SIDE, want;
-    if (pilot.nonzero == 0) {
-        /* A pilot that saw nothing: as many paths as hold what all of them
-         * could have missed to the budget (estimate.h). */
-        want = cdl_estimate_plan_unseen(potential, budget, least);
-    } else {
-        cdl_estimate planning = pilot;
-        planning.var_num = paths_variance(&pilot, potential) * pilot.samples * pilot.samples;
-        want = cdl_estimate_plan(&planning, budget, least);
-    }
+    point_pilot pp;
+    pilot_point(ctx, stream, p, n, E_direct, var_direct, &pp, stats, tally);
+    uint64_t taken = (uint64_t)pp.taken;
+    double want = pp.want, potential_sum = pp.potential_sum;
     /* The reported stage: its size depends on the pilot only, so its mean
      * and its variance estimate are those of a fixed number of paths
      * (estimate.h). Should the pilot have seen too little, the stated error
@@ -91,7 +168,7 @@ void cdl_pathtrace_point(const cdl_pathtrace_context *ctx, uint64_t stream, cdl_
     path_round(ctx, stream, taken, p, n, cdl_estimate_side_for(want, PILOT_SIDE, 1 << 12), &est, &potential_sum,
                stats, tally);
     *E_indirect = cdl_estimate_mean(&est);
-    *var_indirect = paths_variance(&est, potential);
+    *var_indirect = paths_variance(&est, pp.potential);
 }
 
 /* ---- a grid on the worker pool ---------------------------------------------- */
@@ -126,10 +203,117 @@ static cdl_status trace_points(void *shared, void *local, size_t begin, size_t e
     return CDL_OK;
 }
 
-cdl_status cdl_pathtrace_solve_grid(const cdl_pathtrace_context *ctx, const cdl_grid *grid, size_t grid_index,
+/* ---- the grid's convergence exponent -------------------------------------- */
+
+/* How fast a point's variance falls with its paths, Var(N) = v (n / N)^alpha,
+ * is measured on the grid before it is planned: at CALIBRATION_POINTS of
+ * its points (evenly spread over its index order) whose pilot asks for
+ * CALIBRATION_REACH times its paths or more (where alpha matters), a round
+ * of CALIBRATION_REACH pilots' paths is traced (random numbers of their
+ * own, never the stage's) and alpha_i = ln(v_pilot / v_round) /
+ * ln(N_round / n_pilot); the grid takes their median, within [1,
+ * ALPHA_MAX] (1: independent paths; the first direction's strata can make
+ * it more, never less), or 1 when fewer than 3 points measured it. Why
+ * measured and not assumed: the stratified first bounce makes the
+ * variance fall faster than 1 / N where it carries much of the variance
+ * and hardly at all where later bounces do (docs/tuning.md: 1.11 in the
+ * downlight room between 128 and 3000 paths). The points are the grid's,
+ * not the thread's: the same alpha, the same bytes, for any threads and
+ * ranks. */
+#define CALIBRATION_POINTS 12
+#define CALIBRATION_REACH 8.0
+#define ALPHA_MAX 1.5
+
+typedef struct calibration_job {
+    const cdl_pathtrace_context *ctx;
+    const cdl_grid *grid;
+    size_t grid_index, stride;
+    const double *E_direct, *var_direct;
+    double *alpha;            /* per point: alpha_i at the calibration points where measured, else NAN */
+} calibration_job;
+
+/* The calibration points are those i with i % stride == stride / 2. */
+static cdl_status calibrate_points(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
+{
+    (void)err;
+    const calibration_job *job = shared;
+    cdl_path_stats *stats = local;
+    for (size_t i = begin; i < end; ++i) {
+        job->alpha[i] = NAN;
+        if (i % job->stride != job->stride / 2 || i / job->stride >= CALIBRATION_POINTS) continue;
+        uint64_t stream = cdl_rng_stream_id((uint64_t)job->grid_index, (uint64_t)i, 0x63616c6962 /* "calib" */);
+        cdl_vec3 from = job->grid->points[i];
+        if (job->ctx->path.direct) cdl_direct_edge_point(job->ctx->path.direct, from, job->grid->normals[i], &from);
+        cdl_path_tally tally;
+        memset(&tally, 0, sizeof tally);
+        point_pilot pp;
+        pilot_point(job->ctx, stream, from, job->grid->normals[i], job->E_direct[i], job->var_direct[i], &pp, stats,
+                    &tally);
+        /* the first pilot round against one CALIBRATION_REACH times its size */
+        double v_pilot = cdl_estimate_variance(&pp.first), n_pilot = pp.first.samples;
+        if (pp.first.nonzero == 0 || !(v_pilot > 0.0) || pp.want < CALIBRATION_REACH * n_pilot) continue;
+        cdl_estimate round = {0.0, 0.0, 0.0, 0};
+        double potential_sum = 0.0;
+        int side = cdl_estimate_side_for(CALIBRATION_REACH * n_pilot, PILOT_SIDE, 1 << 12);
+        path_round(job->ctx, stream, (uint64_t)pp.taken, from, job->grid->normals[i], side, &round, &potential_sum,
+                   stats, &tally);
+        double v_round = cdl_estimate_variance(&round);
+        if (v_round > 0.0) job->alpha[i] = log(v_pilot / v_round) / log(round.samples / n_pilot);
+    }
+    return CDL_OK;
+}
+
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static cdl_status measure_alpha(const cdl_pathtrace_context *ctx, const cdl_grid *grid, size_t grid_index,
+                                const double *E_direct, const double *var_direct, const cdl_workers *workers,
+                                const char *stage, cdl_path_stats *locals, cdl_pathtrace_convergence *conv,
+                                cdl_error *err)
+{
+    conv->alpha = 1.0;
+    conv->measured = 0;
+    size_t count = grid->count < CALIBRATION_POINTS ? grid->count : CALIBRATION_POINTS;
+    if (count == 0 || !ctx->measure_alpha) return CDL_OK;
+    double *alpha = malloc(grid->count * sizeof *alpha);
+    if (!alpha) return cdl_error_out_of_memory(err);
+    calibration_job job = {ctx, grid, grid_index, grid->count / count, E_direct, var_direct, alpha};
+    /* Over the grid's points, each calibrated by the rank that holds its
+     * direct light (ranks keep theirs in blocks of CDL_RANK_KEEP_ALIGN
+     * points), and every rank ends with every alpha_i. */
+    cdl_workers everywhere = *workers;
+    everywhere.everywhere = 1;
+    cdl_pool_task task = {.count = grid->count,
+                          .chunk = cdl_rank_group_count(workers->ranks) > 1 ? CDL_RANK_KEEP_ALIGN : 1,
+                          .run = calibrate_points,
+                          .shared = &job,
+                          .locals = locals,
+                          .local_size = sizeof *locals,
+                          .stage = stage,
+                          .outputs = {{alpha, sizeof *alpha}}};
+    cdl_status st = cdl_pool_run_shared(&task, &everywhere, err);
+    if (st == CDL_OK) {
+        size_t m = 0;
+        for (size_t i = 0; i < grid->count; ++i)
+            if (isfinite(alpha[i])) alpha[m++] = alpha[i];
+        conv->measured = m;
+        if (m >= 3) {
+            qsort(alpha, m, sizeof *alpha, compare_doubles);
+            double median = m % 2 ? alpha[m / 2] : 0.5 * (alpha[m / 2 - 1] + alpha[m / 2]);
+            conv->alpha = fmin(ALPHA_MAX, fmax(1.0, median));
+        }
+    }
+    free(alpha);
+    return st;
+}
+
+cdl_status cdl_pathtrace_solve_grid(const cdl_pathtrace_context *ctx_in, const cdl_grid *grid, size_t grid_index,
                                     const double *E_direct, const double *var_direct, double *E_indirect,
                                     double *var_indirect, const cdl_workers *workers, const char *stage,
-                                    cdl_path_stats *stats, cdl_error *err)
+                                    cdl_pathtrace_convergence *convergence, cdl_path_stats *stats, cdl_error *err)
 {
     int threads = workers->threads < 1 ? 1 : workers->threads;
     cdl_path_stats *locals = calloc((size_t)threads, sizeof *locals);
@@ -139,6 +323,18 @@ cdl_status cdl_pathtrace_solve_grid(const cdl_pathtrace_context *ctx, const cdl_
         free(tallies);
         return cdl_error_out_of_memory(err);
     }
+    /* the grid's exponent first, then every point planned with it */
+    cdl_pathtrace_convergence conv;
+    cdl_status st = measure_alpha(ctx_in, grid, grid_index, E_direct, var_direct, workers, stage, locals, &conv, err);
+    if (st != CDL_OK) {
+        free(locals);
+        free(tallies);
+        return st;
+    }
+    if (convergence) *convergence = conv;
+    cdl_pathtrace_context planned = *ctx_in;
+    planned.alpha = conv.alpha;
+    const cdl_pathtrace_context *ctx = &planned;
     grid_job job = {ctx, grid, grid_index, E_direct, var_direct, E_indirect, var_indirect, tallies};
     /* Points differ a hundredfold in cost: small chunks keep threads busy. */
     cdl_pool_task task = {.count = grid->count,
@@ -151,7 +347,7 @@ cdl_status cdl_pathtrace_solve_grid(const cdl_pathtrace_context *ctx, const cdl_
                           .outputs = {{E_indirect, sizeof *E_indirect},
                                       {var_indirect, sizeof *var_indirect},
                                       {tallies, sizeof *tallies}}};
-    cdl_status st = cdl_pool_run_shared(&task, workers, err);
+    st = cdl_pool_run_shared(&task, workers, err);
     cdl_path_stats sum = {0};
     for (int t = 0; t < threads; ++t) cdl_path_stats_add(&sum, &locals[t]);
     if (st == CDL_OK) st = cdl_path_stats_share(workers->ranks, &sum, err);

@@ -8,8 +8,10 @@
  * direction stratified over k x k cells of the cosine-weighted hemisphere,
  * two paths a cell, so that each stage's variance has an unbiased
  * estimate: a pilot of 8 x 8 cells plans how many paths the point needs for
- * the variance of E = E_dir + E_ind to meet the target, and the stage of
- * that size, alone, is reported.
+ * the variance of E = E_dir + E_ind to meet the target (its variance
+ * modelled as falling as N^-alpha, alpha measured on the grid, with a
+ * margin for the pilot's own error), and the stage of that size, alone, is
+ * reported.
  * Random numbers are keyed by (seed, grid, point, path): the result of a
  * point depends on nothing else.
  */
@@ -29,17 +31,30 @@ typedef struct cdl_pathtrace_context {
     cdl_path_context path;
     double target;                        /* relative standard error of a point's E = E_dir + E_ind */
     double max_paths;                     /* most paths a point (the cost's bound) */
+    double alpha;                         /* the exponent a point's plan takes, Var ~ N^-alpha (below 1: 1);
+                                           * cdl_pathtrace_solve_grid measures it for its grid */
+    int measure_alpha;                    /* 1: cdl_pathtrace_solve_grid measures alpha; 0: takes 1 */
 } cdl_pathtrace_context;
+
+/* What a grid's plan took: the exponent alpha measured on it and the
+ * points that measured it (fewer than 3: alpha = 1). */
+typedef struct cdl_pathtrace_convergence {
+    double alpha;
+    size_t measured;
+} cdl_pathtrace_convergence;
 
 /* The interreflected illuminance at every point of a grid, and its
  * variance, given the points' direct illuminance and its variance (their
  * sum is held to the target), on the workers (pool.h; with ranks kept, a
  * rank needs only its block's direct light, and rank 0's stats get every
- * point's tallies). grid_index keys the random numbers. */
+ * point's tallies). grid_index keys the random numbers. The points' plans
+ * take the exponent measured on the grid (pathtrace.c; 1 unmeasured when
+ * ctx->measure_alpha is 0), reported in *convergence (may be NULL);
+ * ctx->alpha is not read. */
 cdl_status cdl_pathtrace_solve_grid(const cdl_pathtrace_context *ctx, const cdl_grid *grid, size_t grid_index,
                                     const double *E_direct, const double *var_direct, double *E_indirect,
                                     double *var_indirect, const cdl_workers *workers, const char *stage,
-                                    cdl_path_stats *stats, cdl_error *err);
+                                    cdl_pathtrace_convergence *convergence, cdl_path_stats *stats, cdl_error *err);
 
 /* The same for one point (p, unit n) with stream `stream`; adds to *stats
  * and its paths' sums to *tally. */

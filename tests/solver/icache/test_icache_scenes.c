@@ -116,7 +116,11 @@ static void test_table_top(void)
  * falls off across the room. Interpolating with the records' gradients
  * must be measurably closer to the path-traced reference than without
  * (the RMS error over the floor, the reference's own noise subtracted in
- * quadrature). */
+ * quadrature). The cache at 4 %, its records far apart, so that what the
+ * gradients change (about 15 % of the RMS error) stands well above what the
+ * reference's noise (0.6 % target) can move it by: with the cache at 2 %
+ * the two RMS errors differed by 0-4 %, within that noise, and the check
+ * passed or failed by the reference's seed. */
 static void test_gradients(void)
 {
     const char *fmt =
@@ -131,7 +135,7 @@ static void test_gradients(void)
     cdl_solution r[3];
     snprintf(json, sizeof json, fmt, "pathtrace", 0.006, 5);
     if (!fixture_solve(json, &s[0], &r[0], 2)) return;
-    snprintf(json, sizeof json, fmt, "icache", 0.02, 1);
+    snprintf(json, sizeof json, fmt, "icache", 0.04, 1);
     cdl_solve_options o = CDL_SOLVE_OPTIONS_INIT;
     o.threads = 2;
     int ok1 = fixture_solve_options(json, &s[1], &r[1], &o);
