@@ -220,8 +220,14 @@ static void grid_interreflection(cdl_plan_json *plan, const cdl_solve_state *sta
         cJSON *conv = cJSON_AddObjectToObject(gi, "convergence");
         cJSON_AddNumberToObject(conv, "alpha", c->alpha);
         cJSON_AddNumberToObject(conv, "points_measured", (double)c->measured);
+        cJSON_AddNumberToObject(conv, "spread", c->spread);
         char why[240];
-        if (c->measured >= 3)
+        if (c->measured >= 3 && !c->agreed)
+            snprintf(why, sizeof why,
+                     "each point's paths planned as if its variance fell as 1/N: the exponents measured at %zu of "
+                     "its points spread over %.2f between their quartiles (heavy-tailed paths), too far to plan by",
+                     c->measured, c->spread);
+        else if (c->measured >= 3)
             snprintf(why, sizeof why,
                      "each point's paths planned as if its variance fell as N^-%.3f, the median over %zu of its "
                      "points of a pilot against a round 8 times larger",

@@ -223,6 +223,17 @@ static cdl_status trace_points(void *shared, void *local, size_t begin, size_t e
 #define CALIBRATION_POINTS 12
 #define CALIBRATION_REACH 8.0
 #define ALPHA_MAX 1.5
+/* ... unless the points disagree: where the spread between their quartiles
+ * (3rd and 10th of 12) is above ALPHA_SPREAD_MAX the grid plans as 1/N.
+ * Pilots of 64 alike pairs read alpha_i to about 0.07-0.09 (a quartile
+ * spread of about 0.12); heavy-tailed paths (a point light 0.2 m under a
+ * white ceiling: its bright spot found by few paths) scatter them from 0
+ * to 2.3, and their median swung from 0.98 to 1.38 with the seed, the
+ * solve's cost fivefold with it; spreads of 0.49 to 1.9 over four seeds
+ * of a smaller such room (docs/tuning.md). The downlight room's spread:
+ * 0.24; the one-bounce room of tests/solver/pathtrace/test_path_planning.c
+ * (every exponent at the cap or above) 0.15 to 0.25. */
+#define ALPHA_SPREAD_MAX 0.35
 
 typedef struct calibration_job {
     const cdl_pathtrace_context *ctx;
@@ -276,6 +287,8 @@ static cdl_status measure_alpha(const cdl_pathtrace_context *ctx, const cdl_grid
 {
     conv->alpha = 1.0;
     conv->measured = 0;
+    conv->spread = 0.0;
+    conv->agreed = 0;
     size_t count = grid->count < CALIBRATION_POINTS ? grid->count : CALIBRATION_POINTS;
     if (count == 0 || !ctx->measure_alpha) return CDL_OK;
     double *alpha = malloc(grid->count * sizeof *alpha);
@@ -303,7 +316,9 @@ static cdl_status measure_alpha(const cdl_pathtrace_context *ctx, const cdl_grid
         if (m >= 3) {
             qsort(alpha, m, sizeof *alpha, compare_doubles);
             double median = m % 2 ? alpha[m / 2] : 0.5 * (alpha[m / 2 - 1] + alpha[m / 2]);
-            conv->alpha = fmin(ALPHA_MAX, fmax(1.0, median));
+            conv->spread = alpha[m - 1 - (m - 1) / 4] - alpha[(m - 1) / 4];
+            conv->agreed = conv->spread <= ALPHA_SPREAD_MAX;
+            if (conv->agreed) conv->alpha = fmin(ALPHA_MAX, fmax(1.0, median));
         }
     }
     free(alpha);

@@ -37,10 +37,12 @@ typedef struct cdl_pathtrace_context {
 } cdl_pathtrace_context;
 
 /* What a grid's plan took: the exponent alpha measured on it and the
- * points that measured it (fewer than 3: alpha = 1). */
+ * points that measured it (fewer than 3, or too far apart: alpha = 1). */
 typedef struct cdl_pathtrace_convergence {
     double alpha;
     size_t measured;
+    double spread;        /* the measured exponents' quartile spread */
+    int agreed;           /* 1: measured at 3 points or more, the spread small enough to plan by */
 } cdl_pathtrace_convergence;
 
 /* The interreflected illuminance at every point of a grid, and its
