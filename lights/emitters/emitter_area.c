@@ -56,6 +56,7 @@
 #include "radiometry/constants.h"
 #include "radiometry/conversions.h"
 #include "radiometry/frame.h"
+#include "radiometry/ray_triangle.h"
 #include "radiometry/sampling.h"
 
 typedef struct area_triangle {
@@ -185,21 +186,10 @@ static int area_exact(const cdl_emitter *e, cdl_vec3 p, cdl_vec3 n, cdl_illumina
 
 /* ---- ray queries ------------------------------------------------------------ */
 
-/* Ray p + t w (t > 0) against the triangle: Moller and Trumbore, "Fast,
- * minimum storage ray-triangle intersection", JGT 2(1), 1997. */
+/* Ray p + t w (t > 0) against the triangle (radiometry/ray_triangle.h). */
 static double ray_triangle(const area_triangle *t, cdl_vec3 p, cdl_vec3 w)
 {
-    cdl_vec3 pv = cdl_vec3_cross(w, t->e2);
-    double det = cdl_vec3_dot(t->e1, pv);
-    if (det == 0.0) return -1.0;
-    cdl_vec3 s = cdl_vec3_sub(p, t->v0);
-    double b1 = cdl_vec3_dot(s, pv) / det;
-    if (b1 < 0.0 || b1 > 1.0) return -1.0;
-    cdl_vec3 qv = cdl_vec3_cross(s, t->e1);
-    double b2 = cdl_vec3_dot(w, qv) / det;
-    if (b2 < 0.0 || b1 + b2 > 1.0) return -1.0;
-    double dist = cdl_vec3_dot(t->e2, qv) / det;
-    return dist > 0.0 ? dist : -1.0;
+    return cdl_ray_triangle_distance(t->v0, t->e1, t->e2, p, w);
 }
 
 /* Ray against the plane of a rect or disk: distance and in-plane offset from `base`. */

@@ -34,33 +34,6 @@ void cdl_direct_record_ray(cdl_ray_log *log, cdl_vec3 o, cdl_vec3 dir, double t_
     log->rays[log->count++] = rec;
 }
 
-/* Is the segment from p towards the light blocked? The surface p lies on
- * and the one the light's sample lies on never count (scene_geometry.h). */
-int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
-                        uint32_t exclude, cdl_direct_sample_stats *stats)
-{
-    cdl_vec3 o;
-    double t_near, t_far;
-    if (!cdl_ray_offsets_shadow_ray(&ctx->offsets, p, n, dir, distance, &o, &t_near, &t_far)) return 0;
-    stats->rays++;
-    if (ctx->log) cdl_direct_record_ray(ctx->log, o, dir, t_near, t_far, exclude);
-    return cdl_ray_scene_occluded_except(ctx->rays, o, dir, t_near, t_far, exclude);
-}
-
-double cdl_direct_transmission(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
-                               uint32_t exclude, cdl_direct_sample_stats *stats)
-{
-    if (!ctx->geometry) return 1.0;
-    if (!cdl_scene_geometry_has_glass(ctx->geometry))
-        return cdl_direct_shadowed(ctx, p, n, dir, distance, exclude, stats) ? 0.0 : 1.0;
-    cdl_vec3 o;
-    double t_near, t_far;
-    if (!cdl_ray_offsets_shadow_ray(&ctx->offsets, p, n, dir, distance, &o, &t_near, &t_far)) return 1.0;
-    stats->rays++;
-    if (ctx->log) cdl_direct_record_ray(ctx->log, o, dir, t_near, t_far, exclude);
-    return cdl_scene_geometry_transmission_except(ctx->geometry, o, dir, t_far, exclude);
-}
-
 int cdl_direct_shadow_segment(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
                               uint32_t exclude, cdl_ray_segment *ray, cdl_direct_sample_stats *stats)
 {
@@ -74,14 +47,39 @@ int cdl_direct_shadow_segment(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec
     return 1;
 }
 
+/* The fraction of light along one such segment: through the panes
+ * crossed, 0 past anything opaque (scene_geometry.h). */
+static double segment_fraction(const cdl_direct_context *ctx, const cdl_ray_segment *r)
+{
+    if (cdl_scene_geometry_has_glass(ctx->geometry))
+        return cdl_scene_geometry_transmission_except(ctx->geometry, r->origin, r->dir, r->t_far, r->exclude);
+    return cdl_ray_scene_occluded_except(ctx->rays, r->origin, r->dir, r->t_near, r->t_far, r->exclude) ? 0.0 : 1.0;
+}
+
+/* Is the segment from p towards the light blocked? The surface p lies on
+ * and the one the light's sample lies on never count (scene_geometry.h). */
+int cdl_direct_shadowed(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                        uint32_t exclude, cdl_direct_sample_stats *stats)
+{
+    cdl_ray_segment r;
+    if (!cdl_direct_shadow_segment(ctx, p, n, dir, distance, exclude, &r, stats)) return 0;
+    return cdl_ray_scene_occluded_except(ctx->rays, r.origin, r.dir, r.t_near, r.t_far, r.exclude);
+}
+
+double cdl_direct_transmission(const cdl_direct_context *ctx, cdl_vec3 p, cdl_vec3 n, cdl_vec3 dir, double distance,
+                               uint32_t exclude, cdl_direct_sample_stats *stats)
+{
+    cdl_ray_segment r;
+    if (!cdl_direct_shadow_segment(ctx, p, n, dir, distance, exclude, &r, stats)) return 1.0;
+    return segment_fraction(ctx, &r);
+}
+
 void cdl_direct_transmit_many(const cdl_direct_context *ctx, const cdl_ray_segment *rays, size_t count,
                               unsigned char *blocked, double *fraction)
 {
     if (count == 0) return;
     if (cdl_scene_geometry_has_glass(ctx->geometry)) {
-        for (size_t k = 0; k < count; ++k)
-            fraction[k] = cdl_scene_geometry_transmission_except(ctx->geometry, rays[k].origin, rays[k].dir,
-                                                                 rays[k].t_far, rays[k].exclude);
+        for (size_t k = 0; k < count; ++k) fraction[k] = segment_fraction(ctx, &rays[k]);
         return;
     }
     cdl_ray_scene_occluded_many(ctx->rays, rays, count, blocked);

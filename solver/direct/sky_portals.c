@@ -6,6 +6,8 @@
 #include <string.h>
 
 #include "base/error_report.h"
+#include "lights/emitters/distribution2d.h"
+#include "radiometry/ray_triangle.h"
 #include "radiometry/sampling.h"
 
 static cdl_vec3 vertex(const double *xyz, uint32_t i)
@@ -55,6 +57,7 @@ cdl_status cdl_sky_portals_build(const cdl_scene_geometry *geometry, cdl_sky_por
         return CDL_OK;
     }
     for (size_t t = 0; t < out->count; ++t) out->cdf[t] /= out->area;
+    out->cdf[out->count - 1] = 1.0;
     return CDL_OK;
 }
 
@@ -65,31 +68,12 @@ void cdl_sky_portals_release(cdl_sky_portals *portals)
     memset(portals, 0, sizeof *portals);
 }
 
-/* Distance along unit dir from p to triangle t, or -1 when the ray misses
- * it (Moller and Trumbore, "Fast, minimum storage ray/triangle
- * intersection", JGT 2(1), 1997). */
-static double ray_triangle(const cdl_portal_triangle *t, cdl_vec3 p, cdl_vec3 dir)
-{
-    cdl_vec3 pv = cdl_vec3_cross(dir, t->e2);
-    double det = cdl_vec3_dot(t->e1, pv);
-    if (det == 0.0) return -1.0;
-    double inv = 1.0 / det;
-    cdl_vec3 s = cdl_vec3_sub(p, t->v0);
-    double b1 = cdl_vec3_dot(s, pv) * inv;
-    if (b1 < 0.0 || b1 > 1.0) return -1.0;
-    cdl_vec3 qv = cdl_vec3_cross(s, t->e1);
-    double b2 = cdl_vec3_dot(dir, qv) * inv;
-    if (b2 < 0.0 || b1 + b2 > 1.0) return -1.0;
-    double d = cdl_vec3_dot(t->e2, qv) * inv;
-    return d > 0.0 ? d : -1.0;
-}
-
 double cdl_sky_portals_pdf(const cdl_sky_portals *portals, cdl_vec3 p, cdl_vec3 dir)
 {
     double pdf = 0.0;
     for (size_t i = 0; i < portals->count; ++i) {
         const cdl_portal_triangle *t = &portals->triangles[i];
-        double d = ray_triangle(t, p, dir);
+        double d = cdl_ray_triangle_distance(t->v0, t->e1, t->e2, p, dir);
         if (!(d > 0.0)) continue;
         /* dA = d^2 dw / |cos theta| (the change of measure from area to solid angle) */
         double c = fabs(cdl_vec3_dot(t->normal, dir));
@@ -104,15 +88,9 @@ int cdl_sky_portals_sample(const cdl_sky_portals *portals, cdl_vec3 p, double u1
     *pdf = 0.0;
     if (portals->count == 0) return 0;
     /* a triangle by its share of the area, u1 rescaled within the share */
-    size_t lo = 0, hi = portals->count - 1;
-    while (lo < hi) {
-        size_t mid = (lo + hi) / 2;
-        if (portals->cdf[mid] > u1) hi = mid;
-        else lo = mid + 1;
-    }
-    double before = lo ? portals->cdf[lo - 1] : 0.0, share = portals->cdf[lo] - before;
-    double ur = share > 0.0 ? fmin(1.0, fmax(0.0, (u1 - before) / share)) : 0.0;
-    const cdl_portal_triangle *t = &portals->triangles[lo];
+    double ur;
+    size_t k = cdl_distribution_invert_cdf(portals->cdf, portals->count, u1, &ur);
+    const cdl_portal_triangle *t = &portals->triangles[k];
     double b0, b1;
     cdl_sample_uniform_triangle(ur, u2, &b0, &b1);
     cdl_vec3 x = cdl_vec3_madd(cdl_vec3_madd(t->v0, b1, t->e1), 1.0 - b0 - b1, t->e2);
