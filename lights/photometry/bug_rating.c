@@ -78,7 +78,7 @@ static int lower_zones(const cdl_photometry *p, double *zone)
         while (band < 3 && q.gamma_deg[i] > edge[band]) ++band;
         for (size_t j = 0; j < q.nc; ++j) {
             int front = cos(q.c_deg[j] * CDL_DEG_TO_RAD) > 0.0;
-            zone[(front ? FL : BL) + band] += q.cd[i * q.nc + j] * q.weight[i];
+            zone[(front ? FL : BL) + band] += q.cd[i * q.nc + j] * q.c_weight[j] * q.weight[i];
         }
     }
     cdl_sphere_quadrature_free(&q);

@@ -19,6 +19,9 @@
  *    (and likewise in y), inside [0, a] for a share
  *        S(d) = max(0, min(a - m, a - |d|) - m) / (a - 2 m)
  *    of the positions, so T_k = S(h tan(gamma) cos C) S(h tan(gamma) sin C).
+ * DR = (Phi_down / Phi) x (the share of Phi_down landing on the plane):
+ * the first factor exact, the second a ratio of two sums over the same
+ * quadrature nodes (sphere_quadrature.h, cut at the table's own angles).
  * For a Lambertian luminaire DR is the configuration factor from the inset
  * square of luminaires to the work plane (tests/lights/photometry check it
  * against that closed form). Real files' stated ratios come from other
@@ -61,19 +64,25 @@ cdl_status cdl_photometry_direct_ratios(const cdl_photometry *p, double ratio[CD
     cdl_sphere_quadrature q;
     if (!cdl_sphere_quadrature_sample(p, 0.0, 90.0, DR_GAMMA_STEP_DEG, DR_C_NODES, &q))
         return cdl_error_out_of_memory(err);
+    /* DR is the downward share of the flux (exact, photometry_flux.c) times
+     * the share of that downward flux which reaches the work plane, the
+     * latter a ratio of two sums over the same nodes: so DR never exceeds
+     * the downward share and grows with k whatever the quadrature's error. */
+    double down = cdl_sphere_quadrature_flux(&q);
+    double down_share = fmin(1.0, cdl_photometry_zone_flux(p, 0.0, 90.0).lm / flux);
     const double h = 1.0, m = 0.5 * SPACING_TO_HEIGHT * h;
-    for (int k = 0; k < CDL_DIRECT_RATIO_COUNT; ++k) {
+    for (int k = 0; k < CDL_DIRECT_RATIO_COUNT && down > 0.0 && down_share > 0.0; ++k) {
         double a = 2.0 * room_index[k] * h, sum = 0.0;
         for (size_t i = 0; i < q.ng; ++i) {
             double t = h * tan(q.gamma_deg[i] * CDL_DEG_TO_RAD), ring = 0.0;
             for (size_t j = 0; j < q.nc; ++j) {
                 double c = q.c_deg[j] * CDL_DEG_TO_RAD;
                 double T = share(t * cos(c), a, m) * share(t * sin(c), a, m);
-                if (T > 0.0) ring += q.cd[i * q.nc + j] * T;
+                if (T > 0.0) ring += q.cd[i * q.nc + j] * q.c_weight[j] * T;
             }
             sum += ring * q.weight[i];
         }
-        ratio[k] = sum / flux;
+        ratio[k] = down_share * fmin(1.0, sum / down);
     }
     cdl_sphere_quadrature_free(&q);
     return CDL_OK;

@@ -7,6 +7,11 @@
  *    intensity in every downward direction against the closed-form solid
  *    angle of the work plane averaged over the luminaires' square by
  *    Gauss-Legendre quadrature;
+ *  - direct ratios and TM-15-11 zones of spots narrower than the
+ *    quadrature's step (0.3 and 0.01 degree cones at nadir): all of the
+ *    flux lands on the work plane (DR = 1: every direction within 26.6
+ *    degrees of nadir does, for every room index) and in the FL and BL
+ *    zones, half each;
  *  - the CIE flux code of a Lambertian table (the flux within a cone of
  *    half angle t is pi I0 sin^2 t) with and without a lamp flux;
  *  - TM-15-11 zone lumens and BUG rating of an asymmetric table,
@@ -132,6 +137,43 @@ static void test_direct_ratios(void)
     cdl_photometry_release(p);
 }
 
+/* A cone of 1000 cd at nadir falling linearly to 0 at `edge` degrees (no light beyond). */
+static cdl_photometry *narrow_spot(double edge)
+{
+    double c = 0.0, g[3] = {0.0, edge, 180.0}, cd[3] = {1000.0, 0.0, 0.0};
+    cdl_photometry *p = NULL;
+    cdl_error err;
+    CHECK_OK(cdl_photometry_create_type_c(&c, 1, g, 3, cd, &p, &err), &err);
+    return p;
+}
+
+static void test_narrow_spots(void)
+{
+    const double edges[2] = {0.3, 0.01};
+    for (int e = 0; e < 2; ++e) {
+        cdl_photometry *p = narrow_spot(edges[e]);
+        if (!p) return;
+        double dr[CDL_DIRECT_RATIO_COUNT], flux = cdl_photometry_flux(p).lm;
+        cdl_error err;
+        CHECK(flux > 0.0);
+        CHECK_OK(cdl_photometry_direct_ratios(p, dr, &err), &err);
+        /* 1e-12: DR is (downward share) x (a ratio of equal sums), both 1 to rounding */
+        for (int k = 0; k < CDL_DIRECT_RATIO_COUNT; ++k)
+            CHECK_MSG(fabs(dr[k] - 1.0) <= 1e-12, "%g degree spot: DR(k = %g) = %.12g, expected 1", edges[e],
+                      cdl_direct_ratio_room_index(k), dr[k]);
+        cdl_bug_rating r;
+        CHECK_OK(cdl_photometry_bug_rating(p, &r, &err), &err);
+        /* 1e-6 of the flux: two Gauss-Legendre nodes on [0, e] leave the
+         * quartic term g^4 / (6 e) of (1 - g / e) sin g, 1.5e-7 of the cone's
+         * flux at e = 0.3 degree; the exact flux's closed form loses about
+         * 1e-16 / (1 - cos e) to cancellation, 2.5e-8 at e = 0.01 degree */
+        CHECK_MSG(fabs(r.zone_lm[0] - 0.5 * flux) <= 1e-6 * flux && fabs(r.zone_lm[4] - 0.5 * flux) <= 1e-6 * flux,
+                  "%g degree spot: FL %.9g and BL %.9g lm, expected half of %.9g each", edges[e], r.zone_lm[0],
+                  r.zone_lm[4], flux);
+        cdl_photometry_release(p);
+    }
+}
+
 static void test_flux_code(void)
 {
     cdl_photometry *p = rotational(lambert, 0.5, 180.0);
@@ -232,6 +274,7 @@ static void test_bug(void)
 int main(void)
 {
     test_direct_ratios();
+    test_narrow_spots();
     test_flux_code();
     test_bug();
     return check_finish();
