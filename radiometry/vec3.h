@@ -25,9 +25,17 @@ static inline cdl_vec3 cdl_vec3_cross(cdl_vec3 a, cdl_vec3 b)
     return cdl_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 static inline double cdl_vec3_length_squared(cdl_vec3 a) { return cdl_vec3_dot(a, a); }
-/* hypot-style length: no overflow or underflow for components near the double limits. */
+/* hypot-style length: no overflow or underflow for components near the double limits.
+ * Where the sum of squares is within [2^-1000, 2^1000] it is the plain
+ * square root (the largest square is then at least 2^-1002, so squares
+ * lost to underflow are below 2^-74 of the sum, under an ulp; nothing
+ * overflows); only beyond, or for NaN and infinities, is the vector scaled
+ * by its largest component first (fmax is a library call without
+ * -ffast-math, and this is on every ray's path). */
 static inline double cdl_vec3_length(cdl_vec3 a)
 {
+    double s = a.x * a.x + a.y * a.y + a.z * a.z;
+    if (s >= 0x1p-1000 && s <= 0x1p1000) return sqrt(s);
     double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
     if (m == 0.0 || !isfinite(m)) return m;
     double x = a.x / m, y = a.y / m, z = a.z / m;

@@ -178,9 +178,16 @@ typedef struct query_context {
     double_query *queries;
 } query_context;
 
+/* The larger of two finite numbers: a comparison, where fmax is a library
+ * call without -ffast-math (the filter below runs for every candidate hit). */
+static inline double max2(double a, double b)
+{
+    return a > b ? a : b;
+}
+
 static double max_abs3(cdl_vec3 v)
 {
-    return fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+    return max2(fabs(v.x), max2(fabs(v.y), fabs(v.z)));
 }
 
 static cdl_vec3 vertex_of(const pending_geometry *g, uint32_t index)
@@ -203,8 +210,8 @@ static double triangle_hit_double(const pending_geometry *g, uint32_t prim, cons
     cdl_vec3 m = cdl_vec3_cross(cdl_vec3_sub(b, a), cdl_vec3_sub(c, a));
     double m_len = cdl_vec3_length(m);
     if (!(m_len > 0.0)) return -1.0;
-    double scale = fmax(fmax(max_abs3(a), max_abs3(b)), fmax(max_abs3(c), max_abs3(q->origin)));
-    if (q->has_end) scale = fmax(scale, max_abs3(q->end));
+    double scale = max2(max2(max_abs3(a), max_abs3(b)), max2(max_abs3(c), max_abs3(q->origin)));
+    if (q->has_end) scale = max2(scale, max_abs3(q->end));
     double on_plane = ROUNDING_RELATIVE * scale * m_len;
     double s_o = cdl_vec3_dot(m, cdl_vec3_sub(q->origin, a));
     if (fabs(s_o) <= on_plane) return -1.0;
@@ -235,8 +242,8 @@ static double sphere_hit_double(const pending_geometry *g, const double_query *q
     cdl_vec3 oc = cdl_vec3_sub(q->origin, c);
     double A = cdl_vec3_dot(q->dir, q->dir), B = cdl_vec3_dot(oc, q->dir);
     double dist = cdl_vec3_length(oc);
-    double scale = fmax(max_abs3(c) + r, max_abs3(q->origin));
-    if (q->has_end) scale = fmax(scale, max_abs3(q->end));
+    double scale = max2(max_abs3(c) + r, max_abs3(q->origin));
+    if (q->has_end) scale = max2(scale, max_abs3(q->end));
     double bound = ROUNDING_RELATIVE * scale;
     double roots[2];
     int count = 0;
@@ -382,7 +389,7 @@ cdl_status cdl_ray_scene_commit(cdl_ray_scene *s, cdl_error *err)
 
 double cdl_ray_scene_resolution(const cdl_ray_scene *s, cdl_vec3 p)
 {
-    return FLOAT_ULP * fmax(max_abs3(cdl_vec3_sub(p, s->offset)), s->half_size);
+    return FLOAT_ULP * max2(max_abs3(cdl_vec3_sub(p, s->offset)), s->half_size);
 }
 
 /* The query in double, and the float ray Embree traces for it: the same
@@ -400,7 +407,7 @@ static void start_query(double_query *q, struct RTCRay *ray, const cdl_ray_scene
     q->best_geom = q->best_prim = RTC_INVALID_GEOMETRY_ID;
     q->exclude = CDL_RAY_EXCLUDE_NONE;
     double margin = FLOAT_MARGIN_ULPS * cdl_ray_scene_resolution(s, origin);
-    if (q->has_end) margin = fmax(margin, FLOAT_MARGIN_ULPS * cdl_ray_scene_resolution(s, q->end));
+    if (q->has_end) margin = max2(margin, FLOAT_MARGIN_ULPS * cdl_ray_scene_resolution(s, q->end));
     double dir_len = cdl_vec3_length(dir);
     double back = dir_len > 0.0 ? margin / dir_len : 0.0; /* in units of |dir| */
     q->margin = margin;

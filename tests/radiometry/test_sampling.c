@@ -150,6 +150,17 @@ static void test_frame(void)
     }
     /* Length without overflow for huge components. */
     CHECK_REL(cdl_vec3_length(cdl_vec3_make(3e200, 4e200, 0)), 5e200, 1e-15);
+    /* ... and without underflow for tiny ones, on both sides of the bounds
+     * of the plain square root (sums of squares 2^-1000 and 2^1000): a
+     * 3-4-5 triangle scaled by 2^k has length 5 x 2^k to rounding */
+    const int scales[] = {-1074 + 3, -600, -501, -500, -499, 0, 499, 500, 501, 1019};
+    for (size_t k = 0; k < sizeof scales / sizeof *scales; ++k) {
+        double u = ldexp(1.0, scales[k]);
+        CHECK_REL(cdl_vec3_length(cdl_vec3_make(0.0, 3.0 * u, -4.0 * u)), 5.0 * u, 1e-15);
+        CHECK_REL(cdl_vec3_length(cdl_vec3_normalize(cdl_vec3_make(3.0 * u, 4.0 * u, 0.0))), 1.0, 1e-15);
+    }
+    CHECK(isinf(cdl_vec3_length(cdl_vec3_make(INFINITY, 1.0, 0.0))));
+    CHECK(isnan(cdl_vec3_length(cdl_vec3_make(NAN, 1.0, 0.0))));
 }
 
 int main(void)

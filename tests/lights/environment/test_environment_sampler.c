@@ -101,7 +101,10 @@ static void test_pdf_and_mean(void)
             if (!s) continue;
             cdl_illuminance exact;
             CHECK_OK(cdl_emitter_exact_illuminance(e, cdl_vec3_make(0, 0, 0), n, &exact, NULL), &(cdl_error){0});
-            CHECK_REL(cdl_environment_sampler_illuminance(s).lx, exact.lx, 1e-15);
+            /* 1e-13: both are the sum over the 1200 pixels of the same terms,
+             * each rounded on its own route (a few ulp each, up to about
+             * 1e-14 summed), far below any one lit pixel's share */
+            CHECK_REL(cdl_environment_sampler_illuminance(s).lx, exact.lx, 1e-13);
             if (!(exact.lx > 0.0)) {
                 cdl_environment_sampler_release(s);
                 continue;
