@@ -54,17 +54,6 @@ static cdl_vec3 to_luminaire(const goniometric_emitter *g, cdl_vec3 w)
     return cdl_vec3_make(cdl_vec3_dot(g->col[0], w), cdl_vec3_dot(g->col[1], w), cdl_vec3_dot(g->col[2], w));
 }
 
-/* Polar angle from the nadir (-z) of a unit vector, in degrees, accurate
- * everywhere: acos(cos g) where it is well conditioned, asin(sin g) near the
- * poles (acos loses digits there). */
-static double gamma_deg_of(cdl_vec3 unit)
-{
-    double c = -unit.z;
-    if (fabs(c) < 0.7) return acos(c) * CDL_RAD_TO_DEG;
-    double s = asin(fmin(1.0, sqrt(unit.x * unit.x + unit.y * unit.y))) * CDL_RAD_TO_DEG;
-    return c > 0.0 ? s : 180.0 - s;
-}
-
 static cdl_luminous_intensity gonio_intensity(const cdl_emitter *e, cdl_vec3 unit_dir)
 {
     const goniometric_emitter *g = as_gonio(e);
@@ -72,7 +61,7 @@ static cdl_luminous_intensity gonio_intensity(const cdl_emitter *e, cdl_vec3 uni
     /* Beyond the table's cut-off the interpolated intensity is zero: skip the lookup. */
     if (g->has_cone && -local.z <= g->cone_cos) return cdl_candelas(0.0);
     /* A rotationally symmetric table does not depend on C: no azimuth needed. */
-    cdl_luminous_intensity I = g->rotational ? cdl_photometry_intensity_c_gamma(g->photometry, 0.0, gamma_deg_of(local))
+    cdl_luminous_intensity I = g->rotational ? cdl_photometry_intensity_c_gamma(g->photometry, 0.0, cdl_photometry_gamma_deg(local))
                                              : cdl_photometry_intensity(g->photometry, local);
     return cdl_candelas(I.cd * g->factor);
 }

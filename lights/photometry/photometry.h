@@ -214,6 +214,12 @@ void cdl_photometry_get_table(const cdl_photometry *photometry, cdl_photometry_t
 /* Frame direction of the table's angle pair (h, v) (types A/B/C as above). */
 cdl_vec3 cdl_photometry_direction(cdl_photometric_type type, double h_deg, double v_deg);
 
+/* The type C gamma (degrees from the frame's nadir, -z) of a unit vector,
+ * accurate everywhere: acos(cos gamma) where it is well conditioned
+ * (|cos gamma| < 0.7), asin(sin gamma) near the poles, where acos loses
+ * digits. Half the cost of atan2(hypot(x, y), -z), as exact. */
+double cdl_photometry_gamma_deg(cdl_vec3 unit);
+
 /* ---- file data ----------------------------------------------------------- */
 
 typedef enum cdl_photometry_format {

@@ -123,6 +123,15 @@ double cdl_photometry_eval_hv(const cdl_photometry *p, double h, double v)
     return a + t * (b - a);
 }
 
+double cdl_photometry_gamma_deg(cdl_vec3 unit)
+{
+    double c = -unit.z;
+    if (fabs(c) < 0.7) return acos(c) * CDL_RAD_TO_DEG;
+    double r = sqrt(unit.x * unit.x + unit.y * unit.y);
+    double s = asin(r < 1.0 ? r : 1.0) * CDL_RAD_TO_DEG; /* a comparison: fmin is a library call */
+    return c > 0.0 ? s : 180.0 - s;
+}
+
 int cdl_photometry_direction_to_hv(cdl_photometric_type type, cdl_vec3 d, double *h, double *v)
 {
     double len = cdl_vec3_length(d);
@@ -150,7 +159,7 @@ int cdl_photometry_direction_to_hv(cdl_photometric_type type, cdl_vec3 d, double
         double c = atan2(d.y, d.x) * CDL_RAD_TO_DEG;
         if (c < 0.0) c += 360.0;
         *h = c;
-        *v = atan2(hypot(d.x, d.y), -d.z) * CDL_RAD_TO_DEG;
+        *v = cdl_photometry_gamma_deg(d);
         return 1;
     }
     }
