@@ -221,16 +221,26 @@ static void grid_interreflection(cdl_plan_json *plan, const cdl_solve_state *sta
         cJSON_AddNumberToObject(conv, "alpha", c->alpha);
         cJSON_AddNumberToObject(conv, "points_measured", (double)c->measured);
         cJSON_AddNumberToObject(conv, "spread", c->spread);
-        char why[240];
+        cJSON_AddNumberToObject(conv, "reach_paths", c->reach_paths);
+        cJSON_AddNumberToObject(conv, "alpha_beyond", c->alpha_beyond);
+        cJSON_AddNumberToObject(conv, "points_measured_beyond", (double)c->measured_beyond);
+        char why[320];
         if (c->measured >= 3 && !c->agreed)
             snprintf(why, sizeof why,
                      "each point's paths planned as if its variance fell as 1/N: the exponents measured at %zu of "
                      "its points spread over %.2f between their quartiles (heavy-tailed paths), too far to plan by",
                      c->measured, c->spread);
+        else if (c->measured >= 3 && c->measured_beyond >= 3)
+            snprintf(why, sizeof why,
+                     "each point's paths planned as if its variance fell as N^-%.3f up to %.0f paths (the median "
+                     "over %zu of its points of a pilot against a round of 8 pilots) and as N^-%.3f beyond (over "
+                     "%zu, a round of 8 pilots against one of 64)",
+                     c->alpha, c->reach_paths, c->measured, c->alpha_beyond, c->measured_beyond);
         else if (c->measured >= 3)
             snprintf(why, sizeof why,
                      "each point's paths planned as if its variance fell as N^-%.3f, the median over %zu of its "
-                     "points of a pilot against a round 8 times larger",
+                     "points of a pilot against a round 8 times larger (too few plans reach 64 pilots to read it "
+                     "further)",
                      c->alpha, c->measured);
         else
             snprintf(why, sizeof why,

@@ -79,15 +79,26 @@ static double plan_margin(double pairs)
     return fmin(PLAN_MARGIN_MAX, 1.0 + 2.0 * sqrt(2.0 / pairs));
 }
 
-/* Paths for the stage from a pilot of `pilot->samples` paths whose
- * variance of the mean is v: the variance modelled as v (n / N)^alpha,
- * alpha the grid's measured exponent (cdl_pathtrace_solve_grid), the
- * budget divided by the margin: N = n (margin v / budget)^(1 / alpha). */
-static double plan_paths(const cdl_estimate *pilot, double v, double budget, double alpha, double margin,
-                         double least)
+/* Paths for the stage from a pilot of n = `pilot->samples` paths whose
+ * variance of the mean is v, the budget divided by the margin: with
+ * X = margin v / budget, the variance modelled as v (n / N)^alpha up to
+ * the Na = alpha_paths of the grid's calibration rounds of 8 pilots, over
+ * which alpha was measured, and beyond them as falling from there as
+ * N^-beta, beta measured between those rounds and rounds of 64 pilots
+ * (cdl_pathtrace_solve_grid):
+ *     N = n X^(1 / alpha)                         where that is at most Na,
+ *     N = Na (X (n / Na)^alpha)^(1 / beta)        beyond (the two meet at Na).
+ * The exponent of the first paths is not carried past the range it was
+ * read on: the first bounce's strata may gain most at few paths. */
+static double plan_paths(const cdl_estimate *pilot, double v, double budget, const cdl_pathtrace_context *ctx,
+                         double margin, double least)
 {
     if (!(v > 0.0) || !(budget > 0.0)) return least;
-    double n = pilot->samples * pow(margin * v / budget, 1.0 / (alpha >= 1.0 ? alpha : 1.0));
+    double n0 = pilot->samples, X = margin * v / budget, alpha = ctx->alpha, Na = ctx->alpha_paths;
+    double beta = ctx->alpha_beyond > 1.0 ? ctx->alpha_beyond : 1.0;
+    if (!(alpha > 1.0)) alpha = 1.0;
+    double n = n0 * pow(X, 1.0 / alpha);
+    if (alpha > 1.0 && n > Na) n = Na > n0 ? Na * pow(X * pow(n0 / Na, alpha), 1.0 / beta) : n0 * pow(X, 1.0 / beta);
     return n > least ? n : least;
 }
 
@@ -127,7 +138,7 @@ static void plan_point(const cdl_pathtrace_context *ctx, double E_direct, double
          * could have missed to the budget (estimate.h). */
         pp->want = cdl_estimate_plan_unseen(pp->potential, pp->budget, least);
     else
-        pp->want = plan_paths(&pp->est, paths_variance(&pp->est, pp->potential), pp->budget, ctx->alpha,
+        pp->want = plan_paths(&pp->est, paths_variance(&pp->est, pp->potential), pp->budget, ctx,
                               plan_margin(pp->pairs), least);
 }
 
@@ -222,6 +233,16 @@ static cdl_status trace_points(void *shared, void *local, size_t begin, size_t e
  * ranks. */
 #define CALIBRATION_POINTS 12
 #define CALIBRATION_REACH 8.0
+/* Where a point's plan asks for CALIBRATION_REACH_MAX pilots or more, a
+ * third round that large reads the exponent beyond the first 8 pilots'
+ * worth, and the plans take it there (never above alpha; alpha itself
+ * where fewer than 3 points measured it): the first bounce's strata may
+ * gain most at few paths, and a ratio of 8 between rounds of 8 and 64
+ * pilots reads it sharply. With alpha carried on from the first 8 pilots
+ * the example office at quality high measured it from 1.02 to 1.16 over
+ * three seeds (floor grid), and at 1.16 38 of its 67 points stated errors
+ * above the target, up to 1.59 times it (docs/tuning.md). */
+#define CALIBRATION_REACH_MAX 64.0
 #define ALPHA_MAX 1.5
 /* ... unless the points disagree: where the spread between their quartiles
  * (3rd and 10th of 12) is above ALPHA_SPREAD_MAX the grid plans as 1/N.
@@ -241,6 +262,8 @@ typedef struct calibration_job {
     size_t grid_index, stride;
     const double *E_direct, *var_direct;
     double *alpha;            /* per point: alpha_i at the calibration points where measured, else NAN */
+    double *round_paths;      /* per point: the paths of its round of 8 pilots (NAN where not measured) */
+    double *alpha_late;       /* per point: the exponent between its rounds of 8 and 64 pilots, else NAN */
 } calibration_job;
 
 /* The calibration points are those i with i % stride == stride / 2. */
@@ -250,7 +273,7 @@ static cdl_status calibrate_points(void *shared, void *local, size_t begin, size
     const calibration_job *job = shared;
     cdl_path_stats *stats = local;
     for (size_t i = begin; i < end; ++i) {
-        job->alpha[i] = NAN;
+        job->alpha[i] = job->round_paths[i] = job->alpha_late[i] = NAN;
         if (i % job->stride != job->stride / 2 || i / job->stride >= CALIBRATION_POINTS) continue;
         uint64_t stream = cdl_rng_stream_id((uint64_t)job->grid_index, (uint64_t)i, 0x63616c6962 /* "calib" */);
         cdl_vec3 from = job->grid->points[i];
@@ -260,16 +283,30 @@ static cdl_status calibrate_points(void *shared, void *local, size_t begin, size
         point_pilot pp;
         pilot_point(job->ctx, stream, from, job->grid->normals[i], job->E_direct[i], job->var_direct[i], &pp, stats,
                     &tally);
-        /* the first pilot round against one CALIBRATION_REACH times its size */
+        /* the first pilot round against one CALIBRATION_REACH times its
+         * size and, where the plan asks for CALIBRATION_REACH_MAX pilots or
+         * more, against one that large too, each with random numbers of
+         * its own */
         double v_pilot = cdl_estimate_variance(&pp.first), n_pilot = pp.first.samples;
         if (pp.first.nonzero == 0 || !(v_pilot > 0.0) || pp.want < CALIBRATION_REACH * n_pilot) continue;
-        cdl_estimate round = {0.0, 0.0, 0.0, 0};
         double potential_sum = 0.0;
-        int side = cdl_estimate_side_for(CALIBRATION_REACH * n_pilot, PILOT_SIDE, 1 << 12);
-        path_round(job->ctx, stream, (uint64_t)pp.taken, from, job->grid->normals[i], side, &round, &potential_sum,
+        uint64_t offset = (uint64_t)pp.taken;
+        cdl_estimate near = {0.0, 0.0, 0.0, 0};
+        path_round(job->ctx, stream, offset, from, job->grid->normals[i],
+                   cdl_estimate_side_for(CALIBRATION_REACH * n_pilot, PILOT_SIDE, 1 << 12), &near, &potential_sum,
                    stats, &tally);
-        double v_round = cdl_estimate_variance(&round);
-        if (v_round > 0.0) job->alpha[i] = log(v_pilot / v_round) / log(round.samples / n_pilot);
+        double v_near = cdl_estimate_variance(&near);
+        if (!(v_near > 0.0)) continue;
+        job->alpha[i] = log(v_pilot / v_near) / log(near.samples / n_pilot);
+        job->round_paths[i] = near.samples;
+        if (pp.want < CALIBRATION_REACH_MAX * n_pilot) continue;
+        cdl_estimate far = {0.0, 0.0, 0.0, 0};
+        path_round(job->ctx, stream, offset + (uint64_t)near.samples, from, job->grid->normals[i],
+                   cdl_estimate_side_for(CALIBRATION_REACH_MAX * n_pilot, PILOT_SIDE, 1 << 12), &far, &potential_sum,
+                   stats, &tally);
+        double v_far = cdl_estimate_variance(&far);
+        if (v_far > 0.0 && far.samples > near.samples)
+            job->alpha_late[i] = log(v_near / v_far) / log(far.samples / near.samples);
     }
     return CDL_OK;
 }
@@ -280,6 +317,19 @@ static int compare_doubles(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* The median of x[0 .. m) (sorted in place), m >= 1. */
+static double median_of(double *x, size_t m)
+{
+    qsort(x, m, sizeof *x, compare_doubles);
+    return m % 2 ? x[m / 2] : 0.5 * (x[m / 2 - 1] + x[m / 2]);
+}
+
+/* The spread between the quartiles of sorted x[0 .. m) (the 3rd and 10th of 12). */
+static double quartile_spread(const double *x, size_t m)
+{
+    return x[m - 1 - (m - 1) / 4] - x[(m - 1) / 4];
+}
+
 static cdl_status measure_alpha(const cdl_pathtrace_context *ctx, const cdl_grid *grid, size_t grid_index,
                                 const double *E_direct, const double *var_direct, const cdl_workers *workers,
                                 const char *stage, cdl_path_stats *locals, cdl_pathtrace_convergence *conv,
@@ -288,12 +338,17 @@ static cdl_status measure_alpha(const cdl_pathtrace_context *ctx, const cdl_grid
     conv->alpha = 1.0;
     conv->measured = 0;
     conv->spread = 0.0;
+    conv->reach_paths = 0.0;
+    conv->alpha_beyond = 1.0;
+    conv->measured_beyond = 0;
     conv->agreed = 0;
     size_t count = grid->count < CALIBRATION_POINTS ? grid->count : CALIBRATION_POINTS;
     if (count == 0 || !ctx->measure_alpha) return CDL_OK;
-    double *alpha = malloc(grid->count * sizeof *alpha);
+    double *alpha = malloc(3 * grid->count * sizeof *alpha);
     if (!alpha) return cdl_error_out_of_memory(err);
-    calibration_job job = {ctx, grid, grid_index, grid->count / count, E_direct, var_direct, alpha};
+    double *round_paths = alpha + grid->count, *alpha_late = round_paths + grid->count;
+    calibration_job job = {ctx,        grid,        grid_index, grid->count / count, E_direct,
+                           var_direct, alpha,       round_paths, alpha_late};
     /* Over the grid's points, each calibrated by the rank that holds its
      * direct light (ranks keep theirs in blocks of CDL_RANK_KEEP_ALIGN
      * points), and every rank ends with every alpha_i. */
@@ -306,19 +361,34 @@ static cdl_status measure_alpha(const cdl_pathtrace_context *ctx, const cdl_grid
                           .locals = locals,
                           .local_size = sizeof *locals,
                           .stage = stage,
-                          .outputs = {{alpha, sizeof *alpha}}};
+                          .outputs = {{alpha, sizeof *alpha},
+                                      {round_paths, sizeof *round_paths},
+                                      {alpha_late, sizeof *alpha_late}}};
     cdl_status st = cdl_pool_run_shared(&task, &everywhere, err);
     if (st == CDL_OK) {
-        size_t m = 0;
-        for (size_t i = 0; i < grid->count; ++i)
-            if (isfinite(alpha[i])) alpha[m++] = alpha[i];
+        size_t m = 0, late = 0;
+        for (size_t i = 0; i < grid->count; ++i) {
+            if (isfinite(alpha_late[i])) alpha_late[late++] = alpha_late[i];
+            if (isfinite(alpha[i])) {
+                round_paths[m] = round_paths[i];
+                alpha[m++] = alpha[i];
+            }
+        }
         conv->measured = m;
+        conv->measured_beyond = late;
         if (m >= 3) {
-            qsort(alpha, m, sizeof *alpha, compare_doubles);
-            double median = m % 2 ? alpha[m / 2] : 0.5 * (alpha[m / 2 - 1] + alpha[m / 2]);
-            conv->spread = alpha[m - 1 - (m - 1) / 4] - alpha[(m - 1) / 4];
+            conv->reach_paths = median_of(round_paths, m);
+            double median = median_of(alpha, m); /* sorts alpha for the spread */
+            conv->spread = quartile_spread(alpha, m);
             conv->agreed = conv->spread <= ALPHA_SPREAD_MAX;
-            if (conv->agreed) conv->alpha = fmin(ALPHA_MAX, fmax(1.0, median));
+            if (conv->agreed) {
+                conv->alpha = fmin(ALPHA_MAX, fmax(1.0, median));
+                /* beyond the rounds of 8 pilots: the exponent between them
+                 * and those of 64, never above alpha; alpha where fewer
+                 * than 3 points asked for 64 pilots or more */
+                conv->alpha_beyond =
+                    late >= 3 ? fmin(conv->alpha, fmax(1.0, median_of(alpha_late, late))) : conv->alpha;
+            }
         }
     }
     free(alpha);
@@ -349,6 +419,8 @@ cdl_status cdl_pathtrace_solve_grid(const cdl_pathtrace_context *ctx_in, const c
     if (convergence) *convergence = conv;
     cdl_pathtrace_context planned = *ctx_in;
     planned.alpha = conv.alpha;
+    planned.alpha_paths = conv.reach_paths;
+    planned.alpha_beyond = conv.alpha_beyond;
     const cdl_pathtrace_context *ctx = &planned;
     grid_job job = {ctx, grid, grid_index, E_direct, var_direct, E_indirect, var_indirect, tallies};
     /* Points differ a hundredfold in cost: small chunks keep threads busy. */

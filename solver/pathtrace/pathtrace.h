@@ -33,6 +33,9 @@ typedef struct cdl_pathtrace_context {
     double max_paths;                     /* most paths a point (the cost's bound) */
     double alpha;                         /* the exponent a point's plan takes, Var ~ N^-alpha (below 1: 1);
                                            * cdl_pathtrace_solve_grid measures it for its grid */
+    double alpha_paths;                   /* the paths up to which alpha was measured; beyond, the plan
+                                           * takes Var ~ N^-alpha_beyond (cdl_pathtrace_solve_grid sets both) */
+    double alpha_beyond;
     int measure_alpha;                    /* 1: cdl_pathtrace_solve_grid measures alpha; 0: takes 1 */
 } cdl_pathtrace_context;
 
@@ -42,6 +45,9 @@ typedef struct cdl_pathtrace_convergence {
     double alpha;
     size_t measured;
     double spread;        /* the measured exponents' quartile spread */
+    double reach_paths;   /* the paths of the calibration rounds of 8 pilots: alpha holds up to them */
+    double alpha_beyond;  /* the exponent beyond: between rounds of 8 and 64 pilots (<= alpha; alpha unmeasured) */
+    size_t measured_beyond; /* the points that measured alpha_beyond (fewer than 3: it is alpha) */
     int agreed;           /* 1: measured at 3 points or more, the spread small enough to plan by */
 } cdl_pathtrace_convergence;
 
