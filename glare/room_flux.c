@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "base/error_report.h"
+#include "base/sort_doubles.h"
 #include "glare/room_flux.h"
 #include "radiometry/constants.h"
 
@@ -136,12 +137,6 @@ static void integrate_segment(const cdl_room *room, double a, double b, double f
     }
 }
 
-static int compare_doubles(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 cdl_status cdl_room_geometric_factors(const cdl_room *room, double fgl[4], cdl_error *err)
 {
     for (int i = 0; i < 4; ++i) fgl[i] = 0.0;
@@ -158,7 +153,7 @@ cdl_status cdl_room_geometric_factors(const cdl_room *room, double fgl[4], cdl_e
     for (size_t j = 0; j < ny; ++j) reach[k++] = (j + 0.5) * sy;
     for (size_t i = 0; i < nx; ++i)
         for (size_t j = 0; j < ny; ++j) reach[k++] = hypot((i + 0.5) * sx, (j + 0.5) * sy);
-    qsort(reach, n, sizeof *reach, compare_doubles);
+    cdl_sort_doubles(reach, n);
     double upper = 1.0; /* u = cos(gamma) falls as the reach grows */
     for (size_t m = 0; m < n; ++m) {
         double lower = room->h_m / hypot(room->h_m, reach[m]);

@@ -61,8 +61,9 @@ static cdl_luminous_intensity gonio_intensity(const cdl_emitter *e, cdl_vec3 uni
     /* Beyond the table's cut-off the interpolated intensity is zero: skip the lookup. */
     if (g->has_cone && -local.z <= g->cone_cos) return cdl_candelas(0.0);
     /* A rotationally symmetric table does not depend on C: no azimuth needed. */
-    cdl_luminous_intensity I = g->rotational ? cdl_photometry_intensity_c_gamma(g->photometry, 0.0, cdl_photometry_gamma_deg(local))
-                                             : cdl_photometry_intensity(g->photometry, local);
+    cdl_luminous_intensity I = g->rotational
+                                   ? cdl_photometry_intensity_c_gamma(g->photometry, 0.0, cdl_photometry_gamma_deg(local))
+                                   : cdl_photometry_intensity(g->photometry, local);
     return cdl_candelas(I.cd * g->factor);
 }
 

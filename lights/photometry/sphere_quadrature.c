@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "base/sort_doubles.h"
 #include "radiometry/constants.h"
 
 /* Gauss-Legendre, 2 nodes on [-1, 1], weights 1 (Abramowitz and Stegun 25.4.29). */
@@ -11,17 +12,13 @@ static const double gl2 = 0.57735026918962576451; /* 1 / sqrt(3) */
 
 /* A type A/B table's finest spacing refines the steps by halving, down to this. */
 #define FINEST_STEP_DEG (1.0 / 64.0)
-/* Nodes at most: beyond this the table's own cuts are left out (C first),
- * so that a table of thousands of angles on both axes stays in memory. */
+/* Nodes at most: beyond this a type C table's own cuts are left out (C
+ * first), and an A/B table's steps are refined less, so that a table of
+ * thousands of angles stays in memory and its integrals take well under a
+ * second. */
 #define MAX_NODES ((size_t)1 << 23)
 /* Cuts closer than this (degrees) are one cut. */
 #define CUT_MERGE_DEG 1e-9
-
-static int compare_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 /* Angles as they fall on the full circle of C: a stored plane and its
  * images under each symmetry (C -> -C, C -> 180 - C, C -> 180 + C). */
@@ -48,7 +45,7 @@ static double *make_cuts(double lo, double hi, double step, const double *extra,
         for (size_t m = 0; m < images; ++m)
             if (image[m] > lo && image[m] < hi) x[n++] = image[m];
     }
-    qsort(x, n, sizeof *x, compare_double);
+    cdl_sort_doubles(x, n);
     size_t u = 1;
     for (size_t k = 1; k < n; ++k)
         if (x[k] - x[u - 1] > CUT_MERGE_DEG) x[u++] = x[k];
@@ -83,6 +80,11 @@ int cdl_sphere_quadrature_sample(const cdl_photometry *p, double g0, double g1, 
         double finest = fmin(finest_spacing(p->h, p->nh), finest_spacing(p->v, p->nv));
         dg = refined_step(dg, finest);
         dc = refined_step(dc, finest);
+        /* within MAX_NODES: the finer step coarsened again, a halving undone at a time */
+        while (2.0 * ceil((g1 - g0) / dg) * (360.0 / dc) > (double)MAX_NODES) {
+            if (dg < dc) dg *= 2.0;
+            else dc *= 2.0;
+        }
     }
     /* a type C table's own angles, C first to go when the nodes would be too many */
     size_t extra_c = type_c && p->nh > 1 ? p->nh : 0, extra_g = type_c ? p->nv : 0;

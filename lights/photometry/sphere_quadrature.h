@@ -14,8 +14,9 @@
  * on a cut, so a zone edge at a whole step (gamma = 30, 60, 80, 90;
  * C = 90, 270 for nc a multiple of 4) never holds a node. A type A or B
  * table's cells do not follow C and gamma: its steps are refined to its
- * finest angle spacing (down to 1/64 degree) so that no cell of the table
- * is narrower than the quadrature's.
+ * finest angle spacing (down to 1/64 degree, and only as far as keeps the
+ * nodes within 2^23) so that no cell of the table is narrower than the
+ * quadrature's.
  *
  * Node (i, j) holds I(gamma_i, C_j), the ring weight
  * w_i = sin(gamma_i) x (its interval / 2) in radians and the C weight

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "base/error_report.h"
+#include "base/sort_doubles.h"
 #include "radiometry/bounds.h"
 #include "radiometry/estimate.h"
 #include "solver/icache/record_octree.h"
@@ -98,12 +99,6 @@ static double tree_reach(const reach_limits *l, const cdl_icache_record *r)
  * spacing every record reached at least 1.05 m there, records across the
  * 0.2 m gap between its cabinet and wall extrapolated a steep gradient
  * over most of it, and points stated 60-80 % errors. */
-static int compare_doubles(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 static double grid_spacing(const cdl_grid *g)
 {
     double asked = g->spacing_m > 0.0 ? g->spacing_m : INFINITY;
@@ -118,7 +113,7 @@ static double grid_spacing(const cdl_grid *g)
             if (j != i && d > 0.0 && d < near[i]) near[i] = d;
         }
     }
-    qsort(near, n, sizeof *near, compare_doubles);
+    cdl_sort_doubles(near, n);
     double h = fmin(near[n / 2], asked);
     free(near);
     return isfinite(h) && h > 0.0 ? h : 1.0;

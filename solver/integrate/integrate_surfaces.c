@@ -25,6 +25,7 @@
 #include <string.h>
 
 #include "base/content_hash.h"
+#include "base/sort_doubles.h"
 #include "radiometry/constants.h"
 #include "solver/direct/direct_grid.h"
 #include "solver/geometry/remesh.h"
@@ -297,19 +298,13 @@ static cdl_status make_shared_cache(cdl_solve_state *state, cdl_error *err)
     return cdl_icache_shared_create(b, &state->shared_cache, err);
 }
 
-static int compare_doubles(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* The maps' typical coarsest edge: the median over their patches. */
 static double median_edge(const cdl_surface_patches *p)
 {
     double *e = malloc((p->count + 1) * sizeof *e);
     if (!e) return p->count ? p->patches[0].max_edge : 1.0;
     for (size_t i = 0; i < p->count; ++i) e[i] = p->patches[i].max_edge;
-    qsort(e, p->count, sizeof *e, compare_doubles);
+    cdl_sort_doubles(e, p->count);
     double m = p->count ? e[p->count / 2] : 1.0;
     free(e);
     return m;

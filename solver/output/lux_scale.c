@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/sort_doubles.h"
+
 static const int step_mantissa[3] = {1, 2, 5};
 
 static int clamp_step(int k)
@@ -90,12 +92,6 @@ cdl_lux_scale cdl_lux_scale_for_values(const double *E_lx, size_t count)
     return make_scale(lo, hi);
 }
 
-static int compare_doubles(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
 cdl_lux_scale cdl_lux_scale_linear_for_values(const double *E_lx, size_t count)
 {
     cdl_lux_scale s;
@@ -107,7 +103,7 @@ cdl_lux_scale cdl_lux_scale_linear_for_values(const double *E_lx, size_t count)
         if (isfinite(E_lx[i])) sorted[n++] = E_lx[i];
     double max = 0.0, low = 0.0;
     if (n > 0) {
-        qsort(sorted, n, sizeof *sorted, compare_doubles);
+        cdl_sort_doubles(sorted, n);
         max = sorted[n - 1];
         /* The 2nd percentile, leaving out at least the darkest point of a
          * grid of ten or more: one dark corner must not set the scale. */

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "base/error_report.h"
+#include "base/sort_doubles.h"
 #include "radiometry/estimate.h"
 #include "radiometry/frame.h"
 #include "base/rng.h"
@@ -256,13 +257,18 @@ static cdl_status trace_points(void *shared, void *local, size_t begin, size_t e
  * (every exponent at the cap or above) 0.15 to 0.25. */
 #define ALPHA_SPREAD_MAX 0.35
 
+/* The side k of a calibration round of `pilots` first pilots' paths (k x 2k strata). */
+static int calibration_side(double pilots)
+{
+    return cdl_estimate_side_for(pilots * 2.0 * PILOT_SIDE * PILOT_SIDE, PILOT_SIDE, 1 << 12);
+}
+
 typedef struct calibration_job {
     const cdl_pathtrace_context *ctx;
     const cdl_grid *grid;
     size_t grid_index, stride;
     const double *E_direct, *var_direct;
     double *alpha;            /* per point: alpha_i at the calibration points where measured, else NAN */
-    double *round_paths;      /* per point: the paths of its round of 8 pilots (NAN where not measured) */
     double *alpha_late;       /* per point: the exponent between its rounds of 8 and 64 pilots, else NAN */
 } calibration_job;
 
@@ -273,7 +279,7 @@ static cdl_status calibrate_points(void *shared, void *local, size_t begin, size
     const calibration_job *job = shared;
     cdl_path_stats *stats = local;
     for (size_t i = begin; i < end; ++i) {
-        job->alpha[i] = job->round_paths[i] = job->alpha_late[i] = NAN;
+        job->alpha[i] = job->alpha_late[i] = NAN;
         if (i % job->stride != job->stride / 2 || i / job->stride >= CALIBRATION_POINTS) continue;
         uint64_t stream = cdl_rng_stream_id((uint64_t)job->grid_index, (uint64_t)i, 0x63616c6962 /* "calib" */);
         cdl_vec3 from = job->grid->points[i];
@@ -292,18 +298,15 @@ static cdl_status calibrate_points(void *shared, void *local, size_t begin, size
         double potential_sum = 0.0;
         uint64_t offset = (uint64_t)pp.taken;
         cdl_estimate near = {0.0, 0.0, 0.0, 0};
-        path_round(job->ctx, stream, offset, from, job->grid->normals[i],
-                   cdl_estimate_side_for(CALIBRATION_REACH * n_pilot, PILOT_SIDE, 1 << 12), &near, &potential_sum,
-                   stats, &tally);
+        path_round(job->ctx, stream, offset, from, job->grid->normals[i], calibration_side(CALIBRATION_REACH), &near,
+                   &potential_sum, stats, &tally);
         double v_near = cdl_estimate_variance(&near);
         if (!(v_near > 0.0)) continue;
         job->alpha[i] = log(v_pilot / v_near) / log(near.samples / n_pilot);
-        job->round_paths[i] = near.samples;
         if (pp.want < CALIBRATION_REACH_MAX * n_pilot) continue;
         cdl_estimate far = {0.0, 0.0, 0.0, 0};
         path_round(job->ctx, stream, offset + (uint64_t)near.samples, from, job->grid->normals[i],
-                   cdl_estimate_side_for(CALIBRATION_REACH_MAX * n_pilot, PILOT_SIDE, 1 << 12), &far, &potential_sum,
-                   stats, &tally);
+                   calibration_side(CALIBRATION_REACH_MAX), &far, &potential_sum, stats, &tally);
         double v_far = cdl_estimate_variance(&far);
         if (v_far > 0.0 && far.samples > near.samples)
             job->alpha_late[i] = log(v_near / v_far) / log(far.samples / near.samples);
@@ -311,16 +314,10 @@ static cdl_status calibrate_points(void *shared, void *local, size_t begin, size
     return CDL_OK;
 }
 
-static int compare_doubles(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* The median of x[0 .. m) (sorted in place), m >= 1. */
 static double median_of(double *x, size_t m)
 {
-    qsort(x, m, sizeof *x, compare_doubles);
+    cdl_sort_doubles(x, m);
     return m % 2 ? x[m / 2] : 0.5 * (x[m / 2 - 1] + x[m / 2]);
 }
 
@@ -344,11 +341,10 @@ static cdl_status measure_alpha(const cdl_pathtrace_context *ctx, const cdl_grid
     conv->agreed = 0;
     size_t count = grid->count < CALIBRATION_POINTS ? grid->count : CALIBRATION_POINTS;
     if (count == 0 || !ctx->measure_alpha) return CDL_OK;
-    double *alpha = malloc(3 * grid->count * sizeof *alpha);
+    double *alpha = malloc(2 * grid->count * sizeof *alpha);
     if (!alpha) return cdl_error_out_of_memory(err);
-    double *round_paths = alpha + grid->count, *alpha_late = round_paths + grid->count;
-    calibration_job job = {ctx,        grid,        grid_index, grid->count / count, E_direct,
-                           var_direct, alpha,       round_paths, alpha_late};
+    double *alpha_late = alpha + grid->count;
+    calibration_job job = {ctx, grid, grid_index, grid->count / count, E_direct, var_direct, alpha, alpha_late};
     /* Over the grid's points, each calibrated by the rank that holds its
      * direct light (ranks keep theirs in blocks of CDL_RANK_KEEP_ALIGN
      * points), and every rank ends with every alpha_i. */
@@ -361,23 +357,19 @@ static cdl_status measure_alpha(const cdl_pathtrace_context *ctx, const cdl_grid
                           .locals = locals,
                           .local_size = sizeof *locals,
                           .stage = stage,
-                          .outputs = {{alpha, sizeof *alpha},
-                                      {round_paths, sizeof *round_paths},
-                                      {alpha_late, sizeof *alpha_late}}};
+                          .outputs = {{alpha, sizeof *alpha}, {alpha_late, sizeof *alpha_late}}};
     cdl_status st = cdl_pool_run_shared(&task, &everywhere, err);
     if (st == CDL_OK) {
         size_t m = 0, late = 0;
         for (size_t i = 0; i < grid->count; ++i) {
             if (isfinite(alpha_late[i])) alpha_late[late++] = alpha_late[i];
-            if (isfinite(alpha[i])) {
-                round_paths[m] = round_paths[i];
-                alpha[m++] = alpha[i];
-            }
+            if (isfinite(alpha[i])) alpha[m++] = alpha[i];
         }
         conv->measured = m;
         conv->measured_beyond = late;
         if (m >= 3) {
-            conv->reach_paths = median_of(round_paths, m);
+            int side = calibration_side(CALIBRATION_REACH);
+            conv->reach_paths = 2.0 * side * side;
             double median = median_of(alpha, m); /* sorts alpha for the spread */
             conv->spread = quartile_spread(alpha, m);
             conv->agreed = conv->spread <= ALPHA_SPREAD_MAX;
