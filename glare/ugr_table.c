@@ -155,9 +155,11 @@ cdl_status cdl_ugr_table_compute(const cdl_photometry *photometry, const cdl_ugr
     lum.photometry = photometry;
     lum.opening = cdl_photometry_opening(photometry);
     lum.scale = cdl_photometry_output_factor(photometry);
-    for (int k = 0; k < 4; ++k)
-        lum.cumulative_lm[k] =
-            lum.scale * cdl_photometry_zone_flux(photometry, 0.0, acos(cdl_room_zone_cosines[k]) * CDL_RAD_TO_DEG).lm;
+    double half[4];
+    cdl_luminous_flux cone[4];
+    for (int k = 0; k < 4; ++k) half[k] = acos(cdl_room_zone_cosines[k]) * CDL_RAD_TO_DEG;
+    cdl_photometry_cone_fluxes(photometry, half, 4, cone);
+    for (int k = 0; k < 4; ++k) lum.cumulative_lm[k] = lum.scale * cone[k].lm;
     lum.upward_lm = lum.scale * cdl_photometry_zone_flux(photometry, 90.0, 180.0).lm;
     double flux = lum.cumulative_lm[3] + lum.upward_lm;
     for (int k = 0; k < 4; ++k)

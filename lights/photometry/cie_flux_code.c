@@ -21,8 +21,11 @@ void cdl_photometry_cie_flux_code(const cdl_photometry *p, double n[5])
     const cdl_photometry_metadata *m = &p->meta;
     double lamp = !m->absolute && m->rated_lamp_flux_lm > 0.0 ? m->rated_lamp_flux_lm : total;
     static const double cone_cos[3] = {0.75, 0.5, 0.25};
-    for (int k = 0; k < 3 && down > 0.0; ++k)
-        n[k] = 100.0 * cdl_photometry_zone_flux(p, 0.0, acos(cone_cos[k]) * CDL_RAD_TO_DEG).lm / down;
+    double half[3];
+    cdl_luminous_flux cone[3];
+    for (int k = 0; k < 3; ++k) half[k] = acos(cone_cos[k]) * CDL_RAD_TO_DEG;
+    cdl_photometry_cone_fluxes(p, half, 3, cone);
+    for (int k = 0; k < 3 && down > 0.0; ++k) n[k] = 100.0 * cone[k].lm / down;
     if (lamp > 0.0) {
         n[3] = 100.0 * down / lamp;
         n[4] = 100.0 * total / lamp;

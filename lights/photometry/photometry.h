@@ -173,12 +173,21 @@ cdl_status cdl_photometry_radiant_flux(const cdl_photometry *photometry, cdl_rad
 
 /* Flux into the directions whose frame gamma (angle from -z) lies in
  * [gamma_lo_deg, gamma_hi_deg]. Exact for type C tables and for the two
- * hemispheres of every type; for 10-degree zones of type A/B tables it is a
- * quadrature accurate to about 1e-4 of the total. In the table's unit times
+ * hemispheres of every type; for other windows of type A/B tables it is a
+ * quadrature (cut at the window's edges and refined to the table's finest
+ * spacing) scaled to the hemisphere's exact flux, so never more than it. In the table's unit times
  * sr (the lumens of a photometric file; for a radiometric one the same
  * integral of its W/sr values, which cdl_photometry_summary gives in W). */
 cdl_luminous_flux cdl_photometry_zone_flux(const cdl_photometry *photometry, double gamma_lo_deg,
                                            double gamma_hi_deg);
+
+/* The flux within each of n cones about nadir, of half angles
+ * half_angle_deg[0 .. n - 1] (ascending, within [0, 90]), into out: as
+ * cdl_photometry_zone_flux(photometry, 0, half_angle_deg[k]) each, but a
+ * type A/B table's from one quadrature cut at every cone's edge (the CIE
+ * flux code's three cones, a UGR table's four). */
+void cdl_photometry_cone_fluxes(const cdl_photometry *photometry, const double *half_angle_deg, size_t n,
+                                cdl_luminous_flux *out);
 
 /* Largest tabulated intensity. */
 cdl_luminous_intensity cdl_photometry_max_intensity(const cdl_photometry *photometry);

@@ -16,6 +16,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "lights/photometry/sphere_quadrature.h"
 #include "radiometry/constants.h"
 
 /* Weights (wa, wb) with integral_a^b f(x) sin(x) dx = wa f(a) + wb f(b) for f
@@ -165,39 +166,67 @@ double cdl_photometry_compute_flux(const cdl_photometry *p)
     return type_ab_flux(p, -180.0, 180.0);
 }
 
-/* Gauss-Legendre 2-point nodes on [-1, 1] (weights 1): exact for cubics. */
-static const double gl_x[2] = {-0.57735026918962576, 0.57735026918962576};
+/* Type A/B zones: a type A or B table's cells do not follow gamma, so its
+ * flux by gamma comes from the sphere quadrature (sphere_quadrature.h: its
+ * steps refined to the table's finest spacing, two Gauss-Legendre nodes per
+ * gamma interval, cut at the zones' edges so that no ring straddles one),
+ * scaled so that each hemisphere holds its exact flux (type_ab_flux): a
+ * zone is then never more than its hemisphere, the zones add up to the
+ * table's flux, and a spot narrower than a step is neither missed nor
+ * counted as a whole ring (a 1 degree quadrature without the cuts gave a
+ * 0.3 degree type B spot 157 % of its downward flux within 41 degrees). */
+#define AB_GAMMA_STEP_DEG 0.5
+#define AB_C_NODES 360
 
-/* Frame-space quadrature of I sin(gamma) for type A/B tables, whose cells do
- * not follow frame zones: 2-point Gauss-Legendre per degree of gamma and the
- * midpoint rule per degree of C. The flux into gamma in [lo, hi] (degrees,
- * whole degrees) is accumulated into zone[(int)(gamma / zone_width)]. The
- * interpolant is continuous and piecewise smooth, and its range edges
- * (|V| or |H| = 90) fall on the gamma = 90 zone boundary, so the error is
- * of second order: about 1e-5 of the flux for real tables. */
-static void quadrature_zones(const cdl_photometry *p, int lo, int hi, double zone_width, int first_zone, double *zone)
+/* The quadrature's flux in each [cuts[k], cuts[k + 1]) (cuts ascending,
+ * ncuts >= 2), into part[0 .. ncuts - 2]; 0 when out of memory. */
+static int ab_quadrature_parts(const cdl_photometry *p, const double *cuts, size_t ncuts, double *part)
 {
-    enum { NC = 360 };
-    double sc[NC], cc[NC];
-    const double dc = CDL_TWO_PI / NC, dg = CDL_DEG_TO_RAD;
-    for (int m = 0; m < NC; ++m) {
-        sc[m] = sin((m + 0.5) * dc);
-        cc[m] = cos((m + 0.5) * dc);
+    cdl_sphere_quadrature q;
+    if (!cdl_sphere_quadrature_sample_cut(p, cuts[0], cuts[ncuts - 1], AB_GAMMA_STEP_DEG, AB_C_NODES, cuts, ncuts, &q))
+        return 0;
+    for (size_t k = 0; k + 1 < ncuts; ++k) part[k] = 0.0;
+    size_t k = 0;
+    for (size_t i = 0; i < q.ng; ++i) {
+        while (k + 2 < ncuts && q.gamma_deg[i] >= cuts[k + 1]) ++k;
+        double ring = 0.0;
+        for (size_t j = 0; j < q.nc; ++j) ring += q.cd[i * q.nc + j] * q.c_weight[j];
+        part[k] += ring * q.weight[i];
     }
-    for (int k = lo; k < hi; ++k) {
-        double ring_total = 0.0;
-        for (int q = 0; q < 2; ++q) {
-            double g = (k + 0.5 + 0.5 * gl_x[q]) * dg, sg = sin(g), cg = cos(g);
-            double ring = 0.0;
-            for (int m = 0; m < NC; ++m) {
-                double h, v;
-                cdl_vec3 d = cdl_vec3_make(sg * cc[m], sg * sc[m], -cg);
-                if (cdl_photometry_direction_to_hv(p->type, d, &h, &v)) ring += cdl_photometry_eval_hv(p, h, v);
-            }
-            ring_total += ring * sg;
-        }
-        zone[(int)((k + 0.5) / zone_width) - first_zone] += ring_total * dc * 0.5 * dg;
+    cdl_sphere_quadrature_free(&q);
+    return 1;
+}
+
+/* parts[0 .. n - 1] scaled to add up to `exact` (left alone when they add up to nothing). */
+static void scale_parts(double *part, size_t n, double exact)
+{
+    double sum = 0.0;
+    for (size_t k = 0; k < n; ++k) sum += part[k];
+    if (!(sum > 0.0)) return;
+    for (size_t k = 0; k < n; ++k) part[k] *= exact / sum;
+}
+
+/* Type A/B flux into gamma in [lo, hi], within one hemisphere [h0, h1]
+ * ([0, 90] or [90, 180]) whose exact flux is `exact`. */
+static double ab_window_flux(const cdl_photometry *p, double lo, double hi, double h0, double h1, double exact)
+{
+    double cuts[4] = {h0, lo, hi, h1}, part[3];
+    if (!ab_quadrature_parts(p, cuts, 4, part)) return NAN;
+    scale_parts(part, 3, exact);
+    return part[1];
+}
+
+static void ab_zones(const cdl_photometry *p, double zone[CDL_PHOTOMETRY_ZONES])
+{
+    double cuts[CDL_PHOTOMETRY_ZONES + 1];
+    for (int k = 0; k <= CDL_PHOTOMETRY_ZONES; ++k) cuts[k] = 180.0 * k / CDL_PHOTOMETRY_ZONES;
+    if (!ab_quadrature_parts(p, cuts, CDL_PHOTOMETRY_ZONES + 1, zone)) {
+        for (int k = 0; k < CDL_PHOTOMETRY_ZONES; ++k) zone[k] = NAN;
+        return;
     }
+    double down = type_ab_flux(p, -90.0, 90.0);
+    scale_parts(zone, CDL_PHOTOMETRY_ZONES / 2, down);
+    scale_parts(zone + CDL_PHOTOMETRY_ZONES / 2, CDL_PHOTOMETRY_ZONES / 2, p->flux_lm - down);
 }
 
 /* The azimuth-integrated profile of a type C table: P[j] = sum_i W_i I_ij. */
@@ -225,7 +254,7 @@ void cdl_photometry_zones(const cdl_photometry *p, double zone[CDL_PHOTOMETRY_ZO
 {
     for (int k = 0; k < CDL_PHOTOMETRY_ZONES; ++k) zone[k] = 0.0;
     if (p->type != CDL_PHOTOMETRIC_TYPE_C) {
-        quadrature_zones(p, 0, 180, 180.0 / CDL_PHOTOMETRY_ZONES, 0, zone);
+        ab_zones(p, zone);
         return;
     }
     double *profile = malloc(p->nv * sizeof *profile), *wj = malloc(p->nv * sizeof *wj);
@@ -248,16 +277,37 @@ cdl_luminous_flux cdl_photometry_zone_flux(const cdl_photometry *p, double lo, d
     if (lo == 0.0 && hi == 180.0) return cdl_lumens(p->flux_lm);
     if (lo == 0.0 && hi == 90.0) return cdl_lumens(type_ab_flux(p, -90.0, 90.0));
     if (lo == 90.0 && hi == 180.0) return cdl_lumens(p->flux_lm - type_ab_flux(p, -90.0, 90.0));
-    /* whole degrees by quadrature, fractional ends by linear share of their degree */
-    int a = (int)floor(lo), b = (int)ceil(hi);
-    double acc = 0.0;
-    double *deg = calloc((size_t)(b - a), sizeof *deg);
-    if (!deg) return cdl_lumens(NAN);
-    quadrature_zones(p, a, b, 1.0, a, deg);
-    for (int k = a; k < b; ++k) {
-        double from = fmax(lo, (double)k), to = fmin(hi, (double)(k + 1));
-        acc += deg[k - a] * (to - from);
+    double down = type_ab_flux(p, -90.0, 90.0), flux = 0.0;
+    if (lo < 90.0) flux += ab_window_flux(p, lo, fmin(hi, 90.0), 0.0, 90.0, down);
+    if (hi > 90.0) flux += ab_window_flux(p, fmax(lo, 90.0), hi, 90.0, 180.0, p->flux_lm - down);
+    return cdl_lumens(flux);
+}
+
+void cdl_photometry_cone_fluxes(const cdl_photometry *p, const double *half_angle_deg, size_t n, cdl_luminous_flux *out)
+{
+    int ascending = 1;
+    for (size_t k = 0; k < n; ++k)
+        ascending &= isfinite(half_angle_deg[k]) && half_angle_deg[k] >= 0.0 && half_angle_deg[k] <= 90.0 + 1e-9 &&
+                     (k == 0 || half_angle_deg[k] >= half_angle_deg[k - 1]);
+    if (p->type == CDL_PHOTOMETRIC_TYPE_C || !ascending || n == 0) {
+        for (size_t k = 0; k < n; ++k) out[k] = cdl_photometry_zone_flux(p, 0.0, half_angle_deg[k]);
+        return;
     }
-    free(deg);
-    return cdl_lumens(acc);
+    /* cuts 0, the cones' edges, 90: part k is the ring between cone k - 1 and cone k */
+    double *cuts = malloc((n + 2) * sizeof *cuts), *part = malloc((n + 1) * sizeof *part);
+    int ok = cuts && part;
+    if (ok) {
+        cuts[0] = 0.0;
+        for (size_t k = 0; k < n; ++k) cuts[k + 1] = fmin(half_angle_deg[k], 90.0); /* acos(0) in degrees may pass 90 by an ulp */
+        cuts[n + 1] = 90.0;
+        ok = ab_quadrature_parts(p, cuts, n + 2, part);
+    }
+    if (ok) scale_parts(part, n + 1, type_ab_flux(p, -90.0, 90.0));
+    double sum = 0.0;
+    for (size_t k = 0; k < n; ++k) {
+        sum += ok ? part[k] : NAN;
+        out[k] = cdl_lumens(sum);
+    }
+    free(cuts);
+    free(part);
 }

@@ -73,6 +73,12 @@ static double refined_step(double step, double finest)
 int cdl_sphere_quadrature_sample(const cdl_photometry *p, double g0, double g1, double dg, size_t nc,
                                  cdl_sphere_quadrature *q)
 {
+    return cdl_sphere_quadrature_sample_cut(p, g0, g1, dg, nc, NULL, 0, q);
+}
+
+int cdl_sphere_quadrature_sample_cut(const cdl_photometry *p, double g0, double g1, double dg, size_t nc,
+                                     const double *gamma_cuts, size_t ncuts, cdl_sphere_quadrature *q)
+{
     *q = (cdl_sphere_quadrature){0};
     double dc = 360.0 / (double)nc;
     int type_c = p->type == CDL_PHOTOMETRIC_TYPE_C;
@@ -86,20 +92,27 @@ int cdl_sphere_quadrature_sample(const cdl_photometry *p, double g0, double g1, 
             else dc *= 2.0;
         }
     }
-    /* a type C table's own angles, C first to go when the nodes would be too many */
-    size_t extra_c = type_c && p->nh > 1 ? p->nh : 0, extra_g = type_c ? p->nv : 0;
+    /* the cuts asked for, then a type C table's own angles (C first to go
+     * when the nodes would be too many; the cuts asked for never go) */
+    size_t table_g = type_c ? p->nv : 0;
+    double *asked = malloc((ncuts + table_g + 1) * sizeof *asked);
+    if (!asked) return 0;
+    for (size_t k = 0; k < ncuts; ++k) asked[k] = gamma_cuts[k];
+    for (size_t k = 0; k < table_g; ++k) asked[ncuts + k] = p->v[k];
+    size_t extra_c = type_c && p->nh > 1 ? p->nh : 0, extra_g = ncuts + table_g;
     double *gc = NULL, *cc = NULL;
     size_t ngc = 0, ncc = 0;
     for (int attempt = 0; attempt < 3; ++attempt) {
         free(gc);
         free(cc);
-        gc = make_cuts(g0, g1, dg, p->v, extra_g, 0, &ngc);
+        gc = make_cuts(g0, g1, dg, asked, extra_g, 0, &ngc);
         cc = make_cuts(0.0, 360.0, dc, p->h, extra_c, 1, &ncc);
         if (!gc || !cc) break;
         if (2 * (ngc - 1) * (ncc - 1) <= MAX_NODES) break;
         if (extra_c) extra_c = 0;
-        else extra_g = 0;
+        else extra_g = ncuts;
     }
+    free(asked);
     if (!gc || !cc) {
         free(gc);
         free(cc);

@@ -43,6 +43,12 @@ typedef struct cdl_sphere_quadrature {
 int cdl_sphere_quadrature_sample(const cdl_photometry *p, double g0_deg, double g1_deg, double dg_deg, size_t nc,
                                  cdl_sphere_quadrature *q);
 
+/* The same, gamma also cut at gamma_cuts[0 .. ncuts - 1] (degrees; those
+ * outside (g0, g1) ignored): no ring then straddles a cut, so the rings
+ * below a cut hold exactly the quadrature's flux up to it. */
+int cdl_sphere_quadrature_sample_cut(const cdl_photometry *p, double g0_deg, double g1_deg, double dg_deg, size_t nc,
+                                     const double *gamma_cuts, size_t ncuts, cdl_sphere_quadrature *q);
+
 /* The flux (in the table's unit) of the sampled nodes, sum_ij I_ij w_i c_j. */
 double cdl_sphere_quadrature_flux(const cdl_sphere_quadrature *q);
 

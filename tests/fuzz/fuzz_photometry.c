@@ -105,6 +105,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             require(isfinite(dr[k]) && dr[k] >= -1e-12 && dr[k] <= s.downward_fraction + 1e-9 &&
                         (k == 0 || dr[k] >= dr[k - 1] - 1e-12),
                     "direct ratios within 0 and the downward share, growing", NULL);
+    /* the CIE flux code's cones: shares of the downward flux, growing, never above it */
+    double code[5];
+    cdl_photometry_cie_flux_code(p, code);
+    for (int k = 0; k < 3; ++k)
+        require(isfinite(code[k]) && code[k] >= -1e-9 && code[k] <= 100.0 + 1e-9 && (k == 0 || code[k] >= code[k - 1] - 1e-9),
+                "flux code cones within 0 and 100 %, growing", NULL);
     cdl_bug_rating bug;
     if (!s.radiometric && cdl_photometry_bug_rating(p, &bug, &err) == CDL_OK) {
         require(bug.b >= 0 && bug.b <= 5 && bug.u >= 0 && bug.u <= 5 && bug.g >= 0 && bug.g <= 5, "BUG 0..5", NULL);

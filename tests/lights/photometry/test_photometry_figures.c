@@ -12,6 +12,10 @@
  *    flux lands on the work plane (DR = 1: every direction within 26.6
  *    degrees of nadir does, for every room index) and in the FL and BL
  *    zones, half each;
+ *  - the CIE flux code and the 10 degree zones of type A and B spots
+ *    narrower than a degree (0.3 and 0.7 degrees about nadir): all of the
+ *    downward flux lies within 41.4 degrees (N1 = N2 = N3 = 100 %) and in
+ *    the first zone;
  *  - the CIE flux code of a Lambertian table (the flux within a cone of
  *    half angle t is pi I0 sin^2 t) with and without a lamp flux;
  *  - TM-15-11 zone lumens and BUG rating of an asymmetric table,
@@ -174,6 +178,46 @@ static void test_narrow_spots(void)
     }
 }
 
+/* A type A or B table of 1000 cd at nadir (H = V = 0) falling linearly to 0
+ * at `edge` degrees along either angle, none elsewhere. */
+static cdl_photometry *narrow_ab_spot(cdl_photometric_type type, double edge)
+{
+    double a[5] = {-90.0, -edge, 0.0, edge, 90.0}, cd[25] = {0};
+    cd[2 * 5 + 2] = 1000.0;
+    cdl_photometry *p = NULL;
+    cdl_error err;
+    CHECK_OK(cdl_photometry_create(type, a, 5, a, 5, cd, &p, &err), &err);
+    return p;
+}
+
+static void test_narrow_ab_spots(void)
+{
+    const cdl_photometric_type types[2] = {CDL_PHOTOMETRIC_TYPE_A, CDL_PHOTOMETRIC_TYPE_B};
+    const double edges[2] = {0.3, 0.7};
+    for (int t = 0; t < 2; ++t)
+        for (int e = 0; e < 2; ++e) {
+            cdl_photometry *p = narrow_ab_spot(types[t], edges[e]);
+            if (!p) return;
+            double n[5], flux = cdl_photometry_flux(p).lm;
+            CHECK(flux > 0.0);
+            cdl_photometry_cie_flux_code(p, n);
+            /* 1e-9 percentage points: each N is the downward hemisphere's
+             * exact flux times a ratio of sums over the same rings, all of
+             * them in the first cone here */
+            for (int k = 0; k < 5; ++k)
+                CHECK_MSG(fabs(n[k] - 100.0) <= 1e-9, "type %c %g degree spot: N%d = %.12g %%, expected 100",
+                          t ? 'B' : 'A', edges[e], k + 1, n[k]);
+            cdl_photometry_summary s = {.size = sizeof s};
+            cdl_photometry_summarize(p, &s);
+            CHECK_REL(s.zone_flux[0].lm, flux, 1e-12);
+            for (int z = 1; z < 18; ++z) CHECK_ABS(s.zone_flux[z].lm, 0.0, 1e-12 * flux);
+            /* a window inside the first zone's cone holds it all; one beyond the spot nothing */
+            CHECK_REL(cdl_photometry_zone_flux(p, 0.0, 2.0 * edges[e]).lm, flux, 1e-12);
+            CHECK_ABS(cdl_photometry_zone_flux(p, 2.0 * edges[e], 90.0).lm, 0.0, 1e-12 * flux);
+            cdl_photometry_release(p);
+        }
+}
+
 static void test_flux_code(void)
 {
     cdl_photometry *p = rotational(lambert, 0.5, 180.0);
@@ -275,6 +319,7 @@ int main(void)
 {
     test_direct_ratios();
     test_narrow_spots();
+    test_narrow_ab_spots();
     test_flux_code();
     test_bug();
     return check_finish();
