@@ -115,6 +115,10 @@ static double plan_paths(const cdl_estimate *pilot, double v, double budget, con
 #define PLAN_PAIRS 32.0
 #define SECOND_PILOT_SIDE 16
 
+/* Further stages a point may take when its stage states more than the
+ * target (cdl_pathtrace_point). */
+#define STAGE_RETRIES 2
+
 /* The pilot of a point and what it asks for: the paths of its stage. */
 typedef struct point_pilot {
     cdl_estimate est;         /* the round planned from */
@@ -177,10 +181,33 @@ void cdl_pathtrace_point(const cdl_pathtrace_context *ctx, uint64_t stream, cdl_
      * is above the target, and says so. */
     if (want > ctx->max_paths - (double)taken) want = ctx->max_paths - (double)taken;
     cdl_estimate est = {0.0, 0.0, 0.0, 0};
-    path_round(ctx, stream, taken, p, n, cdl_estimate_side_for(want, PILOT_SIDE, 1 << 12), &est, &potential_sum,
-               stats, tally);
+    double pairs = path_round(ctx, stream, taken, p, n, cdl_estimate_side_for(want, PILOT_SIDE, 1 << 12), &est,
+                              &potential_sum, stats, tally);
     *E_indirect = cdl_estimate_mean(&est);
     *var_indirect = paths_variance(&est, pp.potential);
+    /* A stage that still states more than the target (its pilot missed
+     * some of the paths' spread) is traced anew, independently, planned
+     * from it as from a pilot (as 1/N, its own margin), and the last stage
+     * alone is reported: its size depends only on the stages before it, so
+     * it stays an estimate of a fixed number of paths (estimate.h), and the
+     * choice to trace it, made on the stage before, does not bias it. On
+     * the office at "high" 2 to 8 of 469 points stated 1.05 to 1.24 times
+     * the target after their stage. */
+    for (int again = 0; again < STAGE_RETRIES; ++again) {
+        double R = fmax(E_direct + *E_indirect, 1e-3 * pp.potential);
+        double whole = ctx->target * ctx->target * R * R;
+        if (var_direct + *var_indirect <= whole || est.nonzero == 0) break;
+        taken += (uint64_t)est.samples;
+        double budget = fmax(whole - var_direct, 0.5 * whole);
+        double more = est.samples * plan_margin(pairs) * *var_indirect / budget;
+        if (more > ctx->max_paths - (double)taken) more = ctx->max_paths - (double)taken;
+        if (!(more > est.samples)) break;
+        est = (cdl_estimate){0.0, 0.0, 0.0, 0};
+        pairs = path_round(ctx, stream, taken, p, n, cdl_estimate_side_for(more, PILOT_SIDE, 1 << 12), &est,
+                           &potential_sum, stats, tally);
+        *E_indirect = cdl_estimate_mean(&est);
+        *var_indirect = paths_variance(&est, pp.potential);
+    }
 }
 
 /* ---- a grid on the worker pool ---------------------------------------------- */

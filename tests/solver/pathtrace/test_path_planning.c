@@ -206,6 +206,21 @@ static void test_heavy_tails(void)
     if (sp) spread = strtod(strchr(sp, ':') + 1, NULL);
     printf("heavy tails: alpha %.3f, spread %.3f, %.0f paths\n", alpha, spread, paths);
     CHECK_MSG(spread > 0.35 && alpha == 1.0, "heavy tails: alpha %.3f, the exponents' spread %.3f", alpha, spread);
+    /* Here pilots misjudge the paths' spread (a few bright paths off the
+     * white ceiling): a point whose stage states more than the target is
+     * traced anew, so that none states more (pathtrace.c, STAGE_RETRIES;
+     * without it 1.1 to 1.3 times the target at some points). */
+    const cdl_grid_solution *g = &sol.grids[0];
+    size_t over = 0;
+    double worst = 0.0;
+    for (size_t i = 0; i < g->grid.count; ++i) {
+        double rel = g->E_stderr[i] / g->E[i] / 0.01;
+        over += rel > 1.0 + 1e-9;
+        if (rel > worst) worst = rel;
+    }
+    printf("heavy tails: %zu of %zu points state more than the target, at most %.3f times it\n", over, g->grid.count,
+           worst);
+    CHECK_MSG(over == 0, "heavy tails: %zu points state more than the target, up to %.3f times it", over, worst);
     fixture_release(scene, &sol);
 }
 
