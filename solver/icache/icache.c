@@ -126,6 +126,7 @@ typedef struct lookup {
     size_t capacity;
     double *w;                /* the weights of the records that serve a point (0: rejected) */
     size_t w_capacity;
+    size_t m;                 /* candidates of the last interpolation: ids[0 .. m - 1], w[0 .. m - 1] */
 } lookup;
 
 static void lookup_release(lookup *lk)
@@ -149,6 +150,7 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
     memset(out, 0, sizeof *out);
     out->reach = l->reach_max;
     out->nearest = INFINITY;
+    lk->m = 0;
     size_t m = cdl_record_octree_lookup(tree, p, &lk->ids, &lk->capacity);
     if (m == (size_t)-1) return 0;
     if (m > lk->w_capacity) {
@@ -157,6 +159,7 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
         lk->w = grown;
         lk->w_capacity = m;
     }
+    lk->m = m;
     double W = 0.0, sum = 0.0, noise = 0.0, noise_mean = 0.0, sum2 = 0.0, change2 = 0.0;
     cdl_vec3 gbar = cdl_vec3_make(0, 0, 0);
     const cdl_icache_record *own = NULL;
@@ -239,10 +242,103 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
     return 1;
 }
 
-/* ---- gathering records ---------------------------------------------------------- */
+/* ---- the records' gathers ---------------------------------------------------------
+ *
+ * A gather's path that first reaches a surface the cache already serves
+ * takes the interreflected light arriving there from the records (as
+ * Radiance's ambient values serve its rays' hits; Ward, Rubinstein and
+ * Clear 1988) instead of tracing on: its value is rho_1 (E_dir(x_1) +
+ * E_ind(x_1)), E_ind interpolated. Only records gathered before the pass
+ * serve (the same for any thread count or rank), only where the
+ * interpolation states no more than HIT_MAX_REL of its value (elsewhere
+ * the path goes on, unbiased), and never for a record serving its own point
+ * alone, whose gather is that point's whole estimate. The paths' spread
+ * does not show the error of what they looked up, for one record serves
+ * many of them: each lookup's stated standard deviation s is shared out to
+ * the records it used by their weights, record c collecting A_c = sum over
+ * paths of (w_1 rho_1) (w_c / W) s, and the gather states on top of its
+ * strata's variance sum_c (A_c / paths)^2 (errors of one record taken as
+ * the same on every path that used it, of different records as
+ * independent). */
+#define HIT_MAX_REL 0.05
+
+typedef struct hit_lookup {
+    const cdl_icache_context *ctx;
+    const reach_limits *limits;
+    const cdl_icache_records *recs;   /* its first `count` records serve */
+    size_t count;
+    const cdl_record_octree *tree;
+    lookup lk;
+    double *share;                    /* count: A_c */
+    uint32_t *touched;                /* the records whose A_c is not 0 */
+    size_t touched_count;
+    int failed;                       /* out of memory: the lookups stop */
+} hit_lookup;
+
+static int hit_lookup_serve(void *user, cdl_vec3 p, cdl_vec3 n, double scale, double *E)
+{
+    hit_lookup *h = user;
+    if (h->failed || h->count == 0) return 0;
+    if (!h->share) {
+        h->share = calloc(h->count, sizeof *h->share);
+        h->touched = malloc(h->count * sizeof *h->touched);
+        if (!h->share || !h->touched) {
+            h->failed = 1;
+            return 0;
+        }
+    }
+    interpolation it;
+    if (!interpolate(h->ctx, h->limits, h->recs, h->tree, p, n, &h->lk, &it)) {
+        h->failed = 1;
+        return 0;
+    }
+    double W = 0.0;
+    for (size_t c = 0; c < h->lk.m; ++c)
+        if (h->lk.ids[c] < h->count) W += h->lk.w[c];
+    double sigma = sqrt(it.var);
+    if (it.used == 0 || !(W > 0.0) || !(it.E > 0.0) || !(sigma <= HIT_MAX_REL * it.E)) return 0;
+    for (size_t c = 0; c < h->lk.m; ++c) {
+        uint32_t id = h->lk.ids[c];
+        if (!(h->lk.w[c] > 0.0) || id >= h->count) continue;
+        if (h->share[id] == 0.0) h->touched[h->touched_count++] = id;
+        h->share[id] += scale * h->lk.w[c] / W * sigma;
+    }
+    *E = it.E;
+    return 1;
+}
+
+/* sum_c (A_c / paths)^2, the A_c then cleared for the next gather. */
+static double hit_lookup_take_variance(hit_lookup *h, double paths)
+{
+    double var = 0.0;
+    for (size_t k = 0; k < h->touched_count; ++k) {
+        double a = h->share[h->touched[k]] / paths;
+        var += a * a;
+        h->share[h->touched[k]] = 0.0;
+    }
+    h->touched_count = 0;
+    return var;
+}
+
+static void hit_lookup_release(hit_lookup *h)
+{
+    lookup_release(&h->lk);
+    free(h->share);
+    free(h->touched);
+}
+
+/* A worker's own: its paths' counts and its first-hit lookups. */
+typedef struct gather_local {
+    cdl_path_stats stats;
+    hit_lookup hits;
+} gather_local;
 
 typedef struct gather_job {
     const cdl_icache_context *ctx;
+    const reach_limits *limits;       /* with recs and tree: the cache its gathers' first hits may use */
+    const cdl_icache_records *recs;
+    size_t served;                    /* the records before these: recs->items[0 .. served - 1] */
+    const cdl_record_octree *tree;
     const cdl_grid *grid;
     size_t grid_index;
     const double *E_direct;
@@ -258,8 +354,20 @@ typedef struct gather_job {
 static cdl_status gather_records(void *shared, void *local, size_t begin, size_t end, cdl_error *err)
 {
     const gather_job *job = shared;
-    cdl_path_stats *stats = local;
+    gather_local *mine = local;
+    cdl_path_stats *stats = &mine->stats;
     const cdl_icache_context *ctx = job->ctx;
+    hit_lookup *hits = &mine->hits;
+    if (!hits->ctx) {
+        hits->ctx = ctx;
+        hits->limits = job->limits;
+        hits->recs = job->recs;
+        hits->count = job->recs ? job->served : 0;
+        hits->tree = job->tree;
+    }
+    cdl_path_first_hit first = {hit_lookup_serve, hits};
+    cdl_path_context served = ctx->path;
+    if (!job->own && hits->count > 0) served.first_hit = &first;
     for (size_t r = begin; r < end; ++r) {
         size_t i = job->at[r];
         cdl_vec3 p = job->grid->points[i], n = job->grid->normals[i];
@@ -268,8 +376,9 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
         uint64_t stage_base = job->own ? 2 : 0; /* own: streams 2, 3, ... */
         cdl_rng_key key = {ctx->path.seed, cdl_rng_stream_id(stream, stage_base, 1)};
         cdl_icache_record pilot;
-        if (!cdl_icache_gather(&ctx->path, key, p, n, PILOT_M, PILOT_N, &pilot, stats, NULL))
+        if (!cdl_icache_gather(&served, key, p, n, PILOT_M, PILOT_N, &pilot, stats, NULL))
             return cdl_error_out_of_memory(err);
+        (void)hit_lookup_take_variance(hits, PILOT_M * PILOT_N);
         /* The record's own variance: RECORD_SHARE (t R)^2, R = E_dir +
          * E_ind there. A point averages several records (their noise
          * shrinks by about the number it uses), so a record need not be as
@@ -292,8 +401,10 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
         double want = cdl_estimate_plan(&est, budget, PILOT_M * PILOT_N);
         int k = cdl_estimate_side_for(want, PILOT_M, job->own ? OWN_MAX_SIDE : MAX_SIDE);
         key.stream = cdl_rng_stream_id(stream, stage_base + 1, 1);
-        if (!cdl_icache_gather(&ctx->path, key, p, n, k, 2 * k, &job->out[r], stats, &job->tallies[r]))
+        if (!cdl_icache_gather(&served, key, p, n, k, 2 * k, &job->out[r], stats, &job->tallies[r]))
             return cdl_error_out_of_memory(err);
+        job->out[r].var += hit_lookup_take_variance(hits, 2.0 * k * k);
+        if (hits->failed) return cdl_error_out_of_memory(err);
         /* A record of its own whose gather still states more than its
          * budget (a pilot of 128 paths can miss the rare bright paths of a
          * dark gap: 8 % stated at a 2 % target in the test's gap) is
@@ -327,7 +438,7 @@ static cdl_status gather(const gather_job *base, size_t count, cdl_icache_record
         recs->capacity = cap;
     }
     int threads = workers->threads < 1 ? 1 : workers->threads;
-    cdl_path_stats *locals = calloc((size_t)threads, sizeof *locals);
+    gather_local *locals = calloc((size_t)threads, sizeof *locals);
     cdl_path_tally *tallies = calloc(count ? count : 1, sizeof *tallies);
     if (!locals || !tallies) {
         free(locals);
@@ -335,6 +446,8 @@ static cdl_status gather(const gather_job *base, size_t count, cdl_icache_record
         return cdl_error_out_of_memory(err);
     }
     gather_job job = *base;
+    job.recs = base->tree ? recs : NULL;
+    job.served = recs->count;
     job.out = recs->items + recs->count;
     job.tallies = tallies;
     cdl_workers everywhere = *workers;
@@ -350,7 +463,10 @@ static cdl_status gather(const gather_job *base, size_t count, cdl_icache_record
                           .outputs = {{job.out, sizeof *job.out}, {tallies, sizeof *tallies}}};
     cdl_status st = cdl_pool_run_shared(&task, &everywhere, err);
     cdl_path_stats sum = {0};
-    for (int t = 0; t < threads; ++t) cdl_path_stats_add(&sum, &locals[t]);
+    for (int t = 0; t < threads; ++t) {
+        cdl_path_stats_add(&sum, &locals[t].stats);
+        hit_lookup_release(&locals[t].hits);
+    }
     if (st == CDL_OK) st = cdl_path_stats_share(workers->ranks, &sum, err);
     if (st == CDL_OK) {
         cdl_path_stats_add(&stats->paths, &sum);
@@ -394,7 +510,7 @@ static cdl_status add_records(const cdl_icache_context *ctx, const reach_limits 
                               const cdl_workers *workers, const char *stage, cdl_icache_stats *stats, cdl_error *err)
 {
     size_t first = recs->count;
-    gather_job base = {ctx, grid, grid_index, E_direct, NULL, 0, at, 0.0, floors, NULL, NULL};
+    gather_job base = {ctx, l, NULL, 0, tree, grid, grid_index, E_direct, NULL, 0, at, 0.0, floors, NULL, NULL};
     cdl_status st = gather(&base, count, recs, workers, stage, stats, err);
     for (size_t c = 0; st == CDL_OK && c < count; ++c) has[at[c]] = 1;
     for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
@@ -414,7 +530,7 @@ static cdl_status add_own_records(const cdl_icache_context *ctx, const reach_lim
                                   cdl_icache_stats *stats, cdl_error *err)
 {
     size_t first = recs->count;
-    gather_job base = {ctx, grid, grid_index, E_direct, var_direct, 1, at, floor, floors, NULL, NULL};
+    gather_job base = {ctx, l, NULL, 0, NULL, grid, grid_index, E_direct, var_direct, 1, at, floor, floors, NULL, NULL};
     cdl_status st = gather(&base, count, recs, workers, stage, stats, err);
     for (size_t id = first; st == CDL_OK && id < recs->count; ++id) {
         recs->items[id].radius = OWN_RADIUS;
@@ -536,38 +652,104 @@ static cdl_status visit(point_job *job, const cdl_workers *workers, const char *
     return st;
 }
 
-/* Pick, in index order, the asking points that keep their separation from
- * every point picked before them in this pass (and hold no record yet). */
-static cdl_status pick(const cdl_grid *grid, const double *ask, const unsigned char *has, cdl_bounds3 box,
-                       size_t **at, size_t *count, cdl_error *err)
+/* Of list[0 .. count - 1] (in order), those farther than `factor` times
+ * their ask (at least `least`) from every one kept before them, into
+ * kept[0 .. *kept_count - 1];
+ * the others, in order, into rest (unless NULL). */
+static cdl_status thin(const cdl_grid *grid, const size_t *list, size_t count, const double *ask, double least,
+                       double factor, cdl_bounds3 box, size_t *kept, size_t *kept_count, size_t *rest, cdl_error *err)
 {
-    *count = 0;
-    cdl_record_octree *picked;
-    cdl_status st = cdl_record_octree_create(box, &picked, err);
+    cdl_record_octree *tree;
+    cdl_status st = cdl_record_octree_create(box, &tree, err);
     if (st != CDL_OK) return st;
-    lookup lk = {NULL, 0, NULL, 0};
-    for (size_t i = 0; i < grid->count && st == CDL_OK; ++i) {
-        if (!(ask[i] > 0.0) || has[i]) continue;
-        size_t m = cdl_record_octree_lookup(picked, grid->points[i], &lk.ids, &lk.capacity);
+    lookup lk = {NULL, 0, NULL, 0, 0};
+    size_t nk = 0, nr = 0;
+    for (size_t k = 0; k < count && st == CDL_OK; ++k) {
+        size_t i = list[k];
+        size_t m = cdl_record_octree_lookup(tree, grid->points[i], &lk.ids, &lk.capacity);
         if (m == (size_t)-1) {
             st = cdl_error_out_of_memory(err);
             break;
         }
         int near = 0;
         for (size_t c = 0; c < m && !near; ++c) {
-            size_t j = (*at)[lk.ids[c]];
-            near = cdl_vec3_length(cdl_vec3_sub(grid->points[i], grid->points[j])) < ask[j];
+            size_t j = kept[lk.ids[c]];
+            near = cdl_vec3_length(cdl_vec3_sub(grid->points[i], grid->points[j])) < factor * fmax(least, ask[j]);
         }
-        if (near) continue;
-        (*at)[*count] = i;
-        st = cdl_record_octree_insert(picked, (uint32_t)*count, grid->points[i], ask[i], err);
-        ++*count;
+        if (near) {
+            if (rest) rest[nr++] = i;
+            continue;
+        }
+        kept[nk] = i;
+        st = cdl_record_octree_insert(tree, (uint32_t)nk, grid->points[i], factor * fmax(least, ask[i]), err);
+        ++nk;
     }
+    *kept_count = nk;
     lookup_release(&lk);
-    cdl_record_octree_release(picked);
+    cdl_record_octree_release(tree);
     return st;
 }
 
+/* Pick, in index order, the asking points that keep their separation from
+ * every point picked before them in this pass (and hold no record yet). */
+static cdl_status pick(const cdl_grid *grid, const double *ask, const unsigned char *has, cdl_bounds3 box,
+                       size_t **at, size_t *count, cdl_error *err)
+{
+    *count = 0;
+    size_t *asking = malloc((grid->count + 1) * sizeof *asking), n = 0;
+    if (!asking) return cdl_error_out_of_memory(err);
+    for (size_t i = 0; i < grid->count; ++i)
+        if (ask[i] > 0.0 && !has[i]) asking[n++] = i;
+    cdl_status st = thin(grid, asking, n, ask, 0.0, 1.0, box, *at, count, NULL, err);
+    free(asking);
+    return st;
+}
+
+/* The records a pass asked for (at[0 .. count - 1], each keeping ask[i]
+ * from the others), gathered coarse to fine: where they are many more than
+ * the records already there, first a sparser lattice of them (twice the
+ * separation, at least the least reach, recursively), then the rest, whose gathers' first hits the
+ * sparser records then serve (gather_records). The records placed are the
+ * same; only the order they are gathered in, and so what serves their
+ * first hits, follows from this. */
+#define STAGE_LEAST 32
+
+typedef struct stage_args {
+    const cdl_icache_context *ctx;
+    const reach_limits *l;
+    const cdl_grid *gather_grid;
+    size_t grid_index;
+    const double *E_direct, *floors, *ask;
+    cdl_icache_records *recs;
+    cdl_record_octree *tree;
+    unsigned char *has;
+    lookup *lk;
+    const cdl_workers *workers;
+    const char *stage;
+    cdl_icache_stats *stats;
+    const cdl_grid *grid;
+    cdl_bounds3 box;
+} stage_args;
+
+static cdl_status add_records_staged(const stage_args *a, const size_t *at, size_t count, double factor,
+                                     cdl_error *err)
+{
+    if (count <= STAGE_LEAST || count <= a->recs->count)
+        return add_records(a->ctx, a->l, a->gather_grid, a->grid_index, a->E_direct, a->floors, at, count, a->recs,
+                           a->tree, a->has, a->lk, a->workers, a->stage, a->stats, err);
+    size_t *kept = malloc(2 * count * sizeof *kept), nk = 0;
+    if (!kept) return cdl_error_out_of_memory(err);
+    size_t *rest = kept + count;
+    cdl_status st = thin(a->grid, at, count, a->ask, a->l->reach_min, 2.0 * factor, a->box, kept, &nk, rest, err);
+    if (st == CDL_OK && nk < count) st = add_records_staged(a, kept, nk, 2.0 * factor, err);
+    if (st == CDL_OK)
+        st = nk < count ? add_records(a->ctx, a->l, a->gather_grid, a->grid_index, a->E_direct, a->floors, rest,
+                                      count - nk, a->recs, a->tree, a->has, a->lk, a->workers, a->stage, a->stats, err)
+                        : add_records(a->ctx, a->l, a->gather_grid, a->grid_index, a->E_direct, a->floors, at, count,
+                                      a->recs, a->tree, a->has, a->lk, a->workers, a->stage, a->stats, err);
+    free(kept);
+    return st;
+}
 
 /* One target (a grid, or the probes of surface maps) served by records in
  * `recs` entered in `tree`: with `place`, records are seeded (when `seed`)
@@ -625,7 +807,7 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
     size_t *at = malloc(grid->count * sizeof *at);
     double *ask = calloc(grid->count, sizeof *ask);
     unsigned char *has = calloc(grid->count, 1);
-    lookup lk = {NULL, 0, NULL, 0};
+    lookup lk = {NULL, 0, NULL, 0, 0};
     cdl_status st = (!at || !ask || !has) ? cdl_error_out_of_memory(err) : CDL_OK;
     if (st == CDL_OK && q->place && q->seed) {
         /* Seeds: every point farther than the largest reach from the seeds
@@ -645,8 +827,9 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
         if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
         if (st != CDL_OK || count == 0) break;
         q->stats->passes = (size_t)pass;
-        st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->floors, at, count, q->recs, q->tree,
-                         has, &lk, q->workers, q->stage, q->stats, err);
+        stage_args sa = {q->ctx,  l,        gather_grid, q->grid_index, q->E_direct, q->floors, ask, q->recs,
+                         q->tree, has,      &lk,         q->workers,    q->stage,    q->stats,  grid, box};
+        st = add_records_staged(&sa, at, count, 1.0, err);
     }
     /* No point may go unserved (it would read 0 +- 0): the passes take
      * asking points apart from each other and may stop before every point
@@ -657,9 +840,9 @@ static cdl_status serve(const serve_request *q, cdl_bounds3 box, cdl_error *err)
         job.sweep = 0;
         size_t count = 0;
         if (st == CDL_OK) st = pick(grid, ask, has, box, &at, &count, err);
-        if (st == CDL_OK && count > 0)
-            st = add_records(q->ctx, l, gather_grid, q->grid_index, q->E_direct, q->floors, at, count, q->recs, q->tree,
-                             has, &lk, q->workers, q->stage, q->stats, err);
+        stage_args sa = {q->ctx,  l,        gather_grid, q->grid_index, q->E_direct, q->floors, ask, q->recs,
+                         q->tree, has,      &lk,         q->workers,    q->stage,    q->stats,  grid, box};
+        if (st == CDL_OK && count > 0) st = add_records_staged(&sa, at, count, 1.0, err);
     }
     if (st == CDL_OK) {
         job.final = 1;

@@ -21,7 +21,10 @@
  * every surface the gathers reach, not only on the grids asked for, and
  * its error compounds bounce over bounce; the paths beyond the first hit
  * are unbiased and, with next-event estimation, cheap (in the closed-box
- * test 2.3 vertices a path on average).
+ * test 2.3 vertices a path on average). Where the cache's records do lie
+ * on the surface a first hit reaches (surface maps), the path may end
+ * there on the records' interpolation, its error accounted for
+ * (icache.c, gather_records, through the path context's first_hit).
  */
 #ifndef CANDELA_SOLVER_ICACHE_RECORD_H
 #define CANDELA_SOLVER_ICACHE_RECORD_H

@@ -52,6 +52,13 @@ void cdl_transport_path(const cdl_path_context *ctx, cdl_rng_key key, cdl_vec3 p
         if (depth == limit) out->last = gained;
         if (depth == limit - 1) out->before_last = gained;
         w *= rho;
+        /* The rest of the path from what is known at its first vertex. */
+        double known;
+        if (depth == 1 && ctx->first_hit && ctx->bounces == CDL_BOUNCES_AUTO &&
+            ctx->first_hit->lookup(ctx->first_hit->user, hit.p, hit.n, w, &known)) {
+            out->value += w * known;
+            break;
+        }
         double u[2];
         cdl_rng_uniform2(key, (uint64_t)(1 + VERTEX_DRAWS * (depth - 1)), u);
         /* Russian roulette on the throughput: below RR_THRESHOLD the path

@@ -36,11 +36,23 @@
  * 0.99^1000 = 4e-5 even in a perfectly white, closed room). */
 #define CDL_PATH_MAX_DEPTH 1000
 
+/* What is already known of the light arriving at a path's first vertex
+ * (the irradiance cache's records, at its gathers' first hits): `lookup`
+ * returns 1 when it knows the interreflected irradiance arriving at (p, n),
+ * into *E (lx); the path then ends there, its value w rho (E_dir + E) with
+ * w rho = `scale` (the lookup keeps the account of its own error, which
+ * the paths' spread does not show: one cached value serves many paths). */
+typedef struct cdl_path_first_hit {
+    int (*lookup)(void *user, cdl_vec3 p, cdl_vec3 n, double scale, double *E);
+    void *user;
+} cdl_path_first_hit;
+
 typedef struct cdl_path_context {
     const cdl_direct_context *direct;     /* lights, rays and next-event estimation */
     const cdl_scene_geometry *geometry;   /* not NULL */
     uint64_t seed;
     int bounces;                          /* CDL_BOUNCES_AUTO or the most reflections followed */
+    const cdl_path_first_hit *first_hit;  /* NULL, or asked at the first vertex (bounces "auto" only) */
 } cdl_path_context;
 
 typedef struct cdl_path_stats {
