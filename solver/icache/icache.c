@@ -260,7 +260,7 @@ static int interpolate(const cdl_icache_context *ctx, const reach_limits *l, con
  * strata's variance sum_c (A_c / paths)^2 (errors of one record taken as
  * the same on every path that used it, of different records as
  * independent). */
-#define HIT_MAX_REL 0.15
+#define HIT_MAX_REL 0.05
 
 typedef struct hit_lookup {
     const cdl_icache_context *ctx;
