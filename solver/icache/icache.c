@@ -299,9 +299,11 @@ static int hit_lookup_serve(void *user, cdl_vec3 p, cdl_vec3 n, double scale, do
     if (it.used == 0 || !(W > 0.0) || !(it.E > 0.0) || !(sigma <= HIT_MAX_REL * it.E)) return 0;
     for (size_t c = 0; c < h->lk.m; ++c) {
         uint32_t id = h->lk.ids[c];
-        if (!(h->lk.w[c] > 0.0) || id >= h->count) continue;
+        double add = scale * h->lk.w[c] / W * sigma;
+        /* a record is listed once: when its A_c first becomes positive */
+        if (!(h->lk.w[c] > 0.0) || id >= h->count || !(add > 0.0)) continue;
         if (h->share[id] == 0.0) h->touched[h->touched_count++] = id;
-        h->share[id] += scale * h->lk.w[c] / W * sigma;
+        h->share[id] += add;
     }
     *E = it.E;
     return 1;
