@@ -130,13 +130,23 @@ typedef struct point_pilot {
 /* The point's E = E_dir + E_ind is held to t; the direct part was held to
  * t / sqrt 2 (half the variance), the rest is the paths'. A point in the
  * dark is held to a thousandth of what its paths could carry. */
+static double point_whole(const cdl_pathtrace_context *ctx, double E_direct, double mean, double potential)
+{
+    double R = fmax(E_direct + mean, 1e-3 * potential);
+    return ctx->target * ctx->target * R * R;
+}
+
+/* The paths' share of a point's variance target `whole`. */
+static double paths_budget(double whole, double var_direct)
+{
+    return fmax(whole - var_direct, 0.5 * whole);
+}
+
 static void plan_point(const cdl_pathtrace_context *ctx, double E_direct, double var_direct, double mean,
                        point_pilot *pp)
 {
     pp->potential = pp->potential_sum / pp->taken;
-    double R = fmax(E_direct + mean, 1e-3 * pp->potential);
-    double whole = ctx->target * ctx->target * R * R;
-    pp->budget = fmax(whole - var_direct, 0.5 * whole);
+    pp->budget = paths_budget(point_whole(ctx, E_direct, mean, pp->potential), var_direct);
     double least = 2.0 * PILOT_SIDE * PILOT_SIDE;
     if (pp->est.nonzero == 0)
         /* A pilot that saw nothing: as many paths as hold what all of them
@@ -194,11 +204,10 @@ void cdl_pathtrace_point(const cdl_pathtrace_context *ctx, uint64_t stream, cdl_
      * the office at "high" 2 to 8 of 469 points stated 1.05 to 1.24 times
      * the target after their stage. */
     for (int again = 0; again < STAGE_RETRIES; ++again) {
-        double R = fmax(E_direct + *E_indirect, 1e-3 * pp.potential);
-        double whole = ctx->target * ctx->target * R * R;
+        double whole = point_whole(ctx, E_direct, *E_indirect, pp.potential);
         if (var_direct + *var_indirect <= whole || est.nonzero == 0) break;
         taken += (uint64_t)est.samples;
-        double budget = fmax(whole - var_direct, 0.5 * whole);
+        double budget = paths_budget(whole, var_direct);
         double more = est.samples * plan_margin(pairs) * *var_indirect / budget;
         if (more > ctx->max_paths - (double)taken) more = ctx->max_paths - (double)taken;
         if (!(more > est.samples)) break;
