@@ -126,23 +126,46 @@ static int compare_ids(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* Merge the ascending run b[0 .. nb - 1] into the ascending a[0 .. na - 1],
+ * from the top down into a[0 .. na + nb - 1] (b lies beyond that range:
+ * every write lands at or above the element of a it leaves). */
+static void merge_run(uint32_t *a, size_t na, const uint32_t *b, size_t nb)
+{
+    size_t i = na, j = nb, k = na + nb;
+    while (j > 0) {
+        if (i > 0 && a[i - 1] > b[j - 1]) a[--k] = a[--i];
+        else a[--k] = b[--j];
+    }
+}
+
 size_t cdl_record_octree_lookup(const cdl_record_octree *tree, cdl_vec3 p, uint32_t **ids, size_t *capacity)
 {
     size_t n = 0;
     int32_t at = 0;
+    int ascending = 1;
     cdl_vec3 centre = tree->centre;
     double half = tree->half;
     for (;;) {
         const node *nd = &tree->nodes[at];
-        if (n + nd->count > *capacity) {
-            size_t cap = 2 * (n + nd->count) + 16;
+        /* room for the run twice: merged in below, and copied above it */
+        if (n + 2 * (size_t)nd->count > *capacity) {
+            size_t cap = 2 * (n + 2 * (size_t)nd->count) + 16;
             uint32_t *grown = realloc(*ids, cap * sizeof *grown);
             if (!grown) return (size_t)-1;
             *ids = grown;
             *capacity = cap;
         }
         if (nd->count > 0) { /* an empty cell has no array (memcpy from NULL is undefined) */
-            memcpy(*ids + n, nd->ids, nd->count * sizeof **ids);
+            /* A cell's ids are in the order they were stored: ascending when
+             * records are stored in id order (as the cache stores them), and
+             * then merged run by run; otherwise sorted once at the end. */
+            for (uint32_t k = 1; k < nd->count && ascending; ++k) ascending = nd->ids[k - 1] < nd->ids[k];
+            if (ascending) {
+                memcpy(*ids + n + nd->count, nd->ids, nd->count * sizeof **ids);
+                merge_run(*ids, n, *ids + n + nd->count, nd->count);
+            } else {
+                memcpy(*ids + n, nd->ids, nd->count * sizeof **ids);
+            }
             n += nd->count;
         }
         int c = (p.x >= centre.x) | ((p.y >= centre.y) << 1) | ((p.z >= centre.z) << 2);
@@ -151,6 +174,6 @@ size_t cdl_record_octree_lookup(const cdl_record_octree *tree, cdl_vec3 p, uint3
         half *= 0.5;
         at = nd->child[c];
     }
-    if (n > 1) qsort(*ids, n, sizeof **ids, compare_ids);
+    if (!ascending && n > 1) qsort(*ids, n, sizeof **ids, compare_ids);
     return n;
 }
