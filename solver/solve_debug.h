@@ -13,7 +13,9 @@ typedef struct cdl_solve_debug {
                                        * (to measure what they buy) */
     int paths_as_one_over_n;          /* 1: path tracing plans every point as if its variance fell as 1/N,
                                        * the grid's exponent not measured (to measure what it buys) */
+    int cache_own_alone;              /* 1: a record of a point's own stands alone, not joined with the
+                                       * interpolation there (icache.c, own_gather: to measure what it buys) */
 } cdl_solve_debug;
-#define CDL_SOLVE_DEBUG_NONE {.ray_log = NULL, .no_exact_route = 0, .no_cache_gradients = 0, .paths_as_one_over_n = 0}
+#define CDL_SOLVE_DEBUG_NONE {.ray_log = NULL, .no_exact_route = 0, .no_cache_gradients = 0, .paths_as_one_over_n = 0, .cache_own_alone = 0}
 
 #endif

@@ -153,7 +153,8 @@ static void make_contexts(cdl_solve_state *state)
                                                .max_paths = 16777216.0,
                                                .measure_alpha = !state->debug.paths_as_one_over_n};
     state->icache = (cdl_icache_context){.path = path, .target = state->target,
-                                         .gradients = !state->debug.no_cache_gradients};
+                                         .gradients = !state->debug.no_cache_gradients,
+                                         .own_alone = state->debug.cache_own_alone};
     state->vertical = (cdl_vertical_context){.path = path, .indirect = state->indirect && state->pieces > 0,
                                              .target = state->target, .max_samples = 1048576.0};
     state->vertical.path.geometry = geometry;

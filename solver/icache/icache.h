@@ -50,6 +50,7 @@ typedef struct cdl_icache_context {
     cdl_path_context path;
     double target;            /* relative standard error of a point's E = E_dir + E_ind */
     int gradients;            /* 1: interpolate with the records' gradients (the default); 0: without */
+    int own_alone;            /* 1: a record of a point's own is not joined with the interpolation there */
 } cdl_icache_context;
 
 /* A grid's records. */
