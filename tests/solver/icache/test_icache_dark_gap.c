@@ -47,15 +47,21 @@ static double plan_number(const char *plan_json, const char *key)
     "{\"type\": \"box\", \"min\": [2.3,0.2,0], \"max\": [2.8,1.6,0.8], \"reflectance\": 0.6}],"                      \
     " \"luminaires\": [{\"type\": \"point\", \"position\": [1.2,1.25,2.1], \"flux_lm\": 5000}],"
 
-int main(void)
+/* The room with its floor polygon, solved by the cache. */
+static void cache_scene(char *json, size_t size)
 {
-    char json[16384];
-    snprintf(json, sizeof json,
+    snprintf(json, size,
              ROOM " \"grids\": [{\"name\": \"floor\", \"type\": \"polygon\", "
                   "\"vertices\": [[0,0,0],[3,0,0],[3,2.5,0],[0,2.5,0]], "
                   "\"holes\": [[[2.3,0.2,0],[2.3,1.6,0],[2.8,1.6,0],[2.8,0.2,0]]], \"spacing\": 0.6}],"
                   " \"solver\": {\"method\": \"icache\", \"target_error\": %g, \"seed\": 1}}",
              TARGET);
+}
+
+int main(void)
+{
+    char json[16384];
+    cache_scene(json, sizeof json);
     cdl_scene *s_ic, *s_pt;
     cdl_solution ic, pt;
     if (!fixture_solve(json, &s_ic, &ic, 2)) return check_finish();
@@ -123,12 +129,7 @@ int main(void)
     o.threads = 2;
     cdl_solve_debug debug = CDL_SOLVE_DEBUG_NONE;
     debug.cache_own_alone = 1;
-    snprintf(json, sizeof json,
-             ROOM " \"grids\": [{\"name\": \"floor\", \"type\": \"polygon\", "
-                  "\"vertices\": [[0,0,0],[3,0,0],[3,2.5,0],[0,2.5,0]], "
-                  "\"holes\": [[[2.3,0.2,0],[2.3,1.6,0],[2.8,1.6,0],[2.8,0.2,0]]], \"spacing\": 0.6}],"
-                  " \"solver\": {\"method\": \"icache\", \"target_error\": %g, \"seed\": 1}}",
-             TARGET);
+    cache_scene(json, sizeof json);
     if (fixture_solve_debug(json, &s_alone, &alone, &o, &debug)) {
         double joined_paths = plan_number(ic.plan_json, "paths"), lone_paths = plan_number(alone.plan_json, "paths");
         double joined_own = plan_number(ic.plan_json, "points_served_alone");
