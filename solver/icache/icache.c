@@ -446,21 +446,21 @@ static cdl_status gather_records(void *shared, void *local, size_t begin, size_t
         if (!cdl_icache_gather(&served, key, p, n, PILOT_M, PILOT_N, &pilot, stats, NULL))
             return cdl_error_out_of_memory(err);
         (void)hit_lookup_take_variance(hits, PILOT_M * PILOT_N);
-        /* The record's own variance: RECORD_SHARE (t R)^2, R = E_dir +
-         * E_ind there. A point averages several records (their noise
-         * shrinks by about the number it uses), so a record need not be as
-         * accurate as a point. */
         double R = job->E_direct[i] + pilot.E;
         /* Where the points' target is relative to a floor (surface maps:
          * half their surface's mean), a record there need be no better. */
         if (job->floors) R = fmax(R, job->floors[i]);
-        double budget = RECORD_SHARE * ctx->target * ctx->target * R * R;
-        double n_pilot = PILOT_M * PILOT_N;
         if (job->own) {
             if (!own_gather(job, mine, i, ctx->path.seed, stream, R, &pilot, &job->out[r], &job->tallies[r]))
                 return cdl_error_out_of_memory(err);
             continue;
         }
+        /* The record's own variance: RECORD_SHARE (t R)^2, R = E_dir +
+         * E_ind there. A point averages several records (their noise
+         * shrinks by about the number it uses), so a record need not be as
+         * accurate as a point. */
+        double budget = RECORD_SHARE * ctx->target * ctx->target * R * R;
+        double n_pilot = PILOT_M * PILOT_N;
         cdl_estimate est = {n_pilot, pilot.E * n_pilot, pilot.var * n_pilot * n_pilot, 1};
         double want = cdl_estimate_plan(&est, budget, PILOT_M * PILOT_N);
         int k = cdl_estimate_side_for(want, PILOT_M, MAX_SIDE);

@@ -19,6 +19,11 @@ struct cdl_record_octree {
     double half;              /* the root cube's half-size */
     node *nodes;
     size_t count, capacity;
+    /* every id stored so far greater than the one before: each cell's ids
+     * then ascend (the cache stores its records in id order) */
+    int in_order;
+    uint32_t last_id;
+    size_t stored;            /* inserts so far */
 };
 
 cdl_status cdl_record_octree_create(cdl_bounds3 bounds, cdl_record_octree **out, cdl_error *err)
@@ -37,6 +42,7 @@ cdl_status cdl_record_octree_create(cdl_bounds3 bounds, cdl_record_octree **out,
         return cdl_error_out_of_memory(err);
     }
     t->count = 1;
+    t->in_order = 1;
     *out = t;
     return CDL_OK;
 }
@@ -114,6 +120,8 @@ cdl_status cdl_record_octree_insert(cdl_record_octree *tree, uint32_t id, cdl_ve
         half *= 0.5;
         ++level;
     }
+    if (tree->stored++ > 0) tree->in_order &= id > tree->last_id;
+    tree->last_id = id;
     cdl_vec3 r = cdl_vec3_make(radius, radius, radius);
     if (!insert_at(tree, 0, 0, tree->centre, tree->half, level, id, cdl_vec3_sub(centre, r), cdl_vec3_add(centre, r)))
         return cdl_error_out_of_memory(err);
@@ -142,7 +150,6 @@ size_t cdl_record_octree_lookup(const cdl_record_octree *tree, cdl_vec3 p, uint3
 {
     size_t n = 0;
     int32_t at = 0;
-    int ascending = 1;
     cdl_vec3 centre = tree->centre;
     double half = tree->half;
     for (;;) {
@@ -157,10 +164,9 @@ size_t cdl_record_octree_lookup(const cdl_record_octree *tree, cdl_vec3 p, uint3
         }
         if (nd->count > 0) { /* an empty cell has no array (memcpy from NULL is undefined) */
             /* A cell's ids are in the order they were stored: ascending when
-             * records are stored in id order (as the cache stores them), and
-             * then merged run by run; otherwise sorted once at the end. */
-            for (uint32_t k = 1; k < nd->count && ascending; ++k) ascending = nd->ids[k - 1] < nd->ids[k];
-            if (ascending) {
+             * they were stored in id order, and then merged run by run;
+             * otherwise sorted once at the end. */
+            if (tree->in_order) {
                 memcpy(*ids + n + nd->count, nd->ids, nd->count * sizeof **ids);
                 merge_run(*ids, n, *ids + n + nd->count, nd->count);
             } else {
@@ -174,6 +180,6 @@ size_t cdl_record_octree_lookup(const cdl_record_octree *tree, cdl_vec3 p, uint3
         half *= 0.5;
         at = nd->child[c];
     }
-    if (!ascending && n > 1) qsort(*ids, n, sizeof **ids, compare_ids);
+    if (!tree->in_order && n > 1) qsort(*ids, n, sizeof **ids, compare_ids);
     return n;
 }
