@@ -21,7 +21,7 @@ typedef struct cdl_bench_direct_result {
     double solver_seconds;          /* grid computation only, setup excluded, `threads` threads */
     uint64_t solver_rays;
     double embree_seconds;          /* the same rays replayed, one thread */
-    double packet_seconds;          /* the same rays replayed as packets (cdl_ray_scene_occluded_many), one thread */
+    double stream_seconds;          /* the same rays replayed as ray streams (cdl_ray_scene_occluded_many), one thread */
     uint64_t embree_rays;
     double occluded_fraction;       /* of those rays */
 } cdl_bench_direct_result;

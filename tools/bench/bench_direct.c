@@ -50,9 +50,9 @@ int main(int argc, char **argv)
            (unsigned long long)r.solver_rays, solver_per_core, (double)r.points / r.solver_seconds);
     printf("plain Embree:  %.3f s for the same %llu rays on one thread: %.4g rays/s\n", r.embree_seconds,
            (unsigned long long)r.embree_rays, embree_per_core);
-    printf("as packets:    %.3f s for the same rays on one thread: %.4g rays/s (%.2f x single rays)\n",
-           r.packet_seconds, (double)r.embree_rays / r.packet_seconds, r.embree_seconds / r.packet_seconds);
-    printf("ratio (solver / Embree, per core): %.3f   (goal >= 1.00: packets beat single rays); %.1f %% of the rays are blocked\n",
+    printf("as streams:    %.3f s for the same rays on one thread: %.4g rays/s (%.2f x single rays)\n",
+           r.stream_seconds, (double)r.embree_rays / r.stream_seconds, r.embree_seconds / r.stream_seconds);
+    printf("ratio (solver / Embree, per core): %.3f   (goal >= 1.00: streams beat single rays); %.1f %% of the rays are blocked\n",
            solver_per_core / embree_per_core, 100.0 * r.occluded_fraction);
     return 0;
 }

@@ -1,7 +1,7 @@
-/* Shadow rays traced as Embree packets (cdl_ray_scene_occluded_many) give,
- * ray for ray, the answer of the single-ray query
+/* Shadow rays traced as Embree ray streams (cdl_ray_scene_occluded_many)
+ * give, ray for ray, the answer of the single-ray query
  * (cdl_ray_scene_occluded_except): the same float rays and the same double
- * re-test of every candidate, whatever the packet's fill.
+ * re-test of every candidate, whatever the stream's length and order.
  *
  * The scene: a 6 x 5 x 3 m room (inward box of 12 triangles), a field of
  * tessellated spheres and an exact sphere between floor and ceiling, a
@@ -10,7 +10,8 @@
  * direct chunk casts them; random rays in every direction, some of them
  * grazing the floor; rays along the shared diagonal of the table's two
  * triangles; rays with the exact sphere excluded; empty segments between
- * them; counts that are not multiples of the packet width. */
+ * them; counts below one stream block (128 rays) and many blocks with a
+ * remainder (12 000 rays). */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -72,10 +73,10 @@ static size_t compare(const cdl_ray_scene *s, const cdl_ray_segment *rays, size_
         const cdl_ray_segment *r = &rays[k];
         int one = cdl_ray_scene_occluded_except(s, r->origin, r->dir, r->t_near, r->t_far, r->exclude);
         if (one != many[k] && differ++ < 5)
-            fprintf(stderr, "%s, ray %zu: single %d, packet %d\n", what, k, one, many[k]);
+            fprintf(stderr, "%s, ray %zu: single %d, stream %d\n", what, k, one, many[k]);
         *blocked += many[k] != 0;
     }
-    CHECK_MSG(differ == 0, "%s: %zu of %zu rays answered otherwise in packets", what, differ, count);
+    CHECK_MSG(differ == 0, "%s: %zu of %zu rays answered otherwise in streams", what, differ, count);
     free(many);
     return count;
 }
@@ -167,7 +168,7 @@ int main(void)
         }
         total += compare(s, rays, n, "onto and along the table's diagonal", &blocked);
     }
-    fprintf(stderr, "%zu rays, %zu blocked: the same answers in packets and one by one\n", total, blocked);
+    fprintf(stderr, "%zu rays, %zu blocked: the same answers in streams and one by one\n", total, blocked);
     /* the rays must test both answers */
     CHECK(blocked > total / 10 && blocked < total - total / 10);
     free(rays);
