@@ -16,6 +16,7 @@
 #include "daylight/occupancy.h"
 #include "solver/daylight/daylight_coefficients.h"
 #include "solver/output/grid_result.h"
+#include "solver/output/json_numbers.h"
 #include "solver/output/ranks_json.h"
 #include "solver/output/solution_write.h"
 #include "solver/pool.h"
@@ -584,6 +585,7 @@ static cdl_status write_summary(annual_state *s, cdl_error *err)
     cdl_ranks_json_add(root, s->reports, (size_t)cdl_rank_group_count(s->ranks));
     cJSON_AddItemToObject(root, "grids", s->grids);
     s->grids = NULL;
+    cdl_json_numbers_exact(root);
     char *text = cJSON_Print(root);
     cJSON_Delete(root);
     if (!text) return cdl_error_out_of_memory(err);

@@ -15,6 +15,7 @@
 #include "base/error_report.h"
 #include "lights/emitters/near_field_bound.h"
 #include "solver/auto_method.h"
+#include "solver/output/json_numbers.h"
 #include "solver/solve_cache.h"
 
 struct cdl_plan_json {
@@ -376,6 +377,7 @@ void cdl_plan_json_surfaces(cdl_plan_json *plan, const cdl_solve_state *state)
 
 cdl_status cdl_plan_json_print(const cdl_plan_json *plan, char **out, cdl_error *err)
 {
+    cdl_json_numbers_exact(plan->root);
     *out = cJSON_PrintUnformatted(plan->root);
     return *out ? CDL_OK : cdl_error_out_of_memory(err);
 }

@@ -16,6 +16,7 @@
 #include "base/sized_struct.h"
 #include "base/strings.h"
 #include "solver/output/glare_output.h"
+#include "solver/output/json_numbers.h"
 #include "solver/output/grid_result.h"
 #include "solver/output/ranks_json.h"
 #include "solver/output/surface_output.h"
@@ -252,6 +253,7 @@ static cdl_status write_summary(const cdl_scene *scene, const cdl_solution *sol,
     }
     cJSON *warnings = cJSON_AddArrayToObject(root, "warnings");
     for (size_t w = 0; w < sol->warning_count; ++w) cJSON_AddItemToArray(warnings, cJSON_CreateString(sol->warnings[w]));
+    cdl_json_numbers_exact(root);
     char *text = cJSON_Print(root);
     cJSON_Delete(root);
     if (!text) return cdl_error_out_of_memory(err);
