@@ -567,6 +567,29 @@ static const char *box_face_name(int face)
     return face >= 0 && face < CDL_BOX_FACES ? names[face] : "";
 }
 
+/* The far-field guess of every bounded extended light (scene_lights.h):
+ * the intensity a luminaire spread over its opening has as a point (its
+ * point model, from its photometric centre), else the emitter's own
+ * intensity from the centre of its bounds (an area light's int L cos dA). */
+static cdl_status build_guess_maps(const cdl_scene *scene, cdl_scene_lights *L, cdl_error *err)
+{
+    for (size_t i = 0; i < L->count; ++i) {
+        cdl_scene_light *l = &L->lights[i];
+        if (!l->bounded || cdl_emitter_is_delta(l->emitter)) continue;
+        const cdl_emitter *far = cdl_emitter_far_field(l->emitter);
+        if (far && l->luminaire < scene->luminaire_count)
+            l->guess_origin = scene->luminaires[l->luminaire].position;
+        else if (far)
+            continue; /* no centre known: the exact guess (direct.c) */
+        else
+            l->guess_origin = cdl_bounds3_centre(l->bounds);
+        cdl_status st =
+            cdl_intensity_map_build(far ? far : l->emitter, CDL_INTENSITY_MAP_RESOLUTION, &l->guess_map, err);
+        if (st != CDL_OK) return st;
+    }
+    return CDL_OK;
+}
+
 cdl_status cdl_scene_lights_build(const cdl_scene *scene, const cdl_scene_geometry *geometry, cdl_scene_lights *out,
                                   cdl_error *err)
 {
@@ -622,7 +645,9 @@ cdl_status cdl_scene_lights_build(const cdl_scene *scene, const cdl_scene_geomet
             return st;
         }
     }
-    return CDL_OK;
+    cdl_status st = build_guess_maps(scene, out, err);
+    if (st != CDL_OK) cdl_scene_lights_release(out);
+    return st;
 }
 
 void cdl_scene_lights_release(cdl_scene_lights *L)
@@ -632,6 +657,7 @@ void cdl_scene_lights_release(cdl_scene_lights *L)
         cdl_emitter_release(L->emitters[i]);
         free(L->lights[i].outline);
         free(L->lights[i].model);
+        cdl_intensity_map_release(L->lights[i].guess_map);
     }
     for (size_t i = 0; i < L->photometry_count; ++i) cdl_photometry_release(L->photometries[i]);
     free(L->lights);

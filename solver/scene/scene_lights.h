@@ -16,6 +16,7 @@
 #include <stddef.h>
 
 #include "lights/emitters/emitter.h"
+#include "lights/emitters/intensity_map.h"
 #include "lights/photometry/photometry.h"
 #include "radiometry/bounds.h"
 #include "solver/geometry/occluder_index.h"
@@ -77,6 +78,13 @@ typedef struct cdl_scene_light {
     int near_field_unspread;          /* near_field "always" on a file whose opening is not spread: a point */
     const char *sealed_by;            /* NULL, or the JSON path of the closed box that keeps its light from
                                        * every point of the solve (solver/solve_sealed.h): left out */
+    /* A bounded extended light's intensity as seen from afar, on a coarse
+     * map over the sphere (lights/emitters/intensity_map.h), and the point
+     * it is taken from (a spread luminaire's photometric centre, else the
+     * centre of its bounds): the far-field guess that weighs it in the
+     * one-light draw. NULL for the other lights; owned like the outline. */
+    cdl_intensity_map *guess_map;
+    cdl_vec3 guess_origin;
 } cdl_scene_light;
 
 /* The piece a light's own shadow rays and occluder tests pass through:
