@@ -47,7 +47,7 @@ typedef struct cdl_near_field_bound {
 /* The bound for the goniometric luminaire of `params` (its photometry has
  * a spread opening, cdl_luminous_opening_is_spread). For a flat opening K
  * is the largest relative difference between the point model and the
- * opening's cubature (to 1e-6) over 842 directions of emission (every 5
+ * opening's cubature (to 1e-5) over 842 directions of emission (every 5
  * degrees of polar angle, 15 of azimuth), each seen from 20 R by a receiver
  * facing the luminaire, times 20^2, and a quarter more for the directions
  * between them; the difference counts relative to the point model's value
