@@ -27,8 +27,8 @@ static inline double cdl_octahedral_sign(double x)
 /* (u, v) in [0, 1]^2 of a direction d (any length > 0). */
 static inline void cdl_octahedral_encode(cdl_vec3 d, double *u, double *v)
 {
-    double s = fabs(d.x) + fabs(d.y) + fabs(d.z);
-    double x = d.x / s, y = d.y / s;
+    double k = 1.0 / (fabs(d.x) + fabs(d.y) + fabs(d.z));
+    double x = d.x * k, y = d.y * k;
     if (d.z < 0.0) {
         double fx = (1.0 - fabs(y)) * cdl_octahedral_sign(x), fy = (1.0 - fabs(x)) * cdl_octahedral_sign(y);
         x = fx;

@@ -354,15 +354,16 @@ static double far_field_guess(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3
     }
     cdl_vec3 c = mapped ? light->guess_origin : cdl_bounds3_centre(light->bounds);
     cdl_vec3 d = cdl_vec3_sub(c, p);
-    double d2 = cdl_vec3_dot(d, d);
-    if (!(d2 > 0.0)) return 0.0;
-    double k = 1.0 / sqrt(d2);
-    double cos_r = cdl_vec3_dot(n, d) * k;
-    if (!(cos_r > 0.0)) return 0.0;
-    /* the direction from the light towards p: -d */
+    double d2 = cdl_vec3_dot(d, d), along = cdl_vec3_dot(n, d); /* along = |d| cos */
+    if (!(d2 > 0.0) || !(along > 0.0)) return 0.0;
+    /* the direction from the light towards p: -d (the map takes any length) */
     double I = mapped ? cdl_intensity_map_lookup(light->guess_map, cdl_vec3_neg(d)).cd
-                      : cdl_emitter_intensity(light->emitter, cdl_vec3_scale(d, -k)).cd;
-    return I > 0.0 && isfinite(I) ? I * cos_r / d2 : 0.0;
+                      : cdl_emitter_intensity(light->emitter, cdl_vec3_neg(d)).cd;
+    if (!(I > 0.0) || !isfinite(I)) return 0.0;
+    /* I cos / d^2 = I along / |d|^3: one square root and one division, and
+     * only for the lights that shine towards p */
+    double inv_d2 = 1.0 / d2;
+    return I * along * sqrt(inv_d2) * inv_d2;
 }
 
 /* A light with a closed form is taken apart from the draw where it looms
