@@ -5,10 +5,11 @@
  * half folds outwards over the square's four corners (Praun and Hoppe,
  * "Spherical parametrization and remeshing", SIGGRAPH 2003; Cigolle et al.,
  * "A survey of efficient representations for independent unit vectors",
- * JCGT 3(2), 2014). The map is continuous over the sphere, needs no
- * trigonometry, and its cells' solid angles differ by at most a factor of
- * about 2.6 over the square, so a table on a regular grid of the square is
- * an even tabulation of the sphere. Points of the square's edge mirrored
+ * JCGT 3(2), 2014). The map is continuous over the sphere and needs no
+ * trigonometry; the solid angle per unit of the square goes as 1 / |p|^3
+ * for p on the octahedron, so its cells' solid angles differ by at most
+ * 3^(3/2) = 5.2, and a table on a regular grid of the square tabulates the
+ * sphere nearly evenly. Points of the square's edge mirrored
  * about an edge's midpoint name the same direction.
  */
 #ifndef CANDELA_RADIOMETRY_OCTAHEDRAL_H

@@ -13,7 +13,8 @@
  * four loads, no trigonometry.
  *
  * Between nodes it is an approximation of I (it rounds off the edge of a
- * sharp cut-off over one cell, about 4 degrees at the default resolution):
+ * sharp cut-off over one cell, whose corners lie up to 7.7 degrees apart at
+ * the default resolution):
  * a weight, never an estimate. At the nodes it holds I to float precision;
  * where I is 0 over a whole cell (behind a downlight), it is exactly 0.
  *

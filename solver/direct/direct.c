@@ -345,13 +345,9 @@ enum { TERM_NONE = 0, TERM_DELTA, TERM_GUESSED };
  * photometric table took a fifth of the example office's solve). */
 static double far_field_guess(const cdl_scene_light *light, cdl_vec3 p, cdl_vec3 n)
 {
+    /* every bounded extended light has its map (scene_lights.c); a light
+     * made without one is guessed from its exact intensity */
     int mapped = light->guess_map != NULL;
-    /* a luminaire spread over its opening: its own point model */
-    const cdl_emitter *far = mapped ? NULL : cdl_emitter_far_field(light->emitter);
-    if (far) {
-        cdl_delta_light d;
-        return cdl_emitter_eval_delta(far, p, n, &d) && d.E.lx > 0.0 ? d.E.lx : 0.0;
-    }
     cdl_vec3 c = mapped ? light->guess_origin : cdl_bounds3_centre(light->bounds);
     cdl_vec3 d = cdl_vec3_sub(c, p);
     double d2 = cdl_vec3_dot(d, d), along = cdl_vec3_dot(n, d); /* along = |d| cos */

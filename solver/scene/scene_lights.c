@@ -576,13 +576,9 @@ static cdl_status build_guess_maps(const cdl_scene *scene, cdl_scene_lights *L, 
     for (size_t i = 0; i < L->count; ++i) {
         cdl_scene_light *l = &L->lights[i];
         if (!l->bounded || cdl_emitter_is_delta(l->emitter)) continue;
+        /* (an opening is always a luminaire's: its entry gives the centre) */
         const cdl_emitter *far = cdl_emitter_far_field(l->emitter);
-        if (far && l->luminaire < scene->luminaire_count)
-            l->guess_origin = scene->luminaires[l->luminaire].position;
-        else if (far)
-            continue; /* no centre known: the exact guess (direct.c) */
-        else
-            l->guess_origin = cdl_bounds3_centre(l->bounds);
+        l->guess_origin = far ? scene->luminaires[l->luminaire].position : cdl_bounds3_centre(l->bounds);
         cdl_status st =
             cdl_intensity_map_build(far ? far : l->emitter, CDL_INTENSITY_MAP_RESOLUTION, &l->guess_map, err);
         if (st != CDL_OK) return st;

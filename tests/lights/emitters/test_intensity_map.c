@@ -118,8 +118,8 @@ int main(void)
 
     /* 4. The downlight, unturned: no light beyond gamma = 80 degrees
      *    (fading to 0 cd from 75), so none upwards. Directions above the
-     *    horizon have all four nodes around them beyond 80 degrees (a cell
-     *    spans at most about 4.5 degrees): exactly 0. */
+     *    horizon have all four nodes around them beyond 80 degrees (a cell's
+     *    corners lie within 7.7 degrees of one another): exactly 0. */
     cdl_photometry *down = read_table("downlight.ies", &err);
     e = down ? place(down, 0.0, 0.0, 0.0, &err) : NULL;
     if (e) {

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "scene_lights_fixture.h"
 #include "solver/scene/scene_hash.h"
 #include "solver/scene/scene.h"
 #include "solver/scene/scene_geometry.h"
@@ -27,18 +28,11 @@ static int hashes_of(const char *luminaire, cdl_scene_hashes *out)
              luminaire);
     cdl_error err;
     cdl_error_clear(&err);
-    cdl_scene *scene = NULL;
-    cdl_scene_geometry *geometry = NULL;
-    cdl_scene_lights lights;
-    memset(&lights, 0, sizeof lights);
-    cdl_status st = cdl_scene_load_string(json, CANDELA_TEST_TMPDIR "/hash.json", &scene, &err);
-    if (st == CDL_OK) st = cdl_scene_geometry_build(scene, &geometry, &err);
-    if (st == CDL_OK) st = cdl_scene_lights_build(scene, geometry, &lights, &err);
-    if (st == CDL_OK) st = cdl_scene_hash(scene, &lights, out, &err);
+    scene_lights_fixture f;
+    cdl_status st = scene_lights_fixture_open(&f, json, CANDELA_TEST_TMPDIR "/hash.json", &err);
+    if (st == CDL_OK) st = cdl_scene_hash(f.scene, &f.lights, out, &err);
     CHECK_MSG(st == CDL_OK, "%s: %s", luminaire, err.message);
-    cdl_scene_lights_release(&lights);
-    cdl_scene_geometry_release(geometry);
-    cdl_scene_release(scene);
+    scene_lights_fixture_close(&f);
     return st == CDL_OK;
 }
 

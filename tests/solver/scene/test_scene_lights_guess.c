@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "scene_lights_fixture.h"
 #include "lights/emitters/intensity_map.h"
 #include "solver/scene/scene_geometry.h"
 #include "solver/scene/scene_internal.h"
@@ -52,13 +53,10 @@ int main(void)
 {
     cdl_error err;
     cdl_error_clear(&err);
-    cdl_scene *scene = NULL;
-    cdl_scene_geometry *geometry = NULL;
-    cdl_scene_lights lights;
-    memset(&lights, 0, sizeof lights);
-    CHECK_OK(cdl_scene_load_string(scene_json, CANDELA_TEST_TMPDIR "/lights_guess.json", &scene, &err), &err);
-    if (scene) CHECK_OK(cdl_scene_geometry_build(scene, &geometry, &err), &err);
-    if (geometry) CHECK_OK(cdl_scene_lights_build(scene, geometry, &lights, &err), &err);
+    scene_lights_fixture f;
+    CHECK_OK(scene_lights_fixture_open(&f, scene_json, CANDELA_TEST_TMPDIR "/lights_guess.json", &err), &err);
+    const cdl_scene *scene = f.scene;
+    const cdl_scene_lights lights = f.lights;
     int openings = 0, areas = 0, deltas = 0;
     for (size_t i = 0; i < lights.count; ++i) {
         const cdl_scene_light *l = &lights.lights[i];
@@ -92,8 +90,6 @@ int main(void)
      * and the downlight's point model */
     CHECK_MSG(openings == 2 && areas == 1 && deltas == 3, "%d openings, %d areas, %d delta lights", openings, areas,
               deltas);
-    cdl_scene_lights_release(&lights);
-    cdl_scene_geometry_release(geometry);
-    cdl_scene_release(scene);
+    scene_lights_fixture_close(&f);
     return check_finish();
 }
